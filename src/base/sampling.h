@@ -45,6 +45,7 @@ class Distribution1D {
   float Pdf(float x) const;
   float DiscretePmf(int i) const { return func_int_ > 0 ? func_[i] / (func_int_ * Count()) : 1.f / Count(); }
   int Count() const { return int(func_.size()); }
+  float CdfAt(int i) const { return cdf_[i]; }
   float Integral() const { return func_int_; }
 
  private:

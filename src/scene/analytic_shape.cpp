@@ -1,0 +1,375 @@
+#include "scene/analytic_shape.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "base/sampling.h"
+
+namespace objektiv {
+namespace {
+
+void BoundsCallback(const RTCBoundsFunctionArguments* args) {
+  auto* shape = static_cast<const AnalyticShape*>(args->geometryUserPtr);
+  Bounds3f b = shape->EmbreeBounds();
+  RTCBounds* out = args->bounds_o;
+  out->lower_x = b.lo.x;
+  out->lower_y = b.lo.y;
+  out->lower_z = b.lo.z;
+  out->upper_x = b.hi.x;
+  out->upper_y = b.hi.y;
+  out->upper_z = b.hi.z;
+}
+
+// Objektiv only traces single rays (rtcIntersect1 / rtcOccluded1), so N is always 1.
+void IntersectCallback(const RTCIntersectFunctionNArguments* args) {
+  if (!args->valid[0]) return;
+  auto* shape = static_cast<const AnalyticShape*>(args->geometryUserPtr);
+  auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
+  RTCRay& r = rh->ray;
+  double t;
+  Vec2f param;
+  if (!shape->Intersect(Vec3d(r.org_x, r.org_y, r.org_z), Vec3d(r.dir_x, r.dir_y, r.dir_z), r.tfar, &t, &param)) return;
+  if (!(t > r.tnear)) return;
+  r.tfar = float(t);
+  rh->hit.u = param.x;
+  rh->hit.v = param.y;
+  rh->hit.Ng_x = rh->hit.Ng_y = 0;
+  rh->hit.Ng_z = 1;
+  rh->hit.geomID = args->geomID;
+  rh->hit.primID = args->primID;
+  rh->hit.instID[0] = args->context->instID[0];
+}
+
+void OccludedCallback(const RTCOccludedFunctionNArguments* args) {
+  if (!args->valid[0]) return;
+  auto* shape = static_cast<const AnalyticShape*>(args->geometryUserPtr);
+  auto* r = reinterpret_cast<RTCRay*>(args->ray);
+  double t;
+  Vec2f param;
+  if (shape->Intersect(Vec3d(r->org_x, r->org_y, r->org_z), Vec3d(r->dir_x, r->dir_y, r->dir_z), r->tfar, &t, &param) &&
+      t > r->tnear)
+    r->tfar = -std::numeric_limits<float>::infinity();
+}
+
+Vec3d ToObject(const Matrix4& inv, const Vec3d& p, bool is_point) {
+  const auto& a = inv.m;
+  double w = is_point ? 1 : 0;
+  return {a[0][0] * p.x + a[0][1] * p.y + a[0][2] * p.z + a[0][3] * w,
+          a[1][0] * p.x + a[1][1] * p.y + a[1][2] * p.z + a[1][3] * w,
+          a[2][0] * p.x + a[2][1] * p.y + a[2][2] * p.z + a[2][3] * w};
+}
+
+Vec3d Column(const Transform& t, int c) {
+  const auto& a = t.Matrix().m;
+  return {a[0][c], a[1][c], a[2][c]};
+}
+
+}  // namespace
+
+RTCGeometry AnalyticShape::CreateGeometry(RTCDevice device) const {
+  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+  rtcSetGeometryUserPrimitiveCount(geom, 1);
+  rtcSetGeometryUserData(geom, const_cast<AnalyticShape*>(this));
+  rtcSetGeometryBoundsFunction(geom, BoundsCallback, nullptr);
+  rtcSetGeometryIntersectFunction(geom, IntersectCallback);
+  rtcSetGeometryOccludedFunction(geom, OccludedCallback);
+  rtcCommitGeometry(geom);
+  return geom;
+}
+
+void TransformPointWithError(const Transform& t, const Vec3d& p_obj, Vec3f* p, Vec3f* p_error) {
+  Vec3d pw = t.Point(p_obj);
+  *p = Vec3f(pw);
+  // The transform is evaluated in double: what remains is the rounding to float, plus a
+  // generous allowance for the object-space point's own error.
+  *p_error = Abs(*p) * Gamma(4);
+}
+
+// --- Sphere -------------------------------------------------------------------------
+
+Sphere::Sphere(const Vec3f& center, float radius, bool flip_normals, const Transform& to_world)
+    : flip_(flip_normals), to_world_(to_world) {
+  // to_world must be a similarity: orthogonal columns of equal length.
+  Vec3d c0 = Column(to_world, 0), c1 = Column(to_world, 1), c2 = Column(to_world, 2);
+  double s0 = Length(c0), s1 = Length(c1), s2 = Length(c2);
+  double tol = 1e-5 * std::max(s0, std::max(s1, s2));
+  if (std::abs(s0 - s1) > tol || std::abs(s0 - s2) > tol || std::abs(Dot(c0, c1)) > tol * s0 ||
+      std::abs(Dot(c0, c2)) > tol * s0 || std::abs(Dot(c1, c2)) > tol * s0)
+    throw std::invalid_argument("sphere: to_world must be a rotation, translation and uniform scale");
+  center_ = to_world.Point(Vec3d(center));
+  radius_ = double(radius) * s0;
+  if (!(radius_ > 0)) throw std::invalid_argument("sphere: radius must be positive");
+}
+
+bool Sphere::Intersect(const Vec3d& o, const Vec3d& d, double tmax, double* t, Vec2f* param) const {
+  Vec3d oc = o - center_;
+  double a = Dot(d, d), b = 2 * Dot(oc, d), c = Dot(oc, oc) - radius_ * radius_;
+  // Discriminant from the distance of the centre to the line: no cancellation far away.
+  Vec3d f = oc - d * (Dot(oc, d) / a);
+  double disc = 4 * a * (radius_ * radius_ - Dot(f, f));
+  if (disc < 0) return false;
+  double root = std::sqrt(disc);
+  double q = b < 0 ? -0.5 * (b - root) : -0.5 * (b + root);
+  double t0 = q / a, t1 = c / q;
+  if (t0 > t1) std::swap(t0, t1);
+  double th = t0 > 0 ? t0 : t1;
+  if (!(th > 0) || th >= tmax) return false;
+  *t = th;
+  *param = {0, 0};
+  return true;
+}
+
+ShapeSample Sphere::PointAt(const Vec3d& pd) const {
+  Vec3d dir = pd - center_;
+  dir = dir / Length(dir);
+  Vec3d p = center_ + dir * radius_;  // reprojected onto the surface
+  ShapeSample s;
+  s.p = Vec3f(p);
+  s.p_error = Abs(s.p) * Gamma(5) + Vec3f(float(radius_) * Gamma(5));
+  s.n = Vec3f(dir);
+  if (flip_) s.n = -s.n;
+  Vec3f local = Normalize(to_world_.Inverse().Vector(Vec3f(dir)));
+  float phi = std::atan2(local.y, local.x);
+  if (phi < 0) phi += 2 * kPi;
+  s.uv = {phi * kInv2Pi, std::acos(Clamp(local.z, -1, 1)) * kInvPi};
+  return s;
+}
+
+SurfaceInteraction Sphere::ComputeInteraction(const Ray& ray, const RTCHit&, float t) const {
+  Vec3d pd = Vec3d(ray.o) + Vec3d(ray.d) * double(t);
+  ShapeSample s = PointAt(pd);
+  SurfaceInteraction si;
+  si.p = s.p;
+  si.p_error = s.p_error;
+  si.n = s.n;
+  si.uv = s.uv;
+  // Tangent along increasing phi around the sphere's local z axis.
+  Vec3f axis = Normalize(to_world_.Vector(Vec3f(0, 0, 1)));
+  Vec3f dpdu = Cross(axis, s.n);
+  si.shading = Frame::FromNormalTangent(s.n, dpdu);
+  si.t = t;
+  si.wo = -Normalize(ray.d);
+  return si;
+}
+
+float Sphere::Area() const { return float(4 * M_PI * radius_ * radius_); }
+
+Bounds3f Sphere::WorldBounds() const {
+  Bounds3f b;
+  b.Extend(Vec3f(center_ - Vec3d(radius_)));
+  b.Extend(Vec3f(center_ + Vec3d(radius_)));
+  b.lo = b.lo - Abs(b.lo) * 1e-6f;
+  b.hi = b.hi + Abs(b.hi) * 1e-6f;
+  return b;
+}
+
+ShapeSample Sphere::SampleArea(Vec2f u) const {
+  ShapeSample s = PointAt(center_ + Vec3d(SampleUniformSphere(u)) * radius_);
+  s.pdf = 1 / Area();
+  return s;
+}
+
+std::optional<ShapeSample> Sphere::SampleFrom(const Vec3f& ref, Vec2f u) const {
+  Vec3d rd(ref);
+  double dc2 = LengthSquared(center_ - rd);
+  double r2 = radius_ * radius_;
+  if (dc2 <= r2 * (1 + 1e-6)) return Shape::SampleFrom(ref, u);  // inside: area sampling
+  // Uniform over the cone of directions the sphere subtends (pbrt-v4's formulation, which
+  // stays accurate for tiny cones).
+  double dc = std::sqrt(dc2);
+  double sin2_max = r2 / dc2, sin_max = std::sqrt(sin2_max);
+  double cos_max = std::sqrt(std::max(0.0, 1 - sin2_max)), one_minus_cos_max = 1 - cos_max;
+  double cos_t = (cos_max - 1) * u.x + 1;
+  double sin2_t = 1 - cos_t * cos_t;
+  if (sin2_max < 0.00068523) {  // below ~1.5 degrees: Taylor expansion
+    sin2_t = sin2_max * u.x;
+    cos_t = std::sqrt(1 - sin2_t);
+    one_minus_cos_max = sin2_max / 2;
+  }
+  // Angle alpha at the centre between the direction to ref and the sampled point.
+  double cos_alpha = sin2_t / sin_max + cos_t * std::sqrt(std::max(0.0, 1 - sin2_t / sin2_max));
+  double sin_alpha = std::sqrt(std::max(0.0, 1 - cos_alpha * cos_alpha));
+  double phi = u.y * 2 * M_PI;
+  Vec3d wc = (center_ - rd) / dc;
+  Frame f = Frame::FromZ(Vec3f(-wc));
+  Vec3d n = Vec3d(f.FromLocal(Vec3f(float(sin_alpha * std::cos(phi)), float(sin_alpha * std::sin(phi)), float(cos_alpha))));
+  ShapeSample s = PointAt(center_ + n * radius_);
+  s.pdf = float(1 / (2 * M_PI * one_minus_cos_max));
+  return s;
+}
+
+float Sphere::PdfFrom(const Vec3f& ref, const SurfaceInteraction& hit) const {
+  Vec3d rd(ref);
+  double dc2 = LengthSquared(center_ - rd), r2 = radius_ * radius_;
+  if (dc2 <= r2 * (1 + 1e-6)) return Shape::PdfFrom(ref, hit);
+  double sin2_max = r2 / dc2;
+  double one_minus_cos_max = sin2_max < 0.00068523 ? sin2_max / 2 : 1 - std::sqrt(std::max(0.0, 1 - sin2_max));
+  return float(1 / (2 * M_PI * one_minus_cos_max));
+}
+
+// --- Disk ---------------------------------------------------------------------------
+
+Disk::Disk(const Transform& to_world, bool flip_normals) : to_world_(to_world), flip_(flip_normals) {
+  normal_ = Normalize(to_world.Normal(Vec3f(0, 0, 1)));
+  if (flip_) normal_ = -normal_;
+  area_ = float(M_PI * Length(Cross(Column(to_world, 0), Column(to_world, 1))));
+}
+
+bool Disk::Intersect(const Vec3d& o, const Vec3d& d, double tmax, double* t, Vec2f* param) const {
+  Vec3d oo = ToObject(to_world_.InverseMatrix(), o, true), dd = ToObject(to_world_.InverseMatrix(), d, false);
+  if (dd.z == 0) return false;
+  double th = -oo.z / dd.z;
+  if (!(th > 0) || th >= tmax) return false;
+  double x = oo.x + th * dd.x, y = oo.y + th * dd.y;
+  if (x * x + y * y > 1) return false;
+  *t = th;
+  *param = {float(x), float(y)};
+  return true;
+}
+
+SurfaceInteraction Disk::ComputeInteraction(const Ray& ray, const RTCHit& hit, float t) const {
+  SurfaceInteraction si;
+  TransformPointWithError(to_world_, Vec3d(hit.u, hit.v, 0), &si.p, &si.p_error);
+  si.n = normal_;
+  float r = std::sqrt(hit.u * hit.u + hit.v * hit.v);
+  float phi = std::atan2(hit.v, hit.u);
+  if (phi < 0) phi += 2 * kPi;
+  si.uv = {r, phi * kInv2Pi};
+  si.shading = Frame::FromNormalTangent(normal_, to_world_.Vector(Vec3f(1, 0, 0)));
+  si.t = t;
+  si.wo = -Normalize(ray.d);
+  return si;
+}
+
+Bounds3f Disk::WorldBounds() const {
+  Bounds3f b;
+  // The ellipse lies inside the image of the square [-1,1]^2.
+  for (int i = 0; i < 4; ++i) b.Extend(to_world_.Point(Vec3f(i & 1 ? 1.f : -1.f, i & 2 ? 1.f : -1.f, 0)));
+  Vec3f pad = (Abs(b.lo) + Abs(b.hi)) * 1e-6f + Vec3f(1e-30f);
+  b.lo = b.lo - pad;
+  b.hi = b.hi + pad;
+  return b;
+}
+
+ShapeSample Disk::SampleArea(Vec2f u) const {
+  Vec2f d = SampleUniformDiskConcentric(u);
+  ShapeSample s;
+  TransformPointWithError(to_world_, Vec3d(d.x, d.y, 0), &s.p, &s.p_error);
+  s.n = normal_;
+  float phi = std::atan2(d.y, d.x);
+  if (phi < 0) phi += 2 * kPi;
+  s.uv = {std::sqrt(d.x * d.x + d.y * d.y), phi * kInv2Pi};
+  s.pdf = 1 / area_;
+  return s;
+}
+
+// --- Cylinder -----------------------------------------------------------------------
+
+Cylinder::Cylinder(const Transform& object_to_world, bool flip_normals) : to_world_(object_to_world), flip_(flip_normals) {
+  Vec3d c0 = Column(object_to_world, 0), c1 = Column(object_to_world, 1), c2 = Column(object_to_world, 2);
+  double r0 = Length(c0), r1 = Length(c1), h = Length(c2);
+  double tol = 1e-5 * std::max(r0, h);
+  if (std::abs(r0 - r1) > tol || std::abs(Dot(c0, c1)) > tol * r0 || std::abs(Dot(c0, c2)) > tol * h ||
+      std::abs(Dot(c1, c2)) > tol * h)
+    throw std::invalid_argument("cylinder: to_world must keep the cross-section circular (no shear or unequal scale)");
+  area_ = float(2 * M_PI * r0 * h);
+}
+
+bool Cylinder::Intersect(const Vec3d& o, const Vec3d& d, double tmax, double* t, Vec2f* param) const {
+  Vec3d oo = ToObject(to_world_.InverseMatrix(), o, true), dd = ToObject(to_world_.InverseMatrix(), d, false);
+  double a = dd.x * dd.x + dd.y * dd.y;
+  if (a == 0) return false;
+  double b = 2 * (oo.x * dd.x + oo.y * dd.y), c = oo.x * oo.x + oo.y * oo.y - 1;
+  double disc = b * b - 4 * a * c;
+  if (disc < 0) return false;
+  double root = std::sqrt(disc);
+  double q = b < 0 ? -0.5 * (b - root) : -0.5 * (b + root);
+  double ts[2] = {q / a, c / q};
+  if (ts[0] > ts[1]) std::swap(ts[0], ts[1]);
+  for (double th : ts) {
+    if (!(th > 0) || th >= tmax) continue;
+    double z = oo.z + th * dd.z;
+    if (z < 0 || z > 1) continue;
+    double phi = std::atan2(oo.y + th * dd.y, oo.x + th * dd.x);
+    *t = th;
+    *param = {float(phi), float(z)};
+    return true;
+  }
+  return false;
+}
+
+ShapeSample Cylinder::PointAt(double phi, double z) const {
+  ShapeSample s;
+  TransformPointWithError(to_world_, Vec3d(std::cos(phi), std::sin(phi), z), &s.p, &s.p_error);
+  s.n = Normalize(to_world_.Normal(Vec3f(float(std::cos(phi)), float(std::sin(phi)), 0)));
+  if (flip_) s.n = -s.n;
+  double u = phi < 0 ? phi + 2 * M_PI : phi;
+  s.uv = {float(u / (2 * M_PI)), float(z)};
+  return s;
+}
+
+SurfaceInteraction Cylinder::ComputeInteraction(const Ray& ray, const RTCHit& hit, float t) const {
+  ShapeSample s = PointAt(hit.u, hit.v);
+  SurfaceInteraction si;
+  si.p = s.p;
+  si.p_error = s.p_error;
+  si.n = s.n;
+  si.uv = s.uv;
+  si.shading = Frame::FromNormalTangent(s.n, to_world_.Vector(Vec3f(-std::sin(hit.u), std::cos(hit.u), 0)));
+  si.t = t;
+  si.wo = -Normalize(ray.d);
+  return si;
+}
+
+Bounds3f Cylinder::WorldBounds() const {
+  Bounds3f b;
+  for (int i = 0; i < 8; ++i)
+    b.Extend(to_world_.Point(Vec3f(i & 1 ? 1.f : -1.f, i & 2 ? 1.f : -1.f, i & 4 ? 1.f : 0.f)));
+  Vec3f pad = (Abs(b.lo) + Abs(b.hi)) * 1e-6f;
+  b.lo = b.lo - pad;
+  b.hi = b.hi + pad;
+  return b;
+}
+
+ShapeSample Cylinder::SampleArea(Vec2f u) const {
+  ShapeSample s = PointAt(2 * M_PI * u.x, u.y);
+  s.pdf = 1 / area_;
+  return s;
+}
+
+// --- Infinite plane -----------------------------------------------------------------
+
+InfinitePlane::InfinitePlane(const Transform& to_world, bool flip_normals) : to_world_(to_world), flip_(flip_normals) {
+  normal_ = Normalize(to_world.Normal(Vec3f(0, 0, 1)));
+  if (flip_) normal_ = -normal_;
+}
+
+bool InfinitePlane::Intersect(const Vec3d& o, const Vec3d& d, double tmax, double* t, Vec2f* param) const {
+  Vec3d oo = ToObject(to_world_.InverseMatrix(), o, true), dd = ToObject(to_world_.InverseMatrix(), d, false);
+  if (dd.z == 0) return false;
+  double th = -oo.z / dd.z;
+  if (!(th > 0) || th >= tmax) return false;
+  *t = th;
+  *param = {float(oo.x + th * dd.x), float(oo.y + th * dd.y)};
+  return true;
+}
+
+SurfaceInteraction InfinitePlane::ComputeInteraction(const Ray& ray, const RTCHit& hit, float t) const {
+  SurfaceInteraction si;
+  TransformPointWithError(to_world_, Vec3d(hit.u, hit.v, 0), &si.p, &si.p_error);
+  si.n = normal_;
+  si.uv = {hit.u, hit.v};
+  si.shading = Frame::FromNormalTangent(normal_, to_world_.Vector(Vec3f(1, 0, 0)));
+  si.t = t;
+  si.wo = -Normalize(ray.d);
+  return si;
+}
+
+Bounds3f InfinitePlane::EmbreeBounds() const {
+  Bounds3f b;
+  b.lo = Vec3f(-1e30f);
+  b.hi = Vec3f(1e30f);
+  return b;
+}
+
+}  // namespace objektiv

@@ -1,0 +1,57 @@
+#include "scene/bsdf.h"
+
+namespace objektiv {
+
+namespace {
+template <class... Ts>
+struct Overloaded : Ts... {
+  using Ts::operator()...;
+};
+template <class... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
+}  // namespace
+
+SampledSpectrum BSDF::f(const Vec3f& wo_world, const Vec3f& wi_world, TransportMode mode) const {
+  Vec3f wo = frame_.ToLocal(wo_world), wi = frame_.ToLocal(wi_world);
+  if (wo.z == 0) return {};
+  if (two_sided_ && wo.z < 0 && IsOpaque()) {
+    wo.z = -wo.z;
+    wi.z = -wi.z;
+  }
+  return std::visit(Overloaded{[&](const DielectricBxDF& b) { return b.f(wo, wi, mode); },
+                               [&](const auto& b) { return b.f(wo, wi); }},
+                    bxdf_);
+}
+
+std::optional<BSDFSample> BSDF::Sample(const Vec3f& wo_world, float uc, Vec2f u, TransportMode mode) const {
+  Vec3f wo = frame_.ToLocal(wo_world);
+  if (wo.z == 0) return std::nullopt;
+  bool flipped = two_sided_ && wo.z < 0 && IsOpaque();
+  if (flipped) wo.z = -wo.z;
+  std::optional<BSDFSample> s =
+      std::visit(Overloaded{[&](const DielectricBxDF& b) { return b.Sample(wo, uc, u, mode); },
+                            [&](const auto& b) { return b.Sample(wo, uc, u); }},
+                 bxdf_);
+  if (!s || s->pdf == 0 || s->f.IsBlack() || s->wi.z == 0) return std::nullopt;
+  if (flipped) s->wi.z = -s->wi.z;
+  s->wi = frame_.FromLocal(s->wi);
+  return s;
+}
+
+float BSDF::Pdf(const Vec3f& wo_world, const Vec3f& wi_world, TransportMode mode) const {
+  Vec3f wo = frame_.ToLocal(wo_world), wi = frame_.ToLocal(wi_world);
+  if (wo.z == 0) return 0;
+  if (two_sided_ && wo.z < 0 && IsOpaque()) {
+    wo.z = -wo.z;
+    wi.z = -wi.z;
+  }
+  return std::visit(Overloaded{[&](const DielectricBxDF& b) { return b.Pdf(wo, wi, mode); },
+                               [&](const auto& b) { return b.Pdf(wo, wi); }},
+                    bxdf_);
+}
+
+int BSDF::Flags() const {
+  return std::visit([](const auto& b) { return b.Flags(); }, bxdf_);
+}
+
+}  // namespace objektiv

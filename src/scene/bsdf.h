@@ -1,0 +1,36 @@
+// A BSDF at a surface point: one BxDF in the shading frame, in world-space directions.
+#pragma once
+#include <variant>
+
+#include "base/frame.h"
+#include "scene/bxdf.h"
+
+namespace objektiv {
+
+using BxDF = std::variant<DiffuseBxDF, DielectricBxDF, ConductorBxDF, PlasticBxDF>;
+
+class BSDF {
+ public:
+  BSDF() = default;
+  // two_sided: opaque BxDFs, which scatter on their front side only (as in Mitsuba), act the
+  // same on both sides. Dielectrics are always two-sided.
+  BSDF(const Frame& shading, const Vec3f& ng, BxDF bxdf, bool two_sided)
+      : frame_(shading), ng_(ng), bxdf_(std::move(bxdf)), two_sided_(two_sided) {}
+
+  SampledSpectrum f(const Vec3f& wo_world, const Vec3f& wi_world, TransportMode mode = TransportMode::kRadiance) const;
+  std::optional<BSDFSample> Sample(const Vec3f& wo_world, float uc, Vec2f u,
+                                   TransportMode mode = TransportMode::kRadiance) const;
+  float Pdf(const Vec3f& wo_world, const Vec3f& wi_world, TransportMode mode = TransportMode::kRadiance) const;
+  int Flags() const;
+  bool IsSpecular() const { return (Flags() & (kDiffuse | kGlossy)) == 0; }
+  const Frame& frame() const { return frame_; }
+
+ private:
+  bool IsOpaque() const { return !std::holds_alternative<DielectricBxDF>(bxdf_); }
+  Frame frame_;
+  Vec3f ng_;
+  BxDF bxdf_;
+  bool two_sided_ = false;
+};
+
+}  // namespace objektiv

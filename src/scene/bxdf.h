@@ -1,0 +1,77 @@
+// Scattering functions in the local shading frame (z = shading normal). Every BxDF returns
+// f * |cos(theta_i)| from Sample only through BSDFSample.f (without the cosine); the
+// integrator multiplies by the cosine itself.
+#pragma once
+#include <optional>
+
+#include "base/sampled_spectrum.h"
+#include "scene/microfacet.h"
+
+namespace objektiv {
+
+enum BxDFFlags : int {
+  kReflection = 1,
+  kTransmission = 2,
+  kDiffuse = 4,
+  kGlossy = 8,
+  kSpecular = 16,
+};
+
+enum class TransportMode { kRadiance, kImportance };
+
+struct BSDFSample {
+  SampledSpectrum f;
+  Vec3f wi;
+  float pdf = 0;
+  int flags = 0;
+  float eta = 1;  // relative index crossed (for Russian roulette's radiance scaling)
+  bool IsSpecular() const { return flags & kSpecular; }
+  bool IsTransmission() const { return flags & kTransmission; }
+};
+
+// Lambertian reflection (front side only; `twosided` makes it two-sided).
+struct DiffuseBxDF {
+  SampledSpectrum R;
+  SampledSpectrum f(const Vec3f& wo, const Vec3f& wi) const;
+  std::optional<BSDFSample> Sample(const Vec3f& wo, float uc, Vec2f u) const;
+  float Pdf(const Vec3f& wo, const Vec3f& wi) const;
+  int Flags() const { return R.IsBlack() ? 0 : kReflection | kDiffuse; }
+};
+
+// Dielectric interface, smooth or rough (GGX): reflection and refraction weighted by Fresnel.
+// eta = n_inside / n_outside (inside = against the normal).
+struct DielectricBxDF {
+  float eta = 1.5f;
+  TrowbridgeReitz distrib;
+  SampledSpectrum reflect_scale{1.f}, transmit_scale{1.f};
+  SampledSpectrum f(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const;
+  std::optional<BSDFSample> Sample(const Vec3f& wo, float uc, Vec2f u, TransportMode mode) const;
+  float Pdf(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const;
+  int Flags() const;
+};
+
+// Conductor with complex index eta + i k per wavelength, smooth or rough (GGX).
+struct ConductorBxDF {
+  SampledSpectrum eta, k, scale{1.f};
+  TrowbridgeReitz distrib;
+  SampledSpectrum f(const Vec3f& wo, const Vec3f& wi) const;
+  std::optional<BSDFSample> Sample(const Vec3f& wo, float uc, Vec2f u) const;
+  float Pdf(const Vec3f& wo, const Vec3f& wi) const;
+  int Flags() const { return distrib.EffectivelySmooth() ? kReflection | kSpecular : kReflection | kGlossy; }
+};
+
+// Smooth plastic (as Mitsuba's `plastic`): a diffuse base under a smooth dielectric coat,
+// with the coat's internal reflections summed in closed form.
+struct PlasticBxDF {
+  float eta = 1.49f;
+  float fdr_int = 0;             // diffuse Fresnel reflectance seen from inside the coat
+  float specular_sampling_weight = 0.5f;
+  SampledSpectrum diffuse, specular{1.f};
+  bool nonlinear = false;
+  SampledSpectrum f(const Vec3f& wo, const Vec3f& wi) const;
+  std::optional<BSDFSample> Sample(const Vec3f& wo, float uc, Vec2f u) const;
+  float Pdf(const Vec3f& wo, const Vec3f& wi) const;
+  int Flags() const { return kReflection | kDiffuse | kSpecular; }
+};
+
+}  // namespace objektiv

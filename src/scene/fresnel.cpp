@@ -1,0 +1,66 @@
+#include "scene/fresnel.h"
+
+#include <cmath>
+
+namespace objektiv {
+
+float FresnelDielectric(float cos_i, float eta) {
+  cos_i = Clamp(cos_i, -1, 1);
+  if (cos_i < 0) {
+    eta = 1 / eta;
+    cos_i = -cos_i;
+  }
+  float sin2_i = 1 - cos_i * cos_i;
+  float sin2_t = sin2_i / (eta * eta);
+  if (sin2_t >= 1) return 1.f;
+  float cos_t = SafeSqrt(1 - sin2_t);
+  float r_parl = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+  float r_perp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+  return (r_parl * r_parl + r_perp * r_perp) / 2;
+}
+
+float FresnelComplex(float cos_i, std::complex<float> eta) {
+  using C = std::complex<float>;
+  cos_i = Clamp(cos_i, 0, 1);
+  float sin2_i = 1 - cos_i * cos_i;
+  C sin2_t = C(sin2_i) / (eta * eta);
+  C cos_t = std::sqrt(C(1) - sin2_t);
+  C r_parl = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+  C r_perp = (C(cos_i) - eta * cos_t) / (C(cos_i) + eta * cos_t);
+  return (std::norm(r_parl) + std::norm(r_perp)) / 2;
+}
+
+SampledSpectrum FresnelComplex(float cos_i, const SampledSpectrum& eta, const SampledSpectrum& k) {
+  SampledSpectrum r;
+  for (int i = 0; i < kSpectrumSamples; ++i) r[i] = FresnelComplex(cos_i, std::complex<float>(eta[i], k[i]));
+  return r;
+}
+
+bool Refract(const Vec3f& wi, Vec3f n, float eta, float* etap, Vec3f* wt) {
+  float cos_i = Dot(n, wi);
+  if (cos_i < 0) {
+    eta = 1 / eta;
+    cos_i = -cos_i;
+    n = -n;
+  }
+  float sin2_i = std::max(0.f, 1 - cos_i * cos_i);
+  float sin2_t = sin2_i / (eta * eta);
+  if (sin2_t >= 1) return false;
+  float cos_t = SafeSqrt(1 - sin2_t);
+  *wt = -wi / eta + n * (cos_i / eta - cos_t);
+  if (etap) *etap = eta;
+  return true;
+}
+
+float FresnelDiffuseReflectance(float eta) {
+  // Midpoint rule in mu = cos(theta); F is smooth except at the critical angle.
+  const int n = 2048;
+  double s = 0;
+  for (int i = 0; i < n; ++i) {
+    float mu = (i + 0.5f) / n;
+    s += FresnelDielectric(mu, eta) * mu;
+  }
+  return float(2 * s / n);
+}
+
+}  // namespace objektiv

@@ -1,0 +1,31 @@
+// What a ray hit: position with its error bound, normals, shading frame, texture coordinates.
+#pragma once
+#include "base/frame.h"
+#include "scene/ray.h"
+
+namespace objektiv {
+
+class Light;
+struct ShapeRecord;
+
+struct SurfaceInteraction {
+  Vec3f p, p_error;
+  Vec3f n;        // geometric normal (unit; oriented as the shape defines its outside)
+  Frame shading;  // shading frame (z = shading normal, on the same side as n)
+  Vec2f uv;
+  Vec3f wo;       // direction back toward the ray origin
+  float t = 0;
+  const ShapeRecord* shape = nullptr;
+
+  Ray SpawnRay(const Vec3f& d) const { return Ray{OffsetRayOrigin(p, p_error, n, d), d}; }
+  // Shadow ray toward a point (with its own error bound, e.g. on a light); stops just short of it.
+  Ray SpawnRayTo(const Vec3f& target, const Vec3f& target_error, const Vec3f& target_n) const {
+    Vec3f d0 = target - p;
+    Vec3f from = OffsetRayOrigin(p, p_error, n, d0);
+    Vec3f to = OffsetRayOrigin(target, target_error, target_n, from - target);
+    Vec3f d = to - from;
+    return Ray{from, d, 1 - 1e-4f};
+  }
+};
+
+}  // namespace objektiv

@@ -1,0 +1,99 @@
+#include "scene/light.h"
+
+#include "base/sampling.h"
+#include "scene/shape.h"
+
+namespace objektiv {
+
+std::optional<LightSample> PointLight::SampleLi(const Vec3f& ref, Vec2f, const SampledWavelengths& lambda) const {
+  Vec3f d = p_ - ref;
+  float dist2 = LengthSquared(d);
+  if (dist2 == 0) return std::nullopt;
+  LightSample s;
+  s.wi = d / std::sqrt(dist2);
+  s.L = intensity_.Sample(lambda) / dist2;
+  s.pdf = 1;
+  s.p = p_;
+  s.p_error = Vec3f(0.f);
+  s.n = Vec3f(0.f);
+  return s;
+}
+
+float PointLight::Power() const { return 4 * kPi * SpectrumToY(intensity_); }
+
+SpotLight::SpotLight(const Vec3f& position, const Vec3f& direction, Spectrum intensity, float cutoff_deg,
+                     float beam_width_deg)
+    : p_(position), dir_(Normalize(direction)), intensity_(std::move(intensity)) {
+  cutoff_ = Radians(cutoff_deg);
+  beam_ = Radians(std::min(beam_width_deg, cutoff_deg));
+  cos_cutoff_ = std::cos(cutoff_);
+  cos_beam_ = std::cos(beam_);
+}
+
+float SpotLight::Falloff(const Vec3f& w) const {
+  float cos_t = Dot(w, dir_);
+  if (cos_t <= cos_cutoff_) return 0;
+  if (cos_t >= cos_beam_) return 1;
+  // Linear in angle between the beam width and the cutoff, as Mitsuba's spot.
+  float angle = std::acos(Clamp(cos_t, -1, 1));
+  return (cutoff_ - angle) / (cutoff_ - beam_);
+}
+
+std::optional<LightSample> SpotLight::SampleLi(const Vec3f& ref, Vec2f, const SampledWavelengths& lambda) const {
+  Vec3f d = p_ - ref;
+  float dist2 = LengthSquared(d);
+  if (dist2 == 0) return std::nullopt;
+  LightSample s;
+  s.wi = d / std::sqrt(dist2);
+  float fall = Falloff(-s.wi);
+  if (fall == 0) return std::nullopt;
+  s.L = intensity_.Sample(lambda) * (fall / dist2);
+  s.pdf = 1;
+  s.p = p_;
+  s.p_error = Vec3f(0.f);
+  s.n = Vec3f(0.f);
+  return s;
+}
+
+float SpotLight::Power() const {
+  // Solid angle of the cone, counting the falloff region at half weight.
+  return SpectrumToY(intensity_) * 2 * kPi * (1 - 0.5f * (cos_beam_ + cos_cutoff_));
+}
+
+std::optional<LightSample> DirectionalLight::SampleLi(const Vec3f& ref, Vec2f, const SampledWavelengths& lambda) const {
+  LightSample s;
+  s.wi = -dir_;
+  s.L = irradiance_.Sample(lambda);
+  s.pdf = 1;
+  s.p = ref + s.wi * (2 * scene_radius_);
+  s.infinite = true;
+  return s;
+}
+
+float DirectionalLight::Power() const { return kPi * scene_radius_ * scene_radius_ * SpectrumToY(irradiance_); }
+
+SampledSpectrum AreaLight::L(const Vec3f& n, Vec2f uv, const Vec3f& w, const SampledWavelengths& lambda) const {
+  if (!two_sided_ && Dot(n, w) <= 0) return {};
+  return radiance_->Evaluate(uv, lambda);
+}
+
+std::optional<LightSample> AreaLight::SampleLi(const Vec3f& ref, Vec2f u, const SampledWavelengths& lambda) const {
+  std::optional<ShapeSample> ss = shape_->SampleFrom(ref, u);
+  if (!ss) return std::nullopt;
+  Vec3f d = ss->p - ref;
+  float dist2 = LengthSquared(d);
+  if (dist2 == 0) return std::nullopt;
+  LightSample s;
+  s.wi = d / std::sqrt(dist2);
+  s.L = L(ss->n, ss->uv, -s.wi, lambda);
+  if (s.L.IsBlack()) return std::nullopt;
+  s.pdf = ss->pdf;
+  s.p = ss->p;
+  s.p_error = ss->p_error;
+  s.n = ss->n;
+  return s;
+}
+
+float AreaLight::PdfLi(const Vec3f& ref, const SurfaceInteraction& hit) const { return shape_->PdfFrom(ref, hit); }
+
+}  // namespace objektiv

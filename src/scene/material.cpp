@@ -1,0 +1,66 @@
+#include "scene/material.h"
+
+#include "scene/fresnel.h"
+
+namespace objektiv {
+
+BSDF DiffuseMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const {
+  SampledSpectrum r = reflectance_->Evaluate(si.uv, lambda);
+  for (int i = 0; i < kSpectrumSamples; ++i) r[i] = Clamp(r[i], 0, 1);
+  return BSDF(si.shading, si.n, DiffuseBxDF{r}, two_sided_);
+}
+
+DielectricMaterial::DielectricMaterial(IorModel int_ior, double ext_ior, float alpha_u, float alpha_v,
+                                       std::shared_ptr<const SpectrumTexture> specular_reflectance,
+                                       std::shared_ptr<const SpectrumTexture> specular_transmittance)
+    : int_ior_(int_ior), ext_ior_(ext_ior), alpha_u_(alpha_u), alpha_v_(alpha_v),
+      specular_reflectance_(std::move(specular_reflectance)), specular_transmittance_(std::move(specular_transmittance)) {}
+
+BSDF DielectricMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const {
+  // A wavelength-dependent index bends each wavelength its own way: only the hero survives.
+  if (int_ior_.IsDispersive()) lambda.TerminateSecondary();
+  DielectricBxDF b;
+  b.eta = float(int_ior_(lambda[0]) / ext_ior_);
+  b.distrib = TrowbridgeReitz(alpha_u_, alpha_v_);
+  b.reflect_scale = specular_reflectance_->Evaluate(si.uv, lambda);
+  b.transmit_scale = specular_transmittance_->Evaluate(si.uv, lambda);
+  return BSDF(si.shading, si.n, b, true);
+}
+
+ConductorMaterial::ConductorMaterial(Spectrum eta, Spectrum k, float alpha_u, float alpha_v,
+                                     std::shared_ptr<const SpectrumTexture> specular_reflectance)
+    : eta_(std::move(eta)), k_(std::move(k)), alpha_u_(alpha_u), alpha_v_(alpha_v),
+      specular_reflectance_(std::move(specular_reflectance)) {}
+
+BSDF ConductorMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const {
+  ConductorBxDF b;
+  b.eta = eta_.Sample(lambda);
+  b.k = k_.Sample(lambda);
+  b.scale = specular_reflectance_->Evaluate(si.uv, lambda);
+  b.distrib = TrowbridgeReitz(alpha_u_, alpha_v_);
+  return BSDF(si.shading, si.n, b, two_sided_);
+}
+
+PlasticMaterial::PlasticMaterial(float int_ior, float ext_ior, std::shared_ptr<const SpectrumTexture> diffuse,
+                                 std::shared_ptr<const SpectrumTexture> specular, bool nonlinear)
+    : eta_(int_ior / ext_ior), diffuse_(std::move(diffuse)), specular_(std::move(specular)), nonlinear_(nonlinear) {
+  fdr_int_ = FresnelDiffuseReflectance(1 / eta_);
+  // Sample the coat in proportion to the mean specular and diffuse albedos (as Mitsuba).
+  float d = diffuse_->MeanRgb().x + diffuse_->MeanRgb().y + diffuse_->MeanRgb().z;
+  float s = specular_->MeanRgb().x + specular_->MeanRgb().y + specular_->MeanRgb().z;
+  specular_weight_ = d + s > 0 ? s / (d + s) : 0.5f;
+}
+
+BSDF PlasticMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const {
+  PlasticBxDF b;
+  b.eta = eta_;
+  b.fdr_int = fdr_int_;
+  b.specular_sampling_weight = specular_weight_;
+  b.diffuse = diffuse_->Evaluate(si.uv, lambda);
+  for (int i = 0; i < kSpectrumSamples; ++i) b.diffuse[i] = Clamp(b.diffuse[i], 0, 1);
+  b.specular = specular_->Evaluate(si.uv, lambda);
+  b.nonlinear = nonlinear_;
+  return BSDF(si.shading, si.n, b, two_sided_);
+}
+
+}  // namespace objektiv

@@ -1,0 +1,70 @@
+// Materials turn textures and parameters at a surface point into a BSDF.
+#pragma once
+#include <memory>
+
+#include "scene/bsdf.h"
+#include "scene/ior.h"
+#include "scene/texture.h"
+
+namespace objektiv {
+
+class Material {
+ public:
+  virtual ~Material() = default;
+  // May reduce the wavelength bundle to its hero (dispersive interfaces).
+  virtual BSDF GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const = 0;
+  void SetTwoSided(bool v) { two_sided_ = v; }
+
+ protected:
+  bool two_sided_ = false;
+};
+
+class DiffuseMaterial final : public Material {
+ public:
+  explicit DiffuseMaterial(std::shared_ptr<const SpectrumTexture> reflectance) : reflectance_(std::move(reflectance)) {}
+  BSDF GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const override;
+
+ private:
+  std::shared_ptr<const SpectrumTexture> reflectance_;
+};
+
+// Smooth or rough (alpha > 0) dielectric; int_ior may vary with wavelength (dispersion).
+class DielectricMaterial final : public Material {
+ public:
+  DielectricMaterial(IorModel int_ior, double ext_ior, float alpha_u, float alpha_v,
+                     std::shared_ptr<const SpectrumTexture> specular_reflectance,
+                     std::shared_ptr<const SpectrumTexture> specular_transmittance);
+  BSDF GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const override;
+
+ private:
+  IorModel int_ior_;
+  double ext_ior_;
+  float alpha_u_, alpha_v_;
+  std::shared_ptr<const SpectrumTexture> specular_reflectance_, specular_transmittance_;
+};
+
+class ConductorMaterial final : public Material {
+ public:
+  ConductorMaterial(Spectrum eta, Spectrum k, float alpha_u, float alpha_v,
+                    std::shared_ptr<const SpectrumTexture> specular_reflectance);
+  BSDF GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const override;
+
+ private:
+  Spectrum eta_, k_;
+  float alpha_u_, alpha_v_;
+  std::shared_ptr<const SpectrumTexture> specular_reflectance_;
+};
+
+class PlasticMaterial final : public Material {
+ public:
+  PlasticMaterial(float int_ior, float ext_ior, std::shared_ptr<const SpectrumTexture> diffuse,
+                  std::shared_ptr<const SpectrumTexture> specular, bool nonlinear);
+  BSDF GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const override;
+
+ private:
+  float eta_, fdr_int_, specular_weight_;
+  std::shared_ptr<const SpectrumTexture> diffuse_, specular_;
+  bool nonlinear_;
+};
+
+}  // namespace objektiv

@@ -1,0 +1,39 @@
+// Rays and robust ray spawning (offsets from floating-point error bounds, as pbrt does,
+// so that no fixed epsilon is needed at any scene scale).
+#pragma once
+#include <cmath>
+#include <limits>
+
+#include "base/vec.h"
+
+namespace objektiv {
+
+struct Ray {
+  Vec3f o, d;
+  float tmax = std::numeric_limits<float>::infinity();
+};
+
+// gamma(n) = n u / (1 - n u), u = 2^-24: bound on the relative error of n float operations.
+constexpr float Gamma(int n) {
+  constexpr float u = 0x1p-24f;
+  return (n * u) / (1 - n * u);
+}
+
+inline float NextFloatUp(float v) { return std::nextafter(v, std::numeric_limits<float>::infinity()); }
+inline float NextFloatDown(float v) { return std::nextafter(v, -std::numeric_limits<float>::infinity()); }
+
+// Move p (with absolute error bound p_error) off its surface (normal n) to the side of w,
+// far enough that a ray leaving in direction w cannot re-hit the surface it left.
+inline Vec3f OffsetRayOrigin(const Vec3f& p, const Vec3f& p_error, const Vec3f& n, const Vec3f& w) {
+  float d = Dot(Abs(n), p_error);
+  Vec3f offset = n * d;
+  if (Dot(w, n) < 0) offset = -offset;
+  Vec3f po = p + offset;
+  for (int i = 0; i < 3; ++i) {
+    if (offset[i] > 0) po[i] = NextFloatUp(po[i]);
+    else if (offset[i] < 0) po[i] = NextFloatDown(po[i]);
+  }
+  return po;
+}
+
+}  // namespace objektiv

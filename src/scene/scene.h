@@ -1,0 +1,60 @@
+// The scene: shapes in an Embree BVH with their materials and area lights, plus the lights.
+#pragma once
+#include <embree3/rtcore.h>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "base/sampling.h"
+#include "scene/infinite_light.h"
+#include "scene/light.h"
+#include "scene/material.h"
+#include "scene/shape.h"
+
+namespace objektiv {
+
+struct ShapeRecord {
+  std::unique_ptr<Shape> shape;
+  std::shared_ptr<const Material> material;
+  const AreaLight* area_light = nullptr;
+};
+
+class Scene {
+ public:
+  Scene();
+  ~Scene();
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+
+  // Building. Shapes keep their order (Embree geometry ID = index).
+  ShapeRecord& AddShape(std::unique_ptr<Shape> shape, std::shared_ptr<const Material> material);
+  // Makes the shape record an emitter.
+  void AddAreaLight(ShapeRecord& record, std::shared_ptr<const SpectrumTexture> radiance, bool two_sided);
+  void AddLight(std::unique_ptr<Light> light);
+  // Builds the BVH, preprocesses lights, builds the light-selection distribution.
+  void Commit();
+
+  // Queries (thread-safe after Commit).
+  std::optional<SurfaceInteraction> Intersect(const Ray& ray) const;
+  bool Occluded(const Ray& ray) const;
+
+  const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
+  const std::vector<const InfiniteLight*>& infinite_lights() const { return infinite_lights_; }
+  // Chooses a light in proportion to its power; nullptr when the scene has none.
+  const Light* SampleLight(float u, float* pmf) const;
+  float LightPmf(const Light* light) const;
+  const Bounds3f& bounds() const { return bounds_; }
+  size_t ShapeCount() const { return shapes_.size(); }
+
+ private:
+  RTCDevice device_ = nullptr;
+  RTCScene scene_ = nullptr;
+  std::vector<ShapeRecord> shapes_;
+  std::vector<std::unique_ptr<Light>> lights_;
+  std::vector<const InfiniteLight*> infinite_lights_;
+  Distribution1D light_distribution_;
+  Bounds3f bounds_;
+};
+
+}  // namespace objektiv

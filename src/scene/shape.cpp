@@ -1,0 +1,25 @@
+#include "scene/shape.h"
+
+namespace objektiv {
+
+float AreaToSolidAnglePdf(float pdf_area, const Vec3f& ref, const Vec3f& p, const Vec3f& n) {
+  Vec3f d = p - ref;
+  float dist2 = LengthSquared(d);
+  if (dist2 == 0) return 0;
+  float cos = AbsDot(n, d) / std::sqrt(dist2);
+  if (cos == 0) return 0;
+  return pdf_area * dist2 / cos;
+}
+
+std::optional<ShapeSample> Shape::SampleFrom(const Vec3f& ref, Vec2f u) const {
+  ShapeSample s = SampleArea(u);
+  s.pdf = AreaToSolidAnglePdf(s.pdf, ref, s.p, s.n);
+  if (!(s.pdf > 0) || std::isinf(s.pdf)) return std::nullopt;
+  return s;
+}
+
+float Shape::PdfFrom(const Vec3f& ref, const SurfaceInteraction& hit) const {
+  return AreaToSolidAnglePdf(1 / Area(), ref, hit.p, hit.n);
+}
+
+}  // namespace objektiv

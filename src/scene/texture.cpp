@@ -1,0 +1,69 @@
+#include "scene/texture.h"
+
+#include <cmath>
+
+namespace objektiv {
+
+Vec3f ConstantTexture::MeanRgb() const { return s_.IsConstant() ? Vec3f(s_.ConstantValue()) : SpectrumToRgb(s_); }
+
+SampledSpectrum RgbToSampled(Vec3f rgb, SpectrumUsage usage, const SampledWavelengths& lambda) {
+  switch (usage) {
+    case SpectrumUsage::kAlbedo:
+      return RgbToSigmoid(rgb).Sample(lambda);
+    case SpectrumUsage::kUnbounded:
+      return Spectrum::RgbUnbounded(rgb).Sample(lambda);
+    case SpectrumUsage::kIlluminant:
+      return Spectrum::RgbIlluminant(rgb).Sample(lambda);
+  }
+  return {};
+}
+
+SampledSpectrum CheckerboardTexture::Evaluate(Vec2f uv, const SampledWavelengths& lambda) const {
+  Vec3f p = to_uv_.Point(Vec3f(uv.x, uv.y, 0));
+  int x = int(std::floor(p.x * 2)), y = int(std::floor(p.y * 2));
+  return ((x + y) & 1) == 0 ? c0_->Evaluate(uv, lambda) : c1_->Evaluate(uv, lambda);
+}
+
+BitmapTexture::BitmapTexture(Image image, SpectrumUsage usage, FilterMode filter, WrapMode wrap, const Transform& to_uv)
+    : image_(std::move(image)), usage_(usage), filter_(filter), wrap_(wrap), to_uv_(to_uv) {
+  Vec3d sum(0.0);
+  for (int y = 0; y < image_.height; ++y)
+    for (int x = 0; x < image_.width; ++x) sum += Vec3d(image_.Rgb(x, y));
+  mean_ = Vec3f(sum / double(std::max(1, image_.width * image_.height)));
+}
+
+Vec3f BitmapTexture::Texel(int x, int y) const {
+  auto wrap = [&](int i, int n) {
+    switch (wrap_) {
+      case WrapMode::kRepeat:
+        return ((i % n) + n) % n;
+      case WrapMode::kClamp:
+        return std::clamp(i, 0, n - 1);
+      case WrapMode::kMirror: {
+        int period = 2 * n, m = ((i % period) + period) % period;
+        return m < n ? m : period - 1 - m;
+      }
+    }
+    return 0;
+  };
+  return image_.Rgb(wrap(x, image_.width), wrap(y, image_.height));
+}
+
+Vec3f BitmapTexture::LookupRgb(Vec2f uv) const {
+  Vec3f p = to_uv_.Point(Vec3f(uv.x, uv.y, 0));
+  // Row 0 is the top of the image; v = 0 is its bottom.
+  float x = p.x * image_.width, y = (1 - p.y) * image_.height;
+  if (filter_ == FilterMode::kNearest) return Texel(int(std::floor(x)), int(std::floor(y)));
+  x -= 0.5f;
+  y -= 0.5f;
+  int x0 = int(std::floor(x)), y0 = int(std::floor(y));
+  float dx = x - x0, dy = y - y0;
+  return (Texel(x0, y0) * (1 - dx) + Texel(x0 + 1, y0) * dx) * (1 - dy) +
+         (Texel(x0, y0 + 1) * (1 - dx) + Texel(x0 + 1, y0 + 1) * dx) * dy;
+}
+
+SampledSpectrum BitmapTexture::Evaluate(Vec2f uv, const SampledWavelengths& lambda) const {
+  return RgbToSampled(LookupRgb(uv), usage_, lambda);
+}
+
+}  // namespace objektiv

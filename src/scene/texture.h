@@ -1,0 +1,73 @@
+// Textures: spectral values (reflectances, emission) or floats as functions of the surface point.
+#pragma once
+#include <memory>
+
+#include "base/image.h"
+#include "base/sampled_spectrum.h"
+#include "base/spectrum.h"
+#include "base/transform.h"
+#include "scene/interaction.h"
+
+namespace objektiv {
+
+// How an RGB from a texture becomes a spectrum.
+enum class SpectrumUsage { kAlbedo, kUnbounded, kIlluminant };
+
+class SpectrumTexture {
+ public:
+  virtual ~SpectrumTexture() = default;
+  virtual SampledSpectrum Evaluate(Vec2f uv, const SampledWavelengths& lambda) const = 0;
+  // Mean linear RGB over the texture (used for sampling weights, not for shading).
+  virtual Vec3f MeanRgb() const = 0;
+};
+
+class ConstantTexture final : public SpectrumTexture {
+ public:
+  explicit ConstantTexture(Spectrum s) : s_(std::move(s)) {}
+  SampledSpectrum Evaluate(Vec2f, const SampledWavelengths& lambda) const override { return s_.Sample(lambda); }
+  Vec3f MeanRgb() const override;
+
+ private:
+  Spectrum s_;
+};
+
+// Mitsuba's checkerboard: color0 where floor(u*2)+floor(v*2) is even, color1 otherwise,
+// after the to_uv transform.
+class CheckerboardTexture final : public SpectrumTexture {
+ public:
+  CheckerboardTexture(std::shared_ptr<const SpectrumTexture> c0, std::shared_ptr<const SpectrumTexture> c1,
+                      const Transform& to_uv)
+      : c0_(std::move(c0)), c1_(std::move(c1)), to_uv_(to_uv) {}
+  SampledSpectrum Evaluate(Vec2f uv, const SampledWavelengths& lambda) const override;
+  Vec3f MeanRgb() const override { return (c0_->MeanRgb() + c1_->MeanRgb()) * 0.5f; }
+
+ private:
+  std::shared_ptr<const SpectrumTexture> c0_, c1_;
+  Transform to_uv_;
+};
+
+enum class WrapMode { kRepeat, kMirror, kClamp };
+enum class FilterMode { kBilinear, kNearest };
+
+// An RGB image (linear, already decoded from sRGB by the loader) looked up at uv, v = 0 at
+// the bottom row as in Mitsuba.
+class BitmapTexture final : public SpectrumTexture {
+ public:
+  BitmapTexture(Image image, SpectrumUsage usage, FilterMode filter, WrapMode wrap, const Transform& to_uv);
+  SampledSpectrum Evaluate(Vec2f uv, const SampledWavelengths& lambda) const override;
+  Vec3f MeanRgb() const override { return mean_; }
+  Vec3f LookupRgb(Vec2f uv) const;
+
+ private:
+  Vec3f Texel(int x, int y) const;
+  Image image_;
+  SpectrumUsage usage_;
+  FilterMode filter_;
+  WrapMode wrap_;
+  Transform to_uv_;
+  Vec3f mean_;
+};
+
+SampledSpectrum RgbToSampled(Vec3f rgb, SpectrumUsage usage, const SampledWavelengths& lambda);
+
+}  // namespace objektiv

@@ -1,0 +1,146 @@
+#include "scene/triangle_mesh.h"
+
+#include <cstring>
+#include <stdexcept>
+
+#include "base/rng.h"
+
+namespace objektiv {
+
+TriangleMesh::TriangleMesh(MeshData data, const Transform& to_world, bool flip_normals)
+    : data_(std::move(data)), flip_(flip_normals) {
+  if (data_.indices.size() % 3 != 0) throw std::invalid_argument("mesh index count is not a multiple of 3");
+  for (uint32_t i : data_.indices)
+    if (i >= data_.positions.size()) throw std::invalid_argument("mesh index out of range");
+  if (!data_.normals.empty() && data_.normals.size() != data_.positions.size())
+    throw std::invalid_argument("mesh normal count differs from vertex count");
+  if (!data_.uvs.empty() && data_.uvs.size() != data_.positions.size())
+    throw std::invalid_argument("mesh uv count differs from vertex count");
+  if (!to_world.IsIdentity()) {
+    for (Vec3f& p : data_.positions) p = to_world.Point(p);
+    for (Vec3f& n : data_.normals) n = Normalize(to_world.Normal(n));
+    // A mirroring transform turns counter-clockwise into clockwise: keep the front side.
+    if (to_world.SwapsHandedness()) flip_ = !flip_;
+  }
+  for (const Vec3f& p : data_.positions) bounds_.Extend(p);
+  std::vector<float> areas(TriangleCount());
+  for (size_t i = 0; i < areas.size(); ++i) {
+    const Vec3f& p0 = data_.positions[data_.indices[3 * i]];
+    const Vec3f& p1 = data_.positions[data_.indices[3 * i + 1]];
+    const Vec3f& p2 = data_.positions[data_.indices[3 * i + 2]];
+    areas[i] = 0.5f * Length(Cross(p1 - p0, p2 - p0));
+    area_ += areas[i];
+  }
+  if (!areas.empty()) triangle_distribution_ = Distribution1D(areas);
+}
+
+RTCGeometry TriangleMesh::CreateGeometry(RTCDevice device) const {
+  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  // Embree reads the vertex buffer with 16-byte loads: the shared buffer must be padded,
+  // so copy into Embree-owned buffers (one extra float at the end).
+  float* v = static_cast<float*>(
+      rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(Vec3f), data_.positions.size()));
+  std::memcpy(v, data_.positions.data(), data_.positions.size() * sizeof(Vec3f));
+  uint32_t* idx = static_cast<uint32_t*>(
+      rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), TriangleCount()));
+  std::memcpy(idx, data_.indices.data(), data_.indices.size() * sizeof(uint32_t));
+  rtcCommitGeometry(geom);
+  return geom;
+}
+
+SurfaceInteraction TriangleMesh::ComputeInteraction(const Ray& ray, const RTCHit& hit, float t) const {
+  const uint32_t* tri = &data_.indices[3 * size_t(hit.primID)];
+  const Vec3f &p0 = data_.positions[tri[0]], &p1 = data_.positions[tri[1]], &p2 = data_.positions[tri[2]];
+  float b1 = hit.u, b2 = hit.v, b0 = 1 - b1 - b2;
+  SurfaceInteraction si;
+  // Interpolating the vertices is more accurate than o + t d; bound its rounding error.
+  si.p = p0 * b0 + p1 * b1 + p2 * b2;
+  si.p_error = (Abs(p0 * b0) + Abs(p1 * b1) + Abs(p2 * b2)) * Gamma(7);
+  Vec3f e1 = p1 - p0, e2 = p2 - p0;
+  Vec3f ng = Cross(e1, e2);
+  float len = Length(ng);
+  si.n = len > 0 ? ng / len : Vec3f(0, 0, 1);
+  if (flip_) si.n = -si.n;
+  Vec2f uv0(0, 0), uv1(1, 0), uv2(1, 1);
+  if (!data_.uvs.empty()) {
+    uv0 = data_.uvs[tri[0]];
+    uv1 = data_.uvs[tri[1]];
+    uv2 = data_.uvs[tri[2]];
+  }
+  si.uv = uv0 * b0 + uv1 * b1 + uv2 * b2;
+  // dp/du from the uv parameterisation, for a stable tangent (and bump mapping later).
+  Vec2f duv02 = uv0 - uv2, duv12 = uv1 - uv2;
+  Vec3f dp02 = p0 - p2, dp12 = p1 - p2;
+  float det = duv02.x * duv12.y - duv02.y * duv12.x;
+  Vec3f dpdu = std::abs(det) > 1e-12f ? (dp02 * duv12.y - dp12 * duv02.y) / det : e1;
+  Vec3f ns = si.n;
+  if (!data_.normals.empty()) {
+    Vec3f nsi = data_.normals[tri[0]] * b0 + data_.normals[tri[1]] * b1 + data_.normals[tri[2]] * b2;
+    float l2 = LengthSquared(nsi);
+    if (l2 > 0) {
+      ns = nsi / std::sqrt(l2);
+      if (flip_) ns = -ns;
+    }
+  }
+  si.shading = Frame::FromNormalTangent(ns, dpdu);
+  si.t = t;
+  si.wo = -Normalize(ray.d);
+  return si;
+}
+
+ShapeSample TriangleMesh::SampleArea(Vec2f u) const {
+  float pmf;
+  int i = triangle_distribution_.SampleDiscrete(u.x, &pmf);
+  // Reuse u.x within the chosen triangle's slice of the CDF.
+  float ux = std::min((u.x - triangle_distribution_.CdfAt(i)) / pmf, kOneMinusEpsilon);
+  Vec2f b = SampleUniformTriangle({ux, u.y});
+  const uint32_t* tri = &data_.indices[3 * size_t(i)];
+  const Vec3f &p0 = data_.positions[tri[0]], &p1 = data_.positions[tri[1]], &p2 = data_.positions[tri[2]];
+  float b2 = 1 - b.x - b.y;
+  ShapeSample s;
+  s.p = p0 * b.x + p1 * b.y + p2 * b2;
+  s.p_error = (Abs(p0 * b.x) + Abs(p1 * b.y) + Abs(p2 * b2)) * Gamma(6);
+  s.n = Normalize(Cross(p1 - p0, p2 - p0));
+  if (flip_) s.n = -s.n;
+  Vec2f uv0(0, 0), uv1(1, 0), uv2(1, 1);
+  if (!data_.uvs.empty()) {
+    uv0 = data_.uvs[tri[0]];
+    uv1 = data_.uvs[tri[1]];
+    uv2 = data_.uvs[tri[2]];
+  }
+  s.uv = uv0 * b.x + uv1 * b.y + uv2 * b2;
+  s.pdf = 1 / area_;
+  return s;
+}
+
+MeshData TriangleMesh::Rectangle() {
+  MeshData m;
+  m.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  m.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+  m.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  m.indices = {0, 1, 2, 2, 3, 0};
+  return m;
+}
+
+MeshData TriangleMesh::Cube() {
+  MeshData m;
+  // Six faces, each with its own four vertices so that normals and uvs are per face.
+  const Vec3f normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (const Vec3f& n : normals) {
+    // Two tangents completing a right-handed frame with n.
+    Vec3f a = std::abs(n.x) > 0 ? Vec3f(0, 1, 0) : Vec3f(1, 0, 0);
+    Vec3f b = Cross(n, a);
+    uint32_t base = uint32_t(m.positions.size());
+    const Vec2f corners[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    for (const Vec2f& c : corners) {
+      m.positions.push_back(n + a * c.x + b * c.y);
+      m.normals.push_back(n);
+      m.uvs.push_back({(c.x + 1) / 2, (c.y + 1) / 2});
+    }
+    // Wind counter-clockwise seen from outside: (a, b, n) is right-handed.
+    m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base + 2, base + 3, base});
+  }
+  return m;
+}
+
+}  // namespace objektiv

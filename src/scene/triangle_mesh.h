@@ -1,0 +1,47 @@
+// Triangle meshes in world space (transformed once when loaded), intersected by Embree.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "base/sampling.h"
+#include "base/transform.h"
+#include "scene/shape.h"
+
+namespace objektiv {
+
+struct MeshData {
+  std::vector<Vec3f> positions;
+  std::vector<Vec3f> normals;  // per vertex, optional
+  std::vector<Vec2f> uvs;      // per vertex, optional
+  std::vector<uint32_t> indices;  // three per triangle, counter-clockwise = front
+};
+
+class TriangleMesh final : public Shape {
+ public:
+  // Applies to_world to positions and normals; flip_normals reverses the front side.
+  // Degenerate (zero-area) triangles are kept for Embree but never sampled.
+  TriangleMesh(MeshData data, const Transform& to_world, bool flip_normals);
+
+  RTCGeometry CreateGeometry(RTCDevice device) const override;
+  SurfaceInteraction ComputeInteraction(const Ray& ray, const RTCHit& hit, float t) const override;
+  float Area() const override { return area_; }
+  Bounds3f WorldBounds() const override { return bounds_; }
+  ShapeSample SampleArea(Vec2f u) const override;
+
+  size_t TriangleCount() const { return data_.indices.size() / 3; }
+  const MeshData& data() const { return data_; }
+
+  // Unit-square rectangle [-1,1]^2 at z = 0 facing +z, and the cube [-1,1]^3 facing out.
+  static MeshData Rectangle();
+  static MeshData Cube();
+
+ private:
+  MeshData data_;
+  bool flip_;
+  float area_ = 0;
+  Bounds3f bounds_;
+  Distribution1D triangle_distribution_;
+};
+
+}  // namespace objektiv
