@@ -50,17 +50,20 @@ Vec3d D65WhiteXYZ() {
   return white;
 }
 
-float D65Normalized(float lambda) {
-  static const float scale = [] {
-    double y = 0;
-    for (int l = int(kLambdaMin); l <= int(kLambdaMax); ++l) {
-      double w = (l == int(kLambdaMin) || l == int(kLambdaMax)) ? 0.5 : 1.0;
-      y += w * CieXyz(float(l)).y * D65Raw(float(l));
-    }
-    return float(CieYIntegral() / y);
-  }();
-  return D65Raw(lambda) * scale;
-}
+namespace {
+// Scale that gives D65 a luminance of 1; computed during static initialisation so that the
+// hot-path lookup carries no initialisation guard.
+const float kD65Scale = [] {
+  double y = 0;
+  for (int l = int(kLambdaMin); l <= int(kLambdaMax); ++l) {
+    double w = (l == int(kLambdaMin) || l == int(kLambdaMax)) ? 0.5 : 1.0;
+    y += w * CieXyz(float(l)).y * D65Raw(float(l));
+  }
+  return float(CieYIntegral() / y);
+}();
+}  // namespace
+
+float D65Normalized(float lambda) { return D65Raw(lambda) * kD65Scale; }
 
 namespace {
 

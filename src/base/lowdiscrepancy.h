@@ -10,8 +10,7 @@
 namespace objektiv {
 
 inline uint32_t ReverseBits32(uint32_t n) {
-  n = (n << 16) | (n >> 16);
-  n = ((n & 0x00ff00ffu) << 8) | ((n & 0xff00ff00u) >> 8);
+  n = __builtin_bswap32(n);
   n = ((n & 0x0f0f0f0fu) << 4) | ((n & 0xf0f0f0f0u) >> 4);
   n = ((n & 0x33333333u) << 2) | ((n & 0xccccccccu) >> 2);
   n = ((n & 0x55555555u) << 1) | ((n & 0xaaaaaaaau) >> 1);
@@ -36,24 +35,47 @@ inline uint32_t NestedUniformScramble(uint32_t x, uint32_t seed) {
 // Dimension 0 of Sobol' is the van der Corput sequence; dimension 1 uses the generator
 // matrix of the primitive polynomial x + 1 (the Pascal matrix mod 2).
 inline uint32_t Sobol0(uint32_t index) { return ReverseBits32(index); }
+
+// Sobol1 by bytes: the XOR of the generator columns selected by each byte of the index is
+// tabulated (4 x 256 entries), so a point costs four lookups instead of a 32-step loop.
+struct Sobol1Tables {
+  uint32_t t[4][256];
+  constexpr Sobol1Tables() : t{} {
+    uint32_t columns[32] = {};
+    uint32_t v = 1u << 31;
+    for (int i = 0; i < 32; ++i, v ^= v >> 1) columns[i] = v;
+    for (int b = 0; b < 4; ++b)
+      for (int x = 0; x < 256; ++x) {
+        uint32_t r = 0;
+        for (int bit = 0; bit < 8; ++bit)
+          if (x & (1 << bit)) r ^= columns[8 * b + bit];
+        t[b][x] = r;
+      }
+  }
+};
+inline constexpr Sobol1Tables kSobol1Tables{};
+
 inline uint32_t Sobol1(uint32_t index) {
-  uint32_t v = 1u << 31, result = 0;
-  for (; index; index >>= 1, v ^= v >> 1)
-    if (index & 1) result ^= v;
-  return result;
+  const auto& t = kSobol1Tables.t;
+  return t[0][index & 0xff] ^ t[1][(index >> 8) & 0xff] ^ t[2][(index >> 16) & 0xff] ^ t[3][index >> 24];
 }
 
-// Point `index` of the shuffled, Owen-scrambled 2D Sobol' net with the given seed.
+// Point `index` of the shuffled, Owen-scrambled 2D Sobol' net for a 64-bit seed. The
+// index shuffle is itself a nested uniform scramble (Burley 2020), which keeps every
+// aligned power-of-two block of indices a (0,m,2)-net. Nested scrambles are applied as
+// Reverse(LK(Reverse(v))); adjacent reversals cancel and are left out.
 inline Vec2f ScrambledSobol2D(uint32_t index, uint64_t seed) {
-  uint32_t shuffled = NestedUniformScramble(index, uint32_t(MixBits(seed ^ 0x1234)));
-  uint32_t x = NestedUniformScramble(Sobol0(shuffled), uint32_t(MixBits(seed ^ 0xa511e9b3)));
-  uint32_t y = NestedUniformScramble(Sobol1(shuffled), uint32_t(MixBits(seed ^ 0x63d83595)));
+  uint32_t s_index = uint32_t(seed), s_x = uint32_t(seed >> 32), s_y = uint32_t(MixBits(seed));
+  uint32_t shuffled = ReverseBits32(LaineKarrasPermutation(ReverseBits32(index), s_index));
+  uint32_t x = ReverseBits32(LaineKarrasPermutation(shuffled, s_x));  // Sobol0 = Reverse(shuffled)
+  uint32_t y = ReverseBits32(LaineKarrasPermutation(ReverseBits32(Sobol1(shuffled)), s_y));
   return {UIntToUnitFloat(x), UIntToUnitFloat(y)};
 }
 
 inline float ScrambledSobol1D(uint32_t index, uint64_t seed) {
-  uint32_t shuffled = NestedUniformScramble(index, uint32_t(MixBits(seed ^ 0x1234)));
-  return UIntToUnitFloat(NestedUniformScramble(Sobol0(shuffled), uint32_t(MixBits(seed ^ 0xa511e9b3))));
+  uint32_t s_index = uint32_t(seed), s_x = uint32_t(seed >> 32);
+  uint32_t shuffled = ReverseBits32(LaineKarrasPermutation(ReverseBits32(index), s_index));
+  return UIntToUnitFloat(ReverseBits32(LaineKarrasPermutation(shuffled, s_x)));
 }
 
 }  // namespace objektiv

@@ -86,10 +86,22 @@ float Spectrum::operator()(float lambda) const {
 }
 
 SampledSpectrum Spectrum::Sample(const SampledWavelengths& w) const {
+  // The common kinds are dispatched once for the whole bundle (this is on the hot path).
   SampledSpectrum s;
-  if (kind_ == Kind::kConstant) return SampledSpectrum(scale_);
-  for (int i = 0; i < kSpectrumSamples; ++i) s[i] = (*this)(w[i]);
-  return s;
+  switch (kind_) {
+    case Kind::kConstant:
+      return SampledSpectrum(scale_);
+    case Kind::kRgbAlbedo:
+    case Kind::kRgbUnbounded:
+      for (int i = 0; i < kSpectrumSamples; ++i) s[i] = scale_ * poly_(w[i]);
+      return s;
+    case Kind::kRgbIlluminant:
+      for (int i = 0; i < kSpectrumSamples; ++i) s[i] = scale_ * poly_(w[i]) * D65Normalized(w[i]);
+      return s;
+    default:
+      for (int i = 0; i < kSpectrumSamples; ++i) s[i] = (*this)(w[i]);
+      return s;
+  }
 }
 
 float Spectrum::MaxValue() const {

@@ -62,6 +62,7 @@ template <typename T> Vec3<T> Abs(const Vec3<T>& v) { return {std::abs(v.x), std
 template <typename T> Vec3<T> Min(const Vec3<T>& a, const Vec3<T>& b) { return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)}; }
 template <typename T> Vec3<T> Max(const Vec3<T>& a, const Vec3<T>& b) { return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}; }
 template <typename T> T MaxComponent(const Vec3<T>& v) { return std::max(v.x, std::max(v.y, v.z)); }
+template <typename T> T MinComponent(const Vec3<T>& v) { return std::min(v.x, std::min(v.y, v.z)); }
 // Flip v to lie in the same hemisphere as ref.
 template <typename T> Vec3<T> FaceForward(const Vec3<T>& v, const Vec3<T>& ref) { return Dot(v, ref) < 0 ? -v : v; }
 template <typename T> Vec3<T> Reflect(const Vec3<T>& wo, const Vec3<T>& n) { return -wo + n * (2 * Dot(wo, n)); }

@@ -1,6 +1,7 @@
 // Materials turn textures and parameters at a surface point into a BSDF.
 #pragma once
 #include <memory>
+#include <optional>
 
 #include "scene/bsdf.h"
 #include "scene/ior.h"
@@ -14,6 +15,9 @@ class Material {
   // May reduce the wavelength bundle to its hero (dispersive interfaces).
   virtual BSDF GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const = 0;
   void SetTwoSided(bool v) { two_sided_ = v; }
+  // Absorption coefficient (per scene unit) of the medium behind the surface, for
+  // Beer-Lambert attenuation of path segments inside closed dielectrics; nullptr if none.
+  virtual const Spectrum* Absorption() const { return nullptr; }
 
  protected:
   bool two_sided_ = false;
@@ -35,8 +39,11 @@ class DielectricMaterial final : public Material {
                      std::shared_ptr<const SpectrumTexture> specular_reflectance,
                      std::shared_ptr<const SpectrumTexture> specular_transmittance);
   BSDF GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const override;
+  const Spectrum* Absorption() const override { return absorption_ ? &*absorption_ : nullptr; }
+  void SetAbsorption(Spectrum sigma_a) { absorption_ = std::move(sigma_a); }
 
  private:
+  std::optional<Spectrum> absorption_;
   IorModel int_ior_;
   double ext_ior_;
   float alpha_u_, alpha_v_;

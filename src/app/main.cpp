@@ -1,0 +1,38 @@
+// objektiv: renders scenes through real camera lenses. See README.md for the commands.
+#include <cstdio>
+
+#include "app/commands.h"
+#include "base/error.h"
+#include "base/log.h"
+
+int main(int argc, char** argv) {
+  using namespace objektiv;
+  CLI::App app{"Objektiv: a spectral renderer whose camera is a real lens"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "objektiv 0.1.0");
+  auto render = AddRenderCommand(app);
+  auto imgtool = AddImgtoolCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;  // bad command-line values
+  }
+  try {
+    if (app.got_subcommand("render")) return render();
+    if (app.got_subcommand("imgtool")) return imgtool();
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+  return 2;
+}

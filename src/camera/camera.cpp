@@ -1,0 +1,93 @@
+#include "camera/camera.h"
+
+#include <cmath>
+
+#include "base/sampling.h"
+
+namespace objektiv {
+
+Vec2f ScreenTangents(float fov_deg, FovAxis axis, int width, int height) {
+  float t = std::tan(Radians(fov_deg) / 2);
+  float w = float(width), h = float(height);
+  switch (axis) {
+    case FovAxis::kX:
+      return {t, t * h / w};
+    case FovAxis::kY:
+      return {t * w / h, t};
+    case FovAxis::kDiagonal: {
+      float d = std::sqrt(w * w + h * h);
+      return {t * w / d, t * h / d};
+    }
+    case FovAxis::kSmaller:
+      return w <= h ? ScreenTangents(fov_deg, FovAxis::kX, width, height) : ScreenTangents(fov_deg, FovAxis::kY, width, height);
+    case FovAxis::kLarger:
+      return w >= h ? ScreenTangents(fov_deg, FovAxis::kX, width, height) : ScreenTangents(fov_deg, FovAxis::kY, width, height);
+  }
+  return {t, t};
+}
+
+PerspectiveCamera::PerspectiveCamera(const Transform& to_world, int width, int height, float fov_deg, FovAxis axis,
+                                     float near_clip, float far_clip)
+    : Camera(to_world, width, height), tan_(ScreenTangents(fov_deg, axis, width, height)), near_(near_clip), far_(far_clip) {}
+
+Vec3f PerspectiveCamera::CameraDirection(Vec2f p) const {
+  // Image x to the right is camera -x; image y down is camera -y.
+  float sx = (1 - 2 * p.x / width_) * tan_.x;
+  float sy = (1 - 2 * p.y / height_) * tan_.y;
+  return {sx, sy, 1};
+}
+
+std::optional<CameraRay> PerspectiveCamera::GenerateRay(const CameraSample& s, SampledWavelengths&) const {
+  Vec3f d = CameraDirection(s.p_film);
+  float inv_len = 1 / Length(d);
+  Vec3f dn = d * inv_len;
+  // Clip planes are perpendicular to the view axis: start at z = near.
+  Vec3f o_cam = d * near_;
+  CameraRay cr;
+  cr.ray.o = to_world_.Point(o_cam);
+  cr.ray.d = Normalize(to_world_.Vector(dn));
+  cr.ray.tmax = (far_ - near_) * Length(d) * Length(to_world_.Vector(dn));
+  return cr;
+}
+
+ThinLensCamera::ThinLensCamera(const Transform& to_world, int width, int height, float fov_deg, FovAxis axis,
+                               float near_clip, float far_clip, float aperture_radius, float focus_distance, int blades,
+                               float blade_rotation_deg)
+    : PerspectiveCamera(to_world, width, height, fov_deg, axis, near_clip, far_clip),
+      aperture_radius_(aperture_radius), focus_distance_(focus_distance), blades_(blades),
+      blade_rotation_(Radians(blade_rotation_deg)) {}
+
+std::optional<CameraRay> ThinLensCamera::GenerateRay(const CameraSample& s, SampledWavelengths&) const {
+  Vec3f d = CameraDirection(s.p_film);
+  // Every ray through the lens from this film point meets the others on the focus plane.
+  Vec3f p_focus = d * focus_distance_;
+  Vec2f lens = blades_ >= 3 ? SampleRegularPolygon(blades_, blade_rotation_, s.p_lens) : SampleUniformDiskConcentric(s.p_lens);
+  Vec3f p_lens(lens.x * aperture_radius_, lens.y * aperture_radius_, 0);
+  Vec3f dir = Normalize(p_focus - p_lens);
+  Vec3f o = p_lens + dir * (near_ / dir.z);
+  CameraRay cr;
+  cr.ray.o = to_world_.Point(o);
+  Vec3f dw = to_world_.Vector(dir);
+  float scale = Length(dw);
+  cr.ray.d = dw / scale;
+  cr.ray.tmax = (far_ - near_) / dir.z * scale;
+  return cr;
+}
+
+OrthographicCamera::OrthographicCamera(const Transform& to_world, int width, int height, float near_clip, float far_clip)
+    : Camera(to_world, width, height), near_(near_clip), far_(far_clip) {}
+
+std::optional<CameraRay> OrthographicCamera::GenerateRay(const CameraSample& s, SampledWavelengths&) const {
+  float aspect = float(width_) / height_;
+  float x = 1 - 2 * s.p_film.x / width_;
+  float y = (1 - 2 * s.p_film.y / height_) / aspect;
+  CameraRay cr;
+  cr.ray.o = to_world_.Point(Vec3f(x, y, near_));
+  Vec3f dw = to_world_.Vector(Vec3f(0, 0, 1));
+  float scale = Length(dw);
+  cr.ray.d = dw / scale;
+  cr.ray.tmax = (far_ - near_) * scale;
+  return cr;
+}
+
+}  // namespace objektiv

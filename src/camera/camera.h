@@ -1,0 +1,79 @@
+// Cameras turn a film position (and lens sample) into a weighted ray in world space.
+// Camera space follows Mitsuba: +z looks forward, +y is up, +x is to the left, so that
+// image x grows to the right.
+#pragma once
+#include <optional>
+
+#include "base/sampled_spectrum.h"
+#include "base/transform.h"
+#include "scene/ray.h"
+
+namespace objektiv {
+
+struct CameraSample {
+  Vec2f p_film;  // continuous pixel coordinates on the full film (0..width, 0..height; y down)
+  Vec2f p_lens;  // in [0,1)^2
+};
+
+struct CameraRay {
+  Ray ray;
+  SampledSpectrum weight{1.f};
+};
+
+class Camera {
+ public:
+  Camera(const Transform& to_world, int width, int height) : to_world_(to_world), width_(width), height_(height) {}
+  virtual ~Camera() = default;
+  virtual std::optional<CameraRay> GenerateRay(const CameraSample& s, SampledWavelengths& lambda) const = 0;
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+ protected:
+  Transform to_world_;
+  int width_, height_;
+};
+
+// How a field of view is measured (Mitsuba's fov_axis).
+enum class FovAxis { kX, kY, kDiagonal, kSmaller, kLarger };
+
+// tan(fov/2) along x and y for a film of width x height pixels.
+Vec2f ScreenTangents(float fov_deg, FovAxis axis, int width, int height);
+
+class PerspectiveCamera : public Camera {
+ public:
+  PerspectiveCamera(const Transform& to_world, int width, int height, float fov_deg, FovAxis axis, float near_clip,
+                    float far_clip);
+  std::optional<CameraRay> GenerateRay(const CameraSample& s, SampledWavelengths& lambda) const override;
+
+ protected:
+  // Direction in camera space through film point p (not normalised; z = 1).
+  Vec3f CameraDirection(Vec2f p_film) const;
+  Vec2f tan_;
+  float near_, far_;
+};
+
+// Thin lens: a circular or n-bladed aperture of radius `aperture_radius` (scene units) and a
+// plane in focus at `focus_distance`.
+class ThinLensCamera final : public PerspectiveCamera {
+ public:
+  ThinLensCamera(const Transform& to_world, int width, int height, float fov_deg, FovAxis axis, float near_clip,
+                 float far_clip, float aperture_radius, float focus_distance, int blades, float blade_rotation_deg);
+  std::optional<CameraRay> GenerateRay(const CameraSample& s, SampledWavelengths& lambda) const override;
+
+ private:
+  float aperture_radius_, focus_distance_;
+  int blades_;
+  float blade_rotation_;
+};
+
+// Parallel projection of camera-space [-1,1] x [-1/aspect, 1/aspect] (scaled by to_world).
+class OrthographicCamera final : public Camera {
+ public:
+  OrthographicCamera(const Transform& to_world, int width, int height, float near_clip, float far_clip);
+  std::optional<CameraRay> GenerateRay(const CameraSample& s, SampledWavelengths& lambda) const override;
+
+ private:
+  float near_, far_;
+};
+
+}  // namespace objektiv

@@ -1,0 +1,24 @@
+// Reading and writing images through OpenImageIO.
+#pragma once
+#include <string>
+
+#include "base/image.h"
+
+namespace objektiv {
+
+// Linear RGB (3 channels). Grey images are replicated, alpha is dropped. Integer-encoded
+// files (PNG, JPEG, 8/16-bit TIFF) are taken as sRGB and decoded to linear unless `raw`.
+// Throws InputError naming the file if it cannot be read.
+Image ReadImageRgb(const std::string& path, bool raw = false);
+// Every channel as stored (float), for comparisons.
+Image ReadImageAny(const std::string& path);
+
+// Linear float EXR (ZIP compressed) with the image's channel names.
+void WriteExr(const std::string& path, const Image& image);
+// 8-bit PNG of an image whose values are already display-encoded in [0, 1].
+void WritePng(const std::string& path, const Image& display);
+
+float SrgbToLinear(float v);
+float LinearToSrgb(float v);
+
+}  // namespace objektiv

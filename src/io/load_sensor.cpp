@@ -1,0 +1,178 @@
+// Builders for <sensor> (with its <film>, <rfilter> and <sampler>) and <integrator>.
+#include <cmath>
+#include <functional>
+
+#include "io/loader_context.h"
+
+namespace objektiv {
+namespace {
+
+std::shared_ptr<const Filter> BuildFilter(const ObjectNode* node) {
+  if (!node) return std::make_shared<GaussianFilter>(0.5f);  // Mitsuba's default
+  Properties p(*node);
+  std::shared_ptr<const Filter> f;
+  if (node->type == "box") f = std::make_shared<BoxFilter>(float(p.FloatIn("radius", 0.5, 1e-3, 16)));
+  else if (node->type == "tent") f = std::make_shared<TentFilter>(float(p.FloatIn("radius", 1.0, 1e-3, 16)));
+  else if (node->type == "gaussian") f = std::make_shared<GaussianFilter>(float(p.FloatIn("stddev", 0.5, 1e-3, 4)));
+  else if (node->type == "blackman-harris") f = std::make_shared<BlackmanHarrisFilter>(float(p.FloatIn("radius", 1.5, 1e-3, 16)));
+  else throw ErrorAt(node->loc, "unknown rfilter type '{}' (known: box, tent, gaussian, blackman-harris)", node->type);
+  p.WarnUnused();
+  return f;
+}
+
+const ObjectNode* OneChild(const Properties& p, const std::string& tag) {
+  auto c = p.Children(tag);
+  if (c.size() > 1) throw ErrorAt(c[1]->loc, "only one <{}> is allowed here", tag);
+  return c.empty() ? nullptr : c[0].get();
+}
+
+FilmSettings BuildFilm(const ObjectNode* node) {
+  FilmSettings f;
+  if (!node) {
+    f.filter = BuildFilter(nullptr);
+    f.crop = {0, 0, f.width, f.height};
+    return f;
+  }
+  if (node->type != "hdrfilm") throw ErrorAt(node->loc, "unknown film type '{}' (known: hdrfilm)", node->type);
+  Properties p(*node);
+  f.width = int(p.IntIn("width", 768, 1, 1 << 16));
+  f.height = int(p.IntIn("height", 576, 1, 1 << 16));
+  int cx = int(p.IntIn("crop_offset_x", 0, 0, f.width - 1)), cy = int(p.IntIn("crop_offset_y", 0, 0, f.height - 1));
+  int cw = int(p.IntIn("crop_width", f.width - cx, 1, f.width - cx));
+  int ch = int(p.IntIn("crop_height", f.height - cy, 1, f.height - cy));
+  f.crop = {cx, cy, cx + cw, cy + ch};
+  f.exposure = float(p.FloatIn("exposure", 0, -64, 64));
+  std::string tm = p.Choice("tonemap", "clamp", {"clamp", "filmic"});
+  f.tonemap = *ParseToneMap(tm);
+  f.color_space = ColorSpace::ByName(p.Choice("color_space", "rec709", {"rec709", "acescg"}));
+  // Mitsuba's output-format properties: only RGB float output is written.
+  p.Choice("pixel_format", "rgb", {"rgb", "rgba"});
+  p.Choice("component_format", "float32", {"float16", "float32"});
+  p.Choice("file_format", "openexr", {"openexr", "exr"});
+  f.filter = BuildFilter(OneChild(p, "rfilter"));
+  p.WarnUnused();
+  return f;
+}
+
+SamplerSettings BuildSamplerSettings(const ObjectNode* node) {
+  SamplerSettings s;
+  if (!node) return s;
+  Properties p(*node);
+  static const std::map<std::string, std::string> kinds = {
+      {"independent", "independent"}, {"stratified", "stratified"}, {"multijitter", "stratified"},
+      {"sobol", "sobol"},             {"ldsampler", "sobol"},       {"orthogonal", "stratified"}};
+  auto it = kinds.find(node->type);
+  if (it == kinds.end()) UnknownType(*node, kinds);
+  s.type = it->second;
+  s.spp = int(p.IntIn("sample_count", 4, 1, 1 << 24));
+  s.seed = uint64_t(p.IntIn("seed", 0, 0, INT64_MAX));
+  p.Bool("jitter", true);  // stratified/multijitter: always jittered here
+  p.WarnUnused();
+  return s;
+}
+
+// Mitsuba's focal_length: "50mm" (or a number) on a 36 x 24 mm film, measured on the diagonal.
+double FocalLengthMm(const Properties& p) {
+  std::string s = p.Has("focal_length") ? std::string() : "";
+  const Property* prop = nullptr;
+  for (const Property& q : p.node().props)
+    if (q.name == "focal_length") prop = &q;
+  double f;
+  if (std::holds_alternative<std::string>(prop->data)) {
+    s = p.String("focal_length");
+    if (s.size() > 2 && s.substr(s.size() - 2) == "mm") s = s.substr(0, s.size() - 2);
+    char* end = nullptr;
+    f = std::strtod(s.c_str(), &end);
+    if (end == s.c_str() || *end != '\0') throw ErrorAt(prop->loc, "focal_length '{}' is not a length like \"50mm\"", s);
+  } else {
+    f = p.Float("focal_length");
+  }
+  if (!(f > 0)) throw ErrorAt(prop->loc, "focal_length must be positive");
+  return f;
+}
+
+}  // namespace
+
+void BuildSensor(const ObjectNode& node, RenderSetup& setup) {
+  Properties p(node);
+  setup.film = BuildFilm(OneChild(p, "film"));
+  setup.sampler = BuildSamplerSettings(OneChild(p, "sampler"));
+  const int w = setup.film.width, h = setup.film.height;
+  Transform to_world = p.GetTransform("to_world");
+  float near_clip = float(p.FloatIn("near_clip", 1e-2, 0, 1e30));
+  float far_clip = float(p.FloatIn("far_clip", 1e4, 0, 1e30));
+  if (!(far_clip > near_clip)) throw ErrorAt(p.LocOf("far_clip"), "far_clip must exceed near_clip");
+
+  if (node.type == "orthographic") {
+    setup.camera = std::make_unique<OrthographicCamera>(to_world, w, h, near_clip, far_clip);
+  } else if (node.type == "perspective" || node.type == "thinlens") {
+    static const std::map<std::string, FovAxis> axes = {{"x", FovAxis::kX},
+                                                        {"y", FovAxis::kY},
+                                                        {"diagonal", FovAxis::kDiagonal},
+                                                        {"smaller", FovAxis::kSmaller},
+                                                        {"larger", FovAxis::kLarger}};
+    float fov;
+    FovAxis axis;
+    // Sensor width in mm relates field of view and focal length (default: 36 mm full frame).
+    double sensor_width = p.FloatIn("sensor_width", 36, 1e-3, 1e4);
+    double focal_mm;
+    if (p.Has("focal_length")) {
+      if (p.Has("fov")) throw ErrorAt(p.LocOf("fov"), "give either fov or focal_length, not both");
+      focal_mm = FocalLengthMm(p);
+      if (p.Has("sensor_width")) {
+        fov = float(2 * std::atan(sensor_width / (2 * focal_mm)) * 180 / M_PI);
+        axis = FovAxis::kX;
+      } else {
+        fov = float(2 * std::atan(std::sqrt(36.0 * 36 + 24 * 24) / (2 * focal_mm)) * 180 / M_PI);
+        axis = FovAxis::kDiagonal;
+      }
+    } else {
+      fov = float(p.FloatIn("fov", 45, 1e-4, 179.9));
+      axis = axes.at(p.Choice("fov_axis", "x", {"x", "y", "diagonal", "smaller", "larger"}));
+      Vec2f t = ScreenTangents(fov, axis, w, h);
+      focal_mm = sensor_width / (2 * t.x);
+    }
+    if (node.type == "perspective") {
+      setup.camera = std::make_unique<PerspectiveCamera>(to_world, w, h, fov, axis, near_clip, far_clip);
+    } else {
+      float radius;
+      if (p.Has("fnumber")) {
+        if (p.Has("aperture_radius")) throw ErrorAt(p.LocOf("fnumber"), "give either fnumber or aperture_radius");
+        // Aperture diameter = focal length / N; the focal length in scene units (metres).
+        radius = float(focal_mm * 1e-3 / (2 * p.FloatIn("fnumber", 2.8, 0.1, 1e4)));
+      } else {
+        radius = float(p.FloatIn("aperture_radius", 0.1, 0, 1e30));
+      }
+      float focus = float(p.FloatIn("focus_distance", 0, 1e-6, 1e30));
+      if (!p.Has("focus_distance")) throw ErrorAt(p.loc(), "thinlens needs the property 'focus_distance'");
+      int blades = int(p.IntIn("blades", 0, 0, 64));
+      if (blades == 1 || blades == 2) throw ErrorAt(p.LocOf("blades"), "blades must be 0 (circular) or at least 3");
+      setup.camera = std::make_unique<ThinLensCamera>(to_world, w, h, fov, axis, near_clip, far_clip, radius, focus, blades,
+                                                      float(p.Float("blade_rotation", 0)));
+    }
+  } else {
+    throw ErrorAt(node.loc, "unknown sensor type '{}' (known: perspective, thinlens, orthographic)", node.type);
+  }
+  p.WarnUnused();
+}
+
+std::unique_ptr<Integrator> BuildIntegrator(const ObjectNode* node, const Scene& scene) {
+  if (!node) return std::make_unique<PathIntegrator>(scene, -1, 5);
+  Properties p(*node);
+  std::unique_ptr<Integrator> integrator;
+  if (node->type == "path") {
+    int max_depth = int(p.IntIn("max_depth", -1, -1, 1 << 20));
+    if (max_depth == 0) throw ErrorAt(p.LocOf("max_depth"), "max_depth must be -1 (unbounded) or at least 1");
+    integrator = std::make_unique<PathIntegrator>(scene, max_depth, int(p.IntIn("rr_depth", 5, 1, 1 << 20)));
+  } else if (node->type == "direct") {
+    int shading = int(p.IntIn("shading_samples", 1, 0, 1 << 16));
+    integrator = std::make_unique<DirectIntegrator>(scene, int(p.IntIn("emitter_samples", shading, 0, 1 << 16)),
+                                                    int(p.IntIn("bsdf_samples", shading, 0, 1 << 16)));
+  } else {
+    throw ErrorAt(node->loc, "unknown integrator type '{}' (known: path, direct)", node->type);
+  }
+  p.WarnUnused();
+  return integrator;
+}
+
+}  // namespace objektiv

@@ -1,0 +1,41 @@
+// Internal to the scene loader: what the per-kind builders share.
+#pragma once
+#include <map>
+
+#include "io/properties.h"
+#include "io/scene_loader.h"
+
+namespace objektiv {
+
+struct LoaderContext {
+  Scene& scene;
+  // Objects referenced more than once (by id) are built once.
+  std::map<const ObjectNode*, std::shared_ptr<const Material>> materials;
+  std::map<std::pair<const ObjectNode*, int>, std::shared_ptr<const SpectrumTexture>> textures;
+};
+
+// Resolves a file name relative to the scene file that mentions it.
+std::string ResolvePath(const Location& loc, const std::string& filename);
+
+Spectrum MakeSpectrum(const SpectrumValue& v, SpectrumUsage usage);
+// A spectral parameter given as a value (float, rgb, spectrum) or a nested/ref texture.
+std::shared_ptr<const SpectrumTexture> GetTexture(const Properties& props, const std::string& name, SpectrumUsage usage,
+                                                  float fallback, LoaderContext& ctx);
+std::shared_ptr<const SpectrumTexture> BuildTexture(const ObjectNode& node, SpectrumUsage usage, LoaderContext& ctx);
+
+std::shared_ptr<const Material> BuildMaterial(const ObjectNode& node, LoaderContext& ctx);
+void BuildShape(const ObjectNode& node, LoaderContext& ctx);
+std::unique_ptr<Light> BuildEmitter(const ObjectNode& node, LoaderContext& ctx);
+// The camera, film settings and sampler settings from a <sensor>.
+void BuildSensor(const ObjectNode& node, RenderSetup& setup);
+std::unique_ptr<Integrator> BuildIntegrator(const ObjectNode* node, const Scene& scene);
+
+// "unknown <tag> type 'x' (known: a, b, c)"
+template <typename Map>
+[[noreturn]] void UnknownType(const ObjectNode& node, const Map& registry) {
+  std::string known;
+  for (const auto& [name, f] : registry) known += (known.empty() ? "" : ", ") + name;
+  throw ErrorAt(node.loc, "unknown {} type '{}' (known: {})", node.tag, node.type, known);
+}
+
+}  // namespace objektiv

@@ -1,0 +1,74 @@
+#include "io/scene_loader.h"
+
+#include <filesystem>
+
+#include "base/log.h"
+#include "io/loader_context.h"
+
+namespace objektiv {
+
+std::string ResolvePath(const Location& loc, const std::string& filename) {
+  namespace fs = std::filesystem;
+  fs::path p(filename);
+  if (p.is_relative()) p = fs::path(loc.file).parent_path() / p;
+  if (!fs::exists(p)) throw ErrorAt(loc, "file not found: '{}'", p.string());
+  return p.string();
+}
+
+std::unique_ptr<Sampler> MakeSampler(const SamplerSettings& s) {
+  if (s.type == "independent") return std::make_unique<IndependentSampler>(s.spp, s.seed);
+  if (s.type == "stratified") return std::make_unique<StratifiedSampler>(s.spp, s.seed);
+  return std::make_unique<SobolSampler>(s.spp, s.seed);
+}
+
+namespace {
+
+RenderSetup Build(const SceneDocument& doc) {
+  RenderSetup setup;
+  setup.scene = std::make_unique<Scene>();
+  LoaderContext ctx{*setup.scene, {}, {}};
+  const ObjectNode& root = *doc.root;
+  const ObjectNode* sensor = nullptr;
+  const ObjectNode* integrator = nullptr;
+  for (const auto& child : root.children) {
+    if (child->tag == "shape") {
+      BuildShape(*child, ctx);
+    } else if (child->tag == "emitter") {
+      setup.scene->AddLight(BuildEmitter(*child, ctx));
+    } else if (child->tag == "sensor") {
+      if (sensor) throw ErrorAt(child->loc, "only one <sensor> is supported (first at line {})", sensor->loc.line);
+      sensor = child.get();
+    } else if (child->tag == "integrator") {
+      if (integrator) throw ErrorAt(child->loc, "only one <integrator> is allowed");
+      integrator = child.get();
+    } else if (child->tag == "bsdf") {
+      // Declared for later <ref>s; built (and checked) now.
+      BuildMaterial(*child, ctx);
+    } else if (child->tag == "texture") {
+      BuildTexture(*child, SpectrumUsage::kAlbedo, ctx);
+    } else {
+      throw ErrorAt(child->loc, "<{}> cannot appear directly in <scene>", child->tag);
+    }
+  }
+  for (const Property& p : root.props)
+    throw ErrorAt(p.loc, "property '{}' cannot appear directly in <scene>", p.name);
+  if (!sensor) throw ErrorAt(root.loc, "the scene has no <sensor>");
+  BuildSensor(*sensor, setup);
+  setup.scene->Commit();
+  setup.integrator = BuildIntegrator(integrator, *setup.scene);
+  if (setup.scene->lights().empty()) spdlog::warn("{}: the scene has no emitters; the image will be black", root.loc.file);
+  return setup;
+}
+
+}  // namespace
+
+RenderSetup LoadScene(const std::string& path, const std::map<std::string, std::string>& defines) {
+  return Build(ParseSceneFile(path, defines));
+}
+
+RenderSetup LoadSceneFromString(const std::string& xml, const std::string& name,
+                                const std::map<std::string, std::string>& defines) {
+  return Build(ParseSceneString(xml, name, defines));
+}
+
+}  // namespace objektiv

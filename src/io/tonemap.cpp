@@ -1,0 +1,29 @@
+#include "io/tonemap.h"
+
+#include "io/image_io.h"
+
+namespace objektiv {
+
+std::optional<ToneMap> ParseToneMap(const std::string& name) {
+  if (name == "clamp") return ToneMap::kClamp;
+  if (name == "filmic") return ToneMap::kFilmic;
+  return std::nullopt;
+}
+
+Image ApplyToneMap(const Image& linear, ToneMap mode) {
+  Image out(linear.width, linear.height, {"R", "G", "B"});
+  for (int y = 0; y < linear.height; ++y)
+    for (int x = 0; x < linear.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        float v = std::max(0.f, linear.At(x, y, c));
+        if (mode == ToneMap::kFilmic) {
+          // Narkowicz's rational fit of the ACES reference tone curve (with 0.6 exposure).
+          float a = v * 0.6f;
+          v = (a * (2.51f * a + 0.03f)) / (a * (2.43f * a + 0.59f) + 0.14f);
+        }
+        out.At(x, y, c) = LinearToSrgb(Clamp(v, 0, 1));
+      }
+  return out;
+}
+
+}  // namespace objektiv

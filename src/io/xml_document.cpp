@@ -1,0 +1,375 @@
+#include "io/xml_document.h"
+
+#include <pugixml.hpp>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace objektiv {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct FileContext {
+  std::string path;
+  std::vector<size_t> line_starts;  // byte offset of each line
+
+  int LineOf(ptrdiff_t offset) const {
+    if (offset < 0) return 0;
+    auto it = std::upper_bound(line_starts.begin(), line_starts.end(), size_t(offset));
+    return int(it - line_starts.begin());
+  }
+};
+
+class Parser {
+ public:
+  explicit Parser(std::map<std::string, std::string> defines) : params_(std::move(defines)) {
+    for (const auto& [k, v] : params_) overridden_.insert({k, true});
+  }
+
+  SceneDocument ParseFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw MakeInputError(path, 0, "cannot open scene file");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ParseString(ss.str(), path);
+  }
+
+  SceneDocument ParseString(const std::string& text, const std::string& name) {
+    auto root = std::make_shared<ObjectNode>();
+    root->tag = "scene";
+    root->used = true;
+    pugi::xml_document doc;
+    FileContext ctx = Load(text, name, &doc);
+    pugi::xml_node scene = doc.child("scene");
+    if (!scene) throw MakeInputError(name, 1, "the root element must be <scene>");
+    root->loc = {name, ctx.LineOf(scene.offset_debug())};
+    Walk(scene, ctx, *root, 0);
+    return SceneDocument{root};
+  }
+
+ private:
+  FileContext Load(const std::string& text, const std::string& name, pugi::xml_document* doc) {
+    FileContext ctx;
+    ctx.path = name;
+    ctx.line_starts.push_back(0);
+    for (size_t i = 0; i < text.size(); ++i)
+      if (text[i] == '\n') ctx.line_starts.push_back(i + 1);
+    pugi::xml_parse_result r = doc->load_buffer(text.data(), text.size(), pugi::parse_default | pugi::parse_ws_pcdata_single);
+    if (!r) throw MakeInputError(name, ctx.LineOf(r.offset), "XML syntax error: {}", r.description());
+    return ctx;
+  }
+
+  Location Loc(const FileContext& ctx, const pugi::xml_node& n) const { return {ctx.path, ctx.LineOf(n.offset_debug())}; }
+
+  // Replaces $name (letters, digits, underscore) with its parameter value.
+  std::string Substitute(const std::string& s, const Location& loc) const {
+    std::string out;
+    for (size_t i = 0; i < s.size(); ++i) {
+      if (s[i] != '$') {
+        out += s[i];
+        continue;
+      }
+      size_t j = i + 1;
+      while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '_')) ++j;
+      std::string key = s.substr(i + 1, j - i - 1);
+      if (key.empty()) throw ErrorAt(loc, "'$' not followed by a parameter name in \"{}\"", s);
+      auto it = params_.find(key);
+      if (it == params_.end()) throw ErrorAt(loc, "undefined parameter ${} (define it with <default> or -D)", key);
+      out += it->second;
+      i = j - 1;
+    }
+    return out;
+  }
+
+  std::string Attr(const pugi::xml_node& n, const char* name, const Location& loc, bool required = true) const {
+    pugi::xml_attribute a = n.attribute(name);
+    if (!a) {
+      if (required) throw ErrorAt(loc, "<{}> needs the attribute '{}'", n.name(), name);
+      return {};
+    }
+    return Substitute(a.value(), loc);
+  }
+
+  // Only the listed attributes may appear on n.
+  void CheckAttributes(const pugi::xml_node& n, std::initializer_list<const char*> allowed, const Location& loc) const {
+    for (pugi::xml_attribute a : n.attributes()) {
+      bool ok = false;
+      for (const char* name : allowed) ok |= std::string(a.name()) == name;
+      if (!ok) throw ErrorAt(loc, "<{}> does not take the attribute '{}'", n.name(), a.name());
+    }
+  }
+
+  static double ParseDouble(const std::string& s, const Location& loc) {
+    const char* begin = s.c_str();
+    while (std::isspace(static_cast<unsigned char>(*begin))) ++begin;
+    char* end = nullptr;
+    errno = 0;
+    double v = std::strtod(begin, &end);
+    while (end && std::isspace(static_cast<unsigned char>(*end))) ++end;
+    if (end == begin || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+      throw ErrorAt(loc, "'{}' is not a finite number", s);
+    return v;
+  }
+
+  static int64_t ParseInt(const std::string& s, const Location& loc) {
+    const char* begin = s.c_str();
+    char* end = nullptr;
+    errno = 0;
+    long long v = std::strtoll(begin, &end, 10);
+    while (end && std::isspace(static_cast<unsigned char>(*end))) ++end;
+    if (end == begin || *end != '\0' || errno == ERANGE) throw ErrorAt(loc, "'{}' is not an integer", s);
+    return v;
+  }
+
+  static std::vector<double> ParseList(const std::string& s, const Location& loc) {
+    std::vector<double> out;
+    std::string token;
+    auto flush = [&] {
+      if (!token.empty()) out.push_back(ParseDouble(token, loc));
+      token.clear();
+    };
+    for (char c : s) {
+      if (c == ',' || std::isspace(static_cast<unsigned char>(c))) flush();
+      else token += c;
+    }
+    flush();
+    return out;
+  }
+
+  Vec3d ParseTriple(const pugi::xml_node& n, const Location& loc, double fallback) const {
+    if (n.attribute("value")) {
+      std::vector<double> v = ParseList(Attr(n, "value", loc), loc);
+      if (v.size() == 1) return Vec3d(v[0]);
+      if (v.size() != 3) throw ErrorAt(loc, "<{}> value needs 1 or 3 numbers, got {}", n.name(), v.size());
+      return {v[0], v[1], v[2]};
+    }
+    Vec3d r(fallback);
+    const char* axes[3] = {"x", "y", "z"};
+    for (int i = 0; i < 3; ++i)
+      if (n.attribute(axes[i])) r[i] = ParseDouble(Attr(n, axes[i], loc), loc);
+    return r;
+  }
+
+  Transform ParseTransform(const pugi::xml_node& n, const FileContext& ctx) const {
+    Transform t;
+    for (pugi::xml_node op : n.children()) {
+      if (op.type() != pugi::node_element) continue;
+      Location loc = Loc(ctx, op);
+      std::string name = op.name();
+      try {
+        Transform m;
+        if (name == "translate") {
+          CheckAttributes(op, {"x", "y", "z", "value"}, loc);
+          m = Transform::Translate(ParseTriple(op, loc, 0));
+        } else if (name == "scale") {
+          CheckAttributes(op, {"x", "y", "z", "value"}, loc);
+          m = Transform::Scale(ParseTriple(op, loc, 1));
+        } else if (name == "rotate") {
+          CheckAttributes(op, {"x", "y", "z", "value", "angle"}, loc);
+          m = Transform::Rotate(ParseDouble(Attr(op, "angle", loc), loc), ParseTriple(op, loc, 0));
+        } else if (name == "matrix") {
+          CheckAttributes(op, {"value"}, loc);
+          std::vector<double> v = ParseList(Attr(op, "value", loc), loc);
+          Matrix4 mat = Matrix4::Identity();
+          if (v.size() == 16) {
+            for (int i = 0; i < 16; ++i) mat.m[i / 4][i % 4] = v[i];
+          } else if (v.size() == 9) {
+            for (int i = 0; i < 9; ++i) mat.m[i / 3][i % 3] = v[i];
+          } else {
+            throw ErrorAt(loc, "<matrix> needs 16 (or 9) numbers, got {}", v.size());
+          }
+          m = Transform(mat);
+        } else if (name == "lookat") {
+          CheckAttributes(op, {"origin", "target", "up"}, loc);
+          auto triple = [&](const char* attr) {
+            std::vector<double> v = ParseList(Attr(op, attr, loc), loc);
+            if (v.size() != 3) throw ErrorAt(loc, "lookat '{}' needs 3 numbers", attr);
+            return Vec3d(v[0], v[1], v[2]);
+          };
+          Vec3d up = op.attribute("up") ? triple("up") : Vec3d(0, 1, 0);
+          m = Transform::LookAt(triple("origin"), triple("target"), up);
+        } else {
+          throw ErrorAt(loc, "unknown transform operation <{}>", name);
+        }
+        t = m * t;  // later operations apply after earlier ones
+      } catch (const std::invalid_argument& e) {
+        throw ErrorAt(loc, "{}", e.what());
+      }
+    }
+    return t;
+  }
+
+  SpectrumValue ParseSpectrum(const pugi::xml_node& n, const FileContext& ctx, const Location& loc) const {
+    SpectrumValue s;
+    std::string type = n.attribute("type") ? Attr(n, "type", loc) : "";
+    auto nested_float = [&](const char* name, double fallback) {
+      for (pugi::xml_node c : n.children("float"))
+        if (Attr(c, "name", Loc(ctx, c)) == name) return ParseDouble(Attr(c, "value", Loc(ctx, c)), Loc(ctx, c));
+      return fallback;
+    };
+    if (type == "blackbody") {
+      s.kind = SpectrumValue::Kind::kBlackbody;
+      s.temperature = float(n.attribute("temperature") ? ParseDouble(Attr(n, "temperature", loc), loc)
+                                                       : nested_float("temperature", -1));
+      if (!(s.temperature > 0)) throw ErrorAt(loc, "blackbody spectrum needs a positive temperature (K)");
+      s.value = float(nested_float("scale", 1));
+      return s;
+    }
+    if (type == "d65" || type == "cie_a") {
+      s.kind = type == "d65" ? SpectrumValue::Kind::kD65 : SpectrumValue::Kind::kIlluminantA;
+      s.value = float(nested_float("scale", 1));
+      return s;
+    }
+    if (!type.empty()) throw ErrorAt(loc, "unknown spectrum type '{}' (blackbody, d65, cie_a)", type);
+    std::string value = Attr(n, "value", loc);
+    if (value.find(':') == std::string::npos) {
+      s.kind = SpectrumValue::Kind::kConstant;
+      s.value = float(ParseDouble(value, loc));
+      return s;
+    }
+    s.kind = SpectrumValue::Kind::kSampled;
+    std::string token;
+    std::stringstream ss(value);
+    while (std::getline(ss, token, ',')) {
+      size_t colon = token.find(':');
+      if (colon == std::string::npos) throw ErrorAt(loc, "spectrum entry '{}' is not lambda:value", token);
+      float l = float(ParseDouble(token.substr(0, colon), loc)), v = float(ParseDouble(token.substr(colon + 1), loc));
+      if (!s.lambdas.empty() && l <= s.lambdas.back()) throw ErrorAt(loc, "spectrum wavelengths must increase");
+      s.lambdas.push_back(l);
+      s.values.push_back(v);
+    }
+    if (s.lambdas.size() < 2) throw ErrorAt(loc, "a sampled spectrum needs at least two entries");
+    return s;
+  }
+
+  static bool IsObjectTag(const std::string& t) {
+    static const char* tags[] = {"bsdf", "texture", "shape", "emitter", "sensor", "film", "sampler", "rfilter", "integrator"};
+    return std::any_of(std::begin(tags), std::end(tags), [&](const char* x) { return t == x; });
+  }
+
+  void Attach(ObjectNode& parent, std::shared_ptr<ObjectNode> obj, const std::string& name, const Location& loc) {
+    if (name.empty()) {
+      parent.children.push_back(std::move(obj));
+    } else {
+      AddProperty(parent, Property{name, std::move(obj), "object", loc});
+    }
+  }
+
+  void AddProperty(ObjectNode& parent, Property p) {
+    for (const Property& q : parent.props)
+      if (q.name == p.name)
+        throw ErrorAt(p.loc, "property '{}' given twice (first at line {})", p.name, q.loc.line);
+    parent.props.push_back(std::move(p));
+  }
+
+  void Walk(const pugi::xml_node& node, const FileContext& ctx, ObjectNode& parent, int include_depth) {
+    for (pugi::xml_node c : node.children()) {
+      if (c.type() != pugi::node_element) continue;
+      std::string tag = c.name();
+      Location loc = Loc(ctx, c);
+      if (tag == "default") {
+        CheckAttributes(c, {"name", "value"}, loc);
+        std::string name = c.attribute("name").value();
+        if (name.empty()) throw ErrorAt(loc, "<default> needs a name");
+        if (!overridden_.count(name)) params_[name] = Attr(c, "value", loc);
+      } else if (tag == "include") {
+        CheckAttributes(c, {"filename"}, loc);
+        if (include_depth > 16) throw ErrorAt(loc, "includes nested too deeply (a cycle?)");
+        fs::path inc = fs::path(ctx.path).parent_path() / Attr(c, "filename", loc);
+        std::ifstream in(inc, std::ios::binary);
+        if (!in) throw ErrorAt(loc, "cannot open included file '{}'", inc.string());
+        std::stringstream ss;
+        ss << in.rdbuf();
+        pugi::xml_document doc;
+        FileContext sub = Load(ss.str(), inc.string(), &doc);
+        pugi::xml_node scene = doc.child("scene");
+        if (!scene) throw MakeInputError(inc.string(), 1, "an included file must have a <scene> root");
+        Walk(scene, sub, parent, include_depth + 1);
+      } else if (tag == "ref") {
+        CheckAttributes(c, {"id", "name"}, loc);
+        std::string id = Attr(c, "id", loc);
+        auto it = ids_.find(id);
+        if (it == ids_.end()) throw ErrorAt(loc, "reference to unknown id '{}'", id);
+        Attach(parent, it->second, Attr(c, "name", loc, false), loc);
+      } else if (IsObjectTag(tag)) {
+        CheckAttributes(c, {"type", "id", "name"}, loc);
+        auto obj = std::make_shared<ObjectNode>();
+        obj->tag = tag;
+        obj->type = Attr(c, "type", loc);
+        obj->id = Attr(c, "id", loc, false);
+        obj->loc = loc;
+        Walk(c, ctx, *obj, include_depth);
+        if (!obj->id.empty()) {
+          if (ids_.count(obj->id)) throw ErrorAt(loc, "id '{}' is used twice", obj->id);
+          ids_[obj->id] = obj;
+        }
+        Attach(parent, obj, Attr(c, "name", loc, false), loc);
+      } else if (tag == "float" || tag == "integer" || tag == "boolean" || tag == "string" || tag == "rgb" ||
+                 tag == "spectrum" || tag == "point" || tag == "vector" || tag == "transform") {
+        Property p;
+        p.name = Attr(c, "name", loc);
+        p.type_name = tag;
+        p.loc = loc;
+        if (tag == "float") {
+          CheckAttributes(c, {"name", "value"}, loc);
+          p.data = ParseDouble(Attr(c, "value", loc), loc);
+        } else if (tag == "integer") {
+          CheckAttributes(c, {"name", "value"}, loc);
+          p.data = ParseInt(Attr(c, "value", loc), loc);
+        } else if (tag == "boolean") {
+          CheckAttributes(c, {"name", "value"}, loc);
+          std::string v = Attr(c, "value", loc);
+          if (v != "true" && v != "false") throw ErrorAt(loc, "'{}' is not a boolean (true or false)", v);
+          p.data = (v == "true");
+        } else if (tag == "string") {
+          CheckAttributes(c, {"name", "value"}, loc);
+          p.data = Attr(c, "value", loc);
+        } else if (tag == "rgb") {
+          CheckAttributes(c, {"name", "value"}, loc);
+          std::vector<double> v = ParseList(Attr(c, "value", loc), loc);
+          if (v.size() == 1) v = {v[0], v[0], v[0]};
+          if (v.size() != 3) throw ErrorAt(loc, "<rgb> needs 1 or 3 numbers, got {}", v.size());
+          SpectrumValue s;
+          s.kind = SpectrumValue::Kind::kRgb;
+          s.rgb = Vec3f(float(v[0]), float(v[1]), float(v[2]));
+          p.data = s;
+        } else if (tag == "spectrum") {
+          CheckAttributes(c, {"name", "value", "type", "temperature"}, loc);
+          p.data = ParseSpectrum(c, ctx, loc);
+        } else if (tag == "point" || tag == "vector") {
+          CheckAttributes(c, {"name", "value", "x", "y", "z"}, loc);
+          p.data = ParseTriple(c, loc, 0);
+        } else {
+          CheckAttributes(c, {"name"}, loc);
+          p.data = ParseTransform(c, ctx);
+        }
+        AddProperty(parent, std::move(p));
+      } else {
+        throw ErrorAt(loc, "unknown element <{}>", tag);
+      }
+    }
+  }
+
+  std::map<std::string, std::string> params_;
+  std::map<std::string, bool> overridden_;
+  std::map<std::string, std::shared_ptr<ObjectNode>> ids_;
+};
+
+}  // namespace
+
+SceneDocument ParseSceneFile(const std::string& path, const std::map<std::string, std::string>& defines) {
+  return Parser(defines).ParseFile(path);
+}
+
+SceneDocument ParseSceneString(const std::string& xml, const std::string& name,
+                               const std::map<std::string, std::string>& defines) {
+  return Parser(defines).ParseString(xml, name);
+}
+
+}  // namespace objektiv

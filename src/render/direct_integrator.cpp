@@ -1,0 +1,55 @@
+#include "render/direct_lighting.h"
+#include "render/integrator.h"
+
+namespace objektiv {
+
+SampledSpectrum DirectIntegrator::Li(const Ray& ray, SampledWavelengths& lambda, Sampler& sampler,
+                                     RayCounts& counts) const {
+  ++counts.closest;
+  std::optional<SurfaceInteraction> si = scene_.Intersect(ray);
+  SampledSpectrum L(0.f);
+  if (!si) {
+    for (const InfiniteLight* light : scene_.infinite_lights()) L += light->Le(ray.d, lambda);
+    return L;
+  }
+  SampledSpectrum tr = SegmentTransmittance(ray, *si, lambda);
+  L += EmittedRadiance(*si, lambda);
+  const Material* material = si->shape->material.get();
+  if (!material) return L * tr;
+  BSDF bsdf = material->GetBSDF(*si, lambda);
+  float ne = float(emitter_samples_), nb = float(bsdf_samples_);
+
+  for (int i = 0; i < emitter_samples_; ++i) {
+    float ul = sampler.Get1D();
+    Vec2f u = sampler.Get2D();
+    if (bsdf.Flags() & (kDiffuse | kGlossy)) L += SampleLightMIS(scene_, *si, bsdf, lambda, ul, u, counts, ne, nb);
+  }
+  for (int i = 0; i < bsdf_samples_; ++i) {
+    float uc = sampler.Get1D();
+    Vec2f u = sampler.Get2D();
+    std::optional<BSDFSample> bs = bsdf.Sample(si->wo, uc, u);
+    if (!bs) continue;
+    SampledSpectrum beta = bs->f * (AbsDot(bs->wi, si->shading.n) / bs->pdf) / nb;
+    Ray next = si->SpawnRay(bs->wi);
+    ++counts.closest;
+    std::optional<SurfaceInteraction> hit = scene_.Intersect(next);
+    // A specular sample can only find an emitter this way: full weight.
+    auto weight = [&](float light_pdf) {
+      if (bs->IsSpecular() || ne == 0) return 1.f;
+      return PowerHeuristic(nb * bs->pdf, ne * light_pdf);
+    };
+    if (!hit) {
+      for (const InfiniteLight* light : scene_.infinite_lights()) {
+        SampledSpectrum Le = light->Le(next.d, lambda);
+        if (!Le.IsBlack()) L += beta * Le * weight(scene_.LightPmf(light) * light->PdfLi(next.d));
+      }
+      continue;
+    }
+    SampledSpectrum Le = EmittedRadiance(*hit, lambda);
+    if (!Le.IsBlack())
+      L += beta * SegmentTransmittance(next, *hit, lambda) * Le * weight(AreaLightPdf(scene_, si->p, *hit));
+  }
+  return L * tr;
+}
+
+}  // namespace objektiv

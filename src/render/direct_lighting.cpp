@@ -1,0 +1,49 @@
+#include "render/direct_lighting.h"
+
+namespace objektiv {
+
+SampledSpectrum SampleLightMIS(const Scene& scene, const SurfaceInteraction& si, const BSDF& bsdf,
+                               const SampledWavelengths& lambda, float u_light, Vec2f u, RayCounts& counts,
+                               float light_count, float bsdf_count) {
+  float pmf;
+  const Light* light = scene.SampleLight(u_light, &pmf);
+  if (!light) return {};
+  std::optional<LightSample> ls = light->SampleLi(si.p, u, lambda);
+  if (!ls || ls->pdf == 0 || ls->L.IsBlack()) return {};
+  SampledSpectrum f = bsdf.f(si.wo, ls->wi) * AbsDot(ls->wi, si.shading.n);
+  if (f.IsBlack()) return {};
+  Ray shadow;
+  if (ls->infinite) {
+    shadow = si.SpawnRay(ls->wi);
+  } else {
+    shadow = si.SpawnRayTo(ls->p, ls->p_error, ls->n);
+  }
+  ++counts.shadow;
+  if (scene.Occluded(shadow)) return {};
+  float light_pdf = pmf * ls->pdf;
+  if (light->IsDelta() || bsdf_count == 0) return f * ls->L / (light_pdf * light_count);
+  float bsdf_pdf = bsdf.Pdf(si.wo, ls->wi);
+  float w = PowerHeuristic(light_count * light_pdf, bsdf_count * bsdf_pdf);
+  return f * ls->L * (w / (light_pdf * light_count));
+}
+
+SampledSpectrum EmittedRadiance(const SurfaceInteraction& si, const SampledWavelengths& lambda) {
+  const AreaLight* area = si.shape ? si.shape->area_light : nullptr;
+  if (!area) return {};
+  return area->L(si.n, si.uv, si.wo, lambda);
+}
+
+float AreaLightPdf(const Scene& scene, const Vec3f& ref, const SurfaceInteraction& si) {
+  const AreaLight* area = si.shape->area_light;
+  return scene.LightPmf(area) * area->PdfLi(ref, si);
+}
+
+SampledSpectrum SegmentTransmittance(const Ray& ray, const SurfaceInteraction& si, const SampledWavelengths& lambda) {
+  const Material* m = si.shape ? si.shape->material.get() : nullptr;
+  const Spectrum* sigma = m ? m->Absorption() : nullptr;
+  if (!sigma || Dot(ray.d, si.n) <= 0) return SampledSpectrum(1.f);
+  float dist = si.t * Length(ray.d);
+  return Exp(sigma->Sample(lambda) * -dist);
+}
+
+}  // namespace objektiv

@@ -1,0 +1,74 @@
+#include "render/direct_lighting.h"
+#include "render/integrator.h"
+
+namespace objektiv {
+
+SampledSpectrum PathIntegrator::Li(const Ray& camera_ray, SampledWavelengths& lambda, Sampler& sampler,
+                                   RayCounts& counts) const {
+  SampledSpectrum L(0.f), beta(1.f);
+  Ray ray = camera_ray;
+  bool specular_bounce = false;
+  float bsdf_pdf = 0, eta_scale = 1;
+  Vec3f prev_p;
+  // `depth` is the number of path segments traced so far, including the current ray.
+  for (int depth = 1;; ++depth) {
+    ++counts.closest;
+    std::optional<SurfaceInteraction> si = scene_.Intersect(ray);
+    if (!si) {
+      for (const InfiniteLight* light : scene_.infinite_lights()) {
+        SampledSpectrum Le = light->Le(ray.d, lambda);
+        if (Le.IsBlack()) continue;
+        if (depth == 1 || specular_bounce) {
+          L += beta * Le;
+        } else {
+          float light_pdf = scene_.LightPmf(light) * light->PdfLi(ray.d);
+          L += beta * Le * PowerHeuristic(bsdf_pdf, light_pdf);
+        }
+      }
+      break;
+    }
+    beta *= SegmentTransmittance(ray, *si, lambda);
+    SampledSpectrum Le = EmittedRadiance(*si, lambda);
+    if (!Le.IsBlack()) {
+      if (depth == 1 || specular_bounce) {
+        L += beta * Le;
+      } else {
+        float light_pdf = AreaLightPdf(scene_, prev_p, *si);
+        L += beta * Le * PowerHeuristic(bsdf_pdf, light_pdf);
+      }
+    }
+    if (max_depth_ >= 0 && depth >= max_depth_) break;
+    const Material* material = si->shape->material.get();
+    if (!material) break;
+    BSDF bsdf = material->GetBSDF(*si, lambda);
+
+    // Next-event estimation adds one segment: only if the path may grow.
+    if ((bsdf.Flags() & (kDiffuse | kGlossy)) && (max_depth_ < 0 || depth + 1 <= max_depth_)) {
+      float ul = sampler.Get1D();
+      Vec2f u = sampler.Get2D();
+      L += beta * SampleLightMIS(scene_, *si, bsdf, lambda, ul, u, counts);
+    }
+
+    float uc = sampler.Get1D();
+    Vec2f u = sampler.Get2D();
+    std::optional<BSDFSample> bs = bsdf.Sample(si->wo, uc, u);
+    if (!bs) break;
+    beta *= bs->f * (AbsDot(bs->wi, si->shading.n) / bs->pdf);
+    bsdf_pdf = bs->pdf;
+    specular_bounce = bs->IsSpecular();
+    if (bs->IsTransmission()) eta_scale *= Sqr(bs->eta);
+    prev_p = si->p;
+    ray = si->SpawnRay(bs->wi);
+
+    // Russian roulette on the throughput with the radiance scaling of refraction removed.
+    if (beta.IsBlack()) break;
+    if (depth >= rr_depth_) {
+      float q = std::min((beta * eta_scale).Max(), 0.95f);
+      if (sampler.Get1D() >= q) break;
+      beta = beta / q;
+    }
+  }
+  return L;
+}
+
+}  // namespace objektiv

@@ -1,0 +1,32 @@
+// Renders an image: tiles over TBB, each pixel's samples in index order (deterministic).
+#pragma once
+#include <cstdint>
+#include <memory>
+
+#include "camera/camera.h"
+#include "render/film.h"
+#include "render/integrator.h"
+
+namespace objektiv {
+
+struct RenderStats {
+  double seconds = 0;
+  int spp = 0;
+  int width = 0, height = 0;
+  uint64_t samples = 0, rays = 0, camera_rays = 0, camera_rays_failed = 0;
+  uint64_t nan_count = 0, inf_count = 0;
+  double SamplesPerSecond() const { return seconds > 0 ? samples / seconds : 0; }
+  double MraysPerSecond() const { return seconds > 0 ? rays / seconds * 1e-6 : 0; }
+};
+
+struct RenderOptions {
+  int spp_begin = 0, spp_end = 0;  // sample index range [begin, end)
+  int threads = 0;                 // 0: all cores
+  bool progress = false;
+  int tile_size = 16;
+};
+
+RenderStats Render(const Camera& camera, const Integrator& integrator, const Sampler& sampler, Film& film,
+                   const RenderOptions& options);
+
+}  // namespace objektiv

@@ -1,0 +1,85 @@
+#include "render/sampler.h"
+
+#include <cmath>
+
+namespace objektiv {
+
+void IndependentSampler::StartPixelSample(Vec2i pixel, int index) {
+  Sampler::StartPixelSample(pixel, index);
+  rng_.SetSequence(pixel_hash_);
+  // 2^16 numbers per sample: more than any path consumes.
+  rng_.Advance(uint64_t(index) << 16);
+}
+
+namespace {
+// A random permutation of [0, n) evaluated at i, without storing it (Kensler 2013,
+// "Correlated Multi-Jittered Sampling"), by cycle-walking a hash-based bijection.
+uint32_t PermutationElement(uint32_t i, uint32_t n, uint32_t seed) {
+  uint32_t w = n - 1;
+  w |= w >> 1;
+  w |= w >> 2;
+  w |= w >> 4;
+  w |= w >> 8;
+  w |= w >> 16;
+  do {
+    i ^= seed;
+    i *= 0xe170893du;
+    i ^= seed >> 16;
+    i ^= (i & w) >> 4;
+    i ^= seed >> 8;
+    i *= 0x0929eb3fu;
+    i ^= seed >> 23;
+    i ^= (i & w) >> 1;
+    i *= 1 | seed >> 27;
+    i *= 0x6935fa69u;
+    i ^= (i & w) >> 11;
+    i *= 0x74dcb303u;
+    i ^= (i & w) >> 2;
+    i *= 0x9e501cc3u;
+    i ^= (i & w) >> 2;
+    i *= 0xc860a3dfu;
+    i &= w;
+    i ^= i >> 5;
+  } while (i >= n);
+  return (i + seed) % n;
+}
+}  // namespace
+
+StratifiedSampler::StratifiedSampler(int spp, uint64_t seed) : Sampler(spp, seed) {
+  side_ = int(std::ceil(std::sqrt(double(spp))));
+  spp_ = side_ * side_;
+}
+
+float StratifiedSampler::Get1D() {
+  uint64_t h = DimensionHash(dim_);
+  ++dim_;
+  uint32_t n = uint32_t(spp_);
+  uint32_t stratum = PermutationElement(uint32_t(index_) % n, n, uint32_t(h));
+  float jitter = UIntToUnitFloat(uint32_t(MixBits(h ^ uint64_t(index_))));
+  return std::min((stratum + jitter) / n, kOneMinusEpsilon);
+}
+
+Vec2f StratifiedSampler::Get2D() {
+  uint64_t h = DimensionHash(dim_);
+  dim_ += 2;
+  uint32_t n = uint32_t(spp_);
+  uint32_t stratum = PermutationElement(uint32_t(index_) % n, n, uint32_t(h));
+  uint32_t sx = stratum % side_, sy = stratum / side_;
+  uint64_t j = MixBits(h ^ uint64_t(index_));
+  float dx = UIntToUnitFloat(uint32_t(j)), dy = UIntToUnitFloat(uint32_t(j >> 32));
+  return {std::min((sx + dx) / side_, kOneMinusEpsilon), std::min((sy + dy) / side_, kOneMinusEpsilon)};
+}
+
+float SobolSampler::Get1D() {
+  uint64_t h = DimensionHash(dim_);
+  ++dim_;
+  return ScrambledSobol1D(uint32_t(index_), h);
+}
+
+Vec2f SobolSampler::Get2D() {
+  uint64_t h = DimensionHash(dim_);
+  dim_ += 2;
+  return ScrambledSobol2D(uint32_t(index_), h);
+}
+
+}  // namespace objektiv
