@@ -54,6 +54,7 @@ Spectrum Spectrum::D65(float scale) {
 Spectrum Spectrum::Tabulated(std::vector<float> lambdas, std::vector<float> values) {
   Spectrum s;
   s.kind_ = Kind::kTabulated;
+  s.scale_ = 1;
   s.lambdas_ = std::make_shared<const std::vector<float>>(std::move(lambdas));
   s.values_ = std::make_shared<const std::vector<float>>(std::move(values));
   return s;

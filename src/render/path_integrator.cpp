@@ -1,6 +1,8 @@
 #include "render/direct_lighting.h"
 #include "render/integrator.h"
 
+#include <limits>
+
 namespace objektiv {
 
 SampledSpectrum PathIntegrator::Li(const Ray& camera_ray, SampledWavelengths& lambda, Sampler& sampler,
@@ -60,6 +62,9 @@ SampledSpectrum PathIntegrator::Li(const Ray& camera_ray, SampledWavelengths& la
     prev_p = si->p;
     ray = si->SpawnRay(bs->wi);
 
+    // A non-finite throughput would never be stopped by the roulette below: end the path
+    // and report it, so that the renderer counts the sample instead of writing it.
+    if (beta.HasNaN() || beta.HasInf()) return SampledSpectrum(std::numeric_limits<float>::quiet_NaN());
     // Russian roulette on the throughput with the radiance scaling of refraction removed.
     if (beta.IsBlack()) break;
     if (depth >= rr_depth_) {

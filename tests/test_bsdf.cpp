@@ -1,0 +1,154 @@
+// BSDFs: sampling matches the density each one reports (chi-square), the reported densities
+// integrate to at most one, reflection is reciprocal, and no BSDF creates energy.
+#include <gtest/gtest.h>
+
+#include "chi2.h"
+#include "base/sampling.h"
+#include "scene/bsdf.h"
+#include "scene/fresnel.h"
+
+namespace objektiv {
+namespace {
+
+constexpr double kAlpha = 1e-3;
+
+struct Case {
+  const char* name;
+  BSDF bsdf;
+};
+
+SampledSpectrum S(float v) { return SampledSpectrum(v); }
+
+std::vector<Case> NonSpecularCases() {
+  Frame f;
+  Vec3f n(0, 0, 1);
+  std::vector<Case> c;
+  c.push_back({"diffuse", BSDF(f, n, DiffuseBxDF{S(0.7f)}, false)});
+  c.push_back({"diffuse two-sided", BSDF(f, n, DiffuseBxDF{S(0.7f)}, true)});
+  ConductorBxDF rc{S(0.2f), S(3.f), S(1.f), TrowbridgeReitz(0.3f, 0.3f)};
+  c.push_back({"rough conductor", BSDF(f, n, rc, false)});
+  ConductorBxDF ac{S(1.2f), S(2.f), S(1.f), TrowbridgeReitz(0.1f, 0.5f)};
+  c.push_back({"anisotropic rough conductor", BSDF(f, n, ac, false)});
+  DielectricBxDF rd;
+  rd.eta = 1.5f;
+  rd.distrib = TrowbridgeReitz(0.25f, 0.25f);
+  c.push_back({"rough dielectric", BSDF(f, n, rd, true)});
+  rd.distrib = TrowbridgeReitz(0.6f, 0.6f);
+  c.push_back({"very rough dielectric", BSDF(f, n, rd, true)});
+  PlasticBxDF pl;
+  pl.eta = 1.49f;
+  pl.fdr_int = FresnelDiffuseReflectance(1 / 1.49f);
+  pl.diffuse = S(0.5f);
+  pl.specular = S(1.f);
+  pl.specular_sampling_weight = 0.5f;
+  c.push_back({"plastic (diffuse lobe)", BSDF(f, n, pl, false)});
+  return c;
+}
+
+std::vector<Vec3f> Outgoing(bool both_sides) {
+  std::vector<Vec3f> w;
+  for (float deg : {5.f, 40.f, 75.f}) {
+    float t = Radians(deg);
+    w.push_back(Normalize(Vec3f(std::sin(t), 0.3f * std::sin(t), std::cos(t))));
+    if (both_sides) w.push_back(Normalize(Vec3f(std::sin(t), -0.2f * std::sin(t), -std::cos(t))));
+  }
+  return w;
+}
+
+TEST(Bsdf, SamplingMatchesPdf) {
+  for (const Case& c : NonSpecularCases()) {
+    for (const Vec3f& wo : Outgoing(c.bsdf.Flags() & kTransmission)) {
+      auto sampler = [&](PCG32& g) -> std::optional<Vec3f> {
+        float uc = g.UniformFloat();
+        Vec2f u(g.UniformFloat(), g.UniformFloat());
+        auto s = c.bsdf.Sample(wo, uc, u);
+        if (!s || s->IsSpecular()) return std::nullopt;
+        return s->wi;
+      };
+      auto pdf = [&](const Vec3f& wi) { return double(c.bsdf.Pdf(wo, wi)); };
+      auto r = test::Chi2TestDirections(sampler, pdf, 300000, 16, 32);
+      EXPECT_GT(r.p_value, kAlpha) << c.name << " wo=(" << wo.x << "," << wo.y << "," << wo.z << "): " << r.Describe();
+      EXPECT_LE(r.pdf_integral, 1.02) << c.name;
+    }
+  }
+}
+
+TEST(Bsdf, SampleReportsTheSameValueAndPdfAsEvaluation) {
+  PCG32 g(5, 6);
+  for (const Case& c : NonSpecularCases())
+    for (const Vec3f& wo : Outgoing(true))
+      for (int i = 0; i < 200; ++i) {
+        auto s = c.bsdf.Sample(wo, g.UniformFloat(), {g.UniformFloat(), g.UniformFloat()});
+        if (!s || s->IsSpecular()) continue;
+        float pdf = c.bsdf.Pdf(wo, s->wi);
+        EXPECT_NEAR(s->pdf, pdf, 2e-3f * pdf + 1e-5f) << c.name;
+        SampledSpectrum f = c.bsdf.f(wo, s->wi);
+        EXPECT_NEAR(s->f[0], f[0], 2e-3f * f[0] + 1e-5f) << c.name;
+      }
+}
+
+TEST(Bsdf, ReflectionIsReciprocal) {
+  PCG32 g(9, 9);
+  for (const Case& c : NonSpecularCases())
+    for (int i = 0; i < 500; ++i) {
+      Vec3f a = SampleUniformHemisphere({g.UniformFloat(), g.UniformFloat()});
+      Vec3f b = SampleUniformHemisphere({g.UniformFloat(), g.UniformFloat()});
+      float fab = c.bsdf.f(a, b)[0], fba = c.bsdf.f(b, a)[0];
+      EXPECT_NEAR(fab, fba, 1e-4f * std::max(fab, fba) + 1e-6f) << c.name;
+    }
+}
+
+TEST(Bsdf, NoBsdfCreatesEnergy) {
+  // Directional albedo by sampling (including specular parts) is at most one.
+  Frame f;
+  Vec3f n(0, 0, 1);
+  std::vector<Case> cases = NonSpecularCases();
+  DielectricBxDF smooth;
+  smooth.eta = 1.5f;
+  cases.push_back({"smooth dielectric", BSDF(f, n, smooth, true)});
+  cases.push_back({"smooth conductor", BSDF(f, n, ConductorBxDF{S(0.2f), S(3.f), S(1.f), TrowbridgeReitz(0, 0)}, false)});
+  PCG32 g(2, 3);
+  for (const Case& c : cases)
+    for (const Vec3f& wo : Outgoing(false)) {
+      double sum = 0;
+      const int n_samples = 100000;
+      for (int i = 0; i < n_samples; ++i) {
+        auto s = c.bsdf.Sample(wo, g.UniformFloat(), {g.UniformFloat(), g.UniformFloat()});
+        if (!s) continue;
+        // Radiance transport scales refraction by 1/eta^2; undo it to count energy.
+        float scale = s->IsTransmission() ? Sqr(s->eta) : 1.f;
+        sum += s->f[0] * std::abs(s->wi.z) / s->pdf * scale;
+      }
+      EXPECT_LE(sum / n_samples, 1.01) << c.name << " at cos " << wo.z;
+    }
+}
+
+TEST(Bsdf, SmoothDielectricSplitsByFresnel) {
+  DielectricBxDF d;
+  d.eta = 1.5f;
+  BSDF b(Frame(), Vec3f(0, 0, 1), d, true);
+  Vec3f wo = Normalize(Vec3f(0.5f, 0, 1));
+  float F = FresnelDielectric(wo.z, 1.5f);
+  auto r = b.Sample(wo, 0.5f * F, {0.5f, 0.5f});
+  ASSERT_TRUE(r);
+  EXPECT_TRUE(r->flags & kReflection);
+  EXPECT_NEAR(r->wi.x, -wo.x, 1e-6);
+  EXPECT_NEAR(r->pdf, F, 1e-5);
+  auto t = b.Sample(wo, 0.5f + 0.5f * F, {0.5f, 0.5f});
+  ASSERT_TRUE(t);
+  EXPECT_TRUE(t->flags & kTransmission);
+  EXPECT_NEAR(t->pdf, 1 - F, 1e-5);
+  EXPECT_NEAR(std::sqrt(1 - wo.z * wo.z), 1.5f * std::sqrt(1 - t->wi.z * t->wi.z), 1e-5);
+}
+
+TEST(Bsdf, OneSidedOpaqueBsdfsAreBlackFromBehind) {
+  BSDF one(Frame(), Vec3f(0, 0, 1), DiffuseBxDF{S(0.5f)}, false);
+  BSDF two(Frame(), Vec3f(0, 0, 1), DiffuseBxDF{S(0.5f)}, true);
+  Vec3f below(0.1f, 0, -1), below2(0, 0.2f, -1);
+  EXPECT_TRUE(one.f(Normalize(below), Normalize(below2)).IsBlack());
+  EXPECT_NEAR(two.f(Normalize(below), Normalize(below2))[0], 0.5f / kPi, 1e-6);
+  EXPECT_FALSE(one.Sample(Normalize(below), 0.5f, {0.3f, 0.3f}).has_value());
+}
+
+}  // namespace
+}  // namespace objektiv

@@ -1,0 +1,135 @@
+// Whole-renderer tests with analytic answers or independent estimators.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include "render_helpers.h"
+
+namespace objektiv {
+namespace {
+
+using test::ChannelMean;
+using test::RenderXml;
+
+std::string Furnace(const std::string& bsdf, const std::string& integrator = "path") {
+  return fmt::format(R"(<scene version="3.0.0">
+  <integrator type="{}"/>
+  <sensor type="perspective">
+    <float name="fov" value="30"/>
+    <transform name="to_world"><lookat origin="0, 0, 4" target="0, 0, 0" up="0, 1, 0"/></transform>
+    <sampler type="sobol"><integer name="sample_count" value="64"/></sampler>
+    <film type="hdrfilm"><integer name="width" value="24"/><integer name="height" value="24"/>
+      <rfilter type="box"/></film>
+  </sensor>
+  <emitter type="constant"><float name="radiance" value="1"/></emitter>
+  <shape type="sphere"><float name="radius" value="1"/>{}</shape>
+</scene>)",
+                     integrator, bsdf);
+}
+
+// The sphere fills part of the view; every pixel must read the environment's 1.
+void ExpectFurnace(const std::string& xml, const char* what) {
+  auto r = RenderXml(xml);
+  for (int c = 0; c < 3; ++c) {
+    auto m = ChannelMean(r.image, c);
+    // 1e-3 allows for the RGB-to-spectrum round trip of the constant illuminant.
+    EXPECT_NEAR(m.mean, 1.0, 4 * m.se + 3e-3) << what << " channel " << c << " se " << m.se;
+  }
+  EXPECT_EQ(r.stats.nan_count, 0u);
+  EXPECT_EQ(r.stats.inf_count, 0u);
+}
+
+TEST(WhiteFurnace, WhiteDiffuseSphereConservesEnergy) {
+  ExpectFurnace(Furnace(R"(<bsdf type="twosided"><bsdf type="diffuse"><float name="reflectance" value="1"/></bsdf></bsdf>)"),
+                "diffuse");
+}
+
+TEST(WhiteFurnace, SmoothDielectricSphereConservesEnergy) {
+  ExpectFurnace(Furnace(R"(<bsdf type="dielectric"><float name="int_ior" value="1.5"/></bsdf>)"), "dielectric");
+}
+
+TEST(WhiteFurnace, RoughDielectricSphereNeverGainsEnergy) {
+  // Single-scattering microfacets lose energy (inside glass at alpha 0.2 the directional
+  // albedo is 0.83-0.95, and light bounces inside the sphere many times); they must never gain.
+  auto r = RenderXml(Furnace(R"(<bsdf type="roughdielectric"><float name="alpha" value="0.2"/></bsdf>)"));
+  for (int c = 0; c < 3; ++c) {
+    auto m = ChannelMean(r.image, c);
+    EXPECT_LT(m.mean, 1.0 + 4 * m.se + 3e-3);
+    EXPECT_GT(m.mean, 0.5);  // and the sphere is not black
+  }
+}
+
+TEST(WhiteFurnace, DispersiveGlassConservesEnergy) {
+  ExpectFurnace(Furnace(R"(<bsdf type="dielectric"><float name="sellmeier_b1" value="1.03961212"/>
+      <float name="sellmeier_b2" value="0.231792344"/><float name="sellmeier_b3" value="1.01046945"/>
+      <float name="sellmeier_c1" value="0.00600069867"/><float name="sellmeier_c2" value="0.0200179144"/>
+      <float name="sellmeier_c3" value="103.560653"/></bsdf>)"),
+                "dispersive dielectric");
+}
+
+std::string SmallBox(const std::string& integrator, int spp) {
+  return fmt::format(R"(<scene version="3.0.0">
+  {}
+  <sensor type="perspective">
+    <float name="fov" value="40"/>
+    <transform name="to_world"><lookat origin="0, 1, 3.5" target="0, 1, 0" up="0, 1, 0"/></transform>
+    <sampler type="independent"><integer name="sample_count" value="{}"/></sampler>
+    <film type="hdrfilm"><integer name="width" value="16"/><integer name="height" value="16"/>
+      <rfilter type="box"/></film>
+  </sensor>
+  <bsdf type="twosided" id="w"><bsdf type="diffuse"><rgb name="reflectance" value="0.7, 0.6, 0.5"/></bsdf></bsdf>
+  <bsdf type="roughconductor" id="metal"><string name="material" value="Au"/><float name="alpha" value="0.3"/></bsdf>
+  <shape type="rectangle"><transform name="to_world"><rotate x="1" angle="-90"/><scale value="2"/></transform><ref id="w"/></shape>
+  <shape type="rectangle"><transform name="to_world"><translate z="-1.5"/><scale value="2"/></transform><ref id="w"/></shape>
+  <shape type="sphere"><point name="center" x="0.4" y="0.5" z="0"/><float name="radius" value="0.5"/><ref id="metal"/></shape>
+  <shape type="sphere"><point name="center" x="-0.5" y="1.8" z="0.3"/><float name="radius" value="0.15"/>
+    <emitter type="area"><rgb name="radiance" value="20, 18, 15"/></emitter></shape>
+  <shape type="rectangle"><transform name="to_world"><translate x="0.8" y="2" z="0"/><rotate x="1" angle="90"/>
+    <scale value="0.3"/></transform><emitter type="area"><rgb name="radiance" value="8"/></emitter></shape>
+  <emitter type="point"><point name="position" x="-1" y="1.5" z="1"/><rgb name="intensity" value="2, 2, 3"/></emitter>
+</scene>)",
+                     integrator, spp);
+}
+
+TEST(Integrators, PathWithTwoSegmentsAgreesWithDirect) {
+  // Two independent estimators of the same direct illumination (different sampling
+  // strategies and MIS weights): per-pixel differences must average to zero.
+  auto a = RenderXml(SmallBox(R"(<integrator type="path"><integer name="max_depth" value="2"/></integrator>)", 256));
+  auto b = RenderXml(SmallBox(R"(<integrator type="direct"><integer name="emitter_samples" value="2"/>
+      <integer name="bsdf_samples" value="3"/></integrator>)", 256));
+  for (int c = 0; c < 3; ++c) {
+    Image d(a.image.width, a.image.height, {"D"});
+    for (int y = 0; y < d.height; ++y)
+      for (int x = 0; x < d.width; ++x) d.At(x, y, 0) = a.image.At(x, y, c) - b.image.At(x, y, c);
+    auto m = ChannelMean(d, 0);
+    EXPECT_NEAR(m.mean, 0, 4 * m.se) << "channel " << c;
+    EXPECT_GT(ChannelMean(a.image, c).mean, 0.05);  // the scene is lit
+  }
+}
+
+TEST(Integrators, ImageIsIdenticalForAnyThreadCountAndTiling) {
+  std::string xml = SmallBox(R"(<integrator type="path"><integer name="max_depth" value="6"/></integrator>)", 8);
+  auto one = RenderXml(xml, 1, 16);
+  auto two = RenderXml(xml, 2, 4);
+  auto many = RenderXml(xml, 7, 3);
+  ASSERT_EQ(one.image.pixels.size(), two.image.pixels.size());
+  EXPECT_EQ(one.image.pixels, two.image.pixels);
+  EXPECT_EQ(one.image.pixels, many.image.pixels);
+}
+
+TEST(Integrators, ConvergesWithSampleCount) {
+  // Error against a high-sample reference falls like 1/sqrt(spp) (not stuck on a bias).
+  std::string ref_xml = SmallBox(R"(<integrator type="path"/>)", 1024);
+  auto ref = RenderXml(ref_xml);
+  auto err = [&](int spp) {
+    auto r = RenderXml(SmallBox(R"(<integrator type="path"/>)", spp));
+    double s = 0;
+    for (size_t i = 0; i < r.image.pixels.size(); ++i) s += Sqr(r.image.pixels[i] - ref.image.pixels[i]);
+    return std::sqrt(s / r.image.pixels.size());
+  };
+  double e16 = err(16), e64 = err(64);
+  EXPECT_LT(e64, 0.75 * e16) << e16 << " -> " << e64;
+}
+
+}  // namespace
+}  // namespace objektiv
