@@ -76,3 +76,43 @@ TEST(Sellmeier, SchottNBK7ReproducesCatalogNdAndVd) {
 
 }  // namespace
 }  // namespace objektiv
+
+namespace objektiv {
+namespace {
+
+// Refract a direction through a dielectric face with outward normal n_out (world space),
+// entering (into glass) or leaving, using the BSDF's transmission lobe.
+Vec3f ThroughFace(const Vec3f& d, const Vec3f& n_out, float n_glass) {
+  Vec3f wt;
+  float etap;
+  // Refract takes the direction pointing away from the surface on the incident side.
+  EXPECT_TRUE(Refract(-d, n_out, n_glass, &etap, &wt));
+  return wt;
+}
+
+TEST(Prism, DeviationMatchesTheAnalyticFormulaPerWavelength) {
+  // A 60-degree prism in the xz-plane; the ray enters face 1 at 70 degrees incidence (at 50,
+  // N-SF11 would reflect totally at the second face).
+  const double apex = Radians(60);
+  IorModel sf11 = IorModel::Sellmeier({1.73759695, 0.313747346, 1.89878101}, {0.013188707, 0.0623068142, 155.23629});
+  Vec3f n1(-std::cos(float(apex / 2)), 0, std::sin(float(apex / 2)));  // outward normals of the two faces
+  Vec3f n2(std::cos(float(apex / 2)), 0, std::sin(float(apex / 2)));
+  for (double lambda : {400.0, 486.1, 587.6, 656.3, 700.0}) {
+    float n = float(sf11(lambda));
+    double theta1 = Radians(70);
+    // Incoming direction making theta1 with -n1.
+    Vec3f t1 = Normalize(Cross(Vec3f(0, 1, 0), n1));
+    Vec3f d = Normalize(-n1 * float(std::cos(theta1)) + t1 * float(std::sin(theta1)));
+    Vec3f inside = ThroughFace(d, n1, n);
+    Vec3f out = ThroughFace(inside, n2, n);
+    double deviation = std::acos(Clamp(Dot(d, out), -1, 1));
+    double r1 = std::asin(std::sin(theta1) / n), r2 = apex - r1;
+    double expected = theta1 + std::asin(n * std::sin(r2)) - apex;
+    EXPECT_NEAR(deviation, expected, 1e-5) << lambda << " nm, n = " << n;
+  }
+  // Dispersion: violet is bent more than red.
+  EXPECT_GT(sf11(400), sf11(700));
+}
+
+}  // namespace
+}  // namespace objektiv

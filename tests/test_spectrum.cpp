@@ -147,3 +147,19 @@ TEST(Spectrum, TabulatedInterpolatesAndClampsAtTheEnds) {
 }
 }  // namespace
 }  // namespace objektiv
+
+namespace objektiv {
+namespace {
+TEST(Wavelengths, BundleMatchesTheScalarFormulas) {
+  for (float u : {0.f, 0.13f, 0.5f, 0.77f, 0.999f}) {
+    SampledWavelengths w = SampledWavelengths::SampleVisible(u);
+    for (int i = 0; i < kSpectrumSamples; ++i) {
+      float up = u + float(i) / kSpectrumSamples;
+      if (up > 1) up -= 1;
+      EXPECT_NEAR(w[i], SampleVisibleWavelength(up), 2e-3f);
+      EXPECT_NEAR(w.Pdf(i), VisibleWavelengthsPdf(w[i]), 1e-5f * w.Pdf(i) + 1e-9f);
+    }
+  }
+}
+}  // namespace
+}  // namespace objektiv

@@ -24,12 +24,16 @@ TriangleMesh::TriangleMesh(MeshData data, const Transform& to_world, bool flip_n
   }
   for (const Vec3f& p : data_.positions) bounds_.Extend(p);
   std::vector<float> areas(TriangleCount());
+  face_normals_.resize(TriangleCount());
   for (size_t i = 0; i < areas.size(); ++i) {
     const Vec3f& p0 = data_.positions[data_.indices[3 * i]];
     const Vec3f& p1 = data_.positions[data_.indices[3 * i + 1]];
     const Vec3f& p2 = data_.positions[data_.indices[3 * i + 2]];
-    areas[i] = 0.5f * Length(Cross(p1 - p0, p2 - p0));
+    Vec3f ng = Cross(p1 - p0, p2 - p0);
+    float len = Length(ng);
+    areas[i] = 0.5f * len;
     area_ += areas[i];
+    face_normals_[i] = len > 0 ? ng / len * (flip_ ? -1.f : 1.f) : Vec3f(0, 0, 1);
   }
   if (!areas.empty()) triangle_distribution_ = Distribution1D(areas);
 }
@@ -56,35 +60,29 @@ SurfaceInteraction TriangleMesh::ComputeInteraction(const Ray& ray, const RTCHit
   // Interpolating the vertices is more accurate than o + t d; bound its rounding error.
   si.p = p0 * b0 + p1 * b1 + p2 * b2;
   si.p_error = (Abs(p0 * b0) + Abs(p1 * b1) + Abs(p2 * b2)) * Gamma(7);
-  Vec3f e1 = p1 - p0, e2 = p2 - p0;
-  Vec3f ng = Cross(e1, e2);
-  float len = Length(ng);
-  si.n = len > 0 ? ng / len : Vec3f(0, 0, 1);
-  if (flip_) si.n = -si.n;
-  Vec2f uv0(0, 0), uv1(1, 0), uv2(1, 1);
-  if (!data_.uvs.empty()) {
-    uv0 = data_.uvs[tri[0]];
-    uv1 = data_.uvs[tri[1]];
-    uv2 = data_.uvs[tri[2]];
-  }
-  si.uv = uv0 * b0 + uv1 * b1 + uv2 * b2;
-  // dp/du from the uv parameterisation, for a stable tangent (and bump mapping later).
-  Vec2f duv02 = uv0 - uv2, duv12 = uv1 - uv2;
-  Vec3f dp02 = p0 - p2, dp12 = p1 - p2;
-  float det = duv02.x * duv12.y - duv02.y * duv12.x;
-  Vec3f dpdu = std::abs(det) > 1e-12f ? (dp02 * duv12.y - dp12 * duv02.y) / det : e1;
+  si.n = face_normals_[hit.primID];
   Vec3f ns = si.n;
   if (!data_.normals.empty()) {
     Vec3f nsi = data_.normals[tri[0]] * b0 + data_.normals[tri[1]] * b1 + data_.normals[tri[2]] * b2;
     float l2 = LengthSquared(nsi);
-    if (l2 > 0) {
-      ns = nsi / std::sqrt(l2);
-      if (flip_) ns = -ns;
-    }
+    if (l2 > 0) ns = nsi * ((flip_ ? -1.f : 1.f) / std::sqrt(l2));
   }
-  si.shading = Frame::FromNormalTangent(ns, dpdu);
+  if (data_.uvs.empty()) {
+    // No parameterisation: barycentric uv and any tangent (texture-free surfaces).
+    si.uv = {b1 + b2, b2};
+    si.shading = Frame::FromZ(ns);
+  } else {
+    const Vec2f &uv0 = data_.uvs[tri[0]], &uv1 = data_.uvs[tri[1]], &uv2 = data_.uvs[tri[2]];
+    si.uv = uv0 * b0 + uv1 * b1 + uv2 * b2;
+    // dp/du from the uv parameterisation, for a tangent that follows the texture.
+    Vec2f duv02 = uv0 - uv2, duv12 = uv1 - uv2;
+    Vec3f dp02 = p0 - p2, dp12 = p1 - p2;
+    float det = duv02.x * duv12.y - duv02.y * duv12.x;
+    Vec3f dpdu = std::abs(det) > 1e-12f ? (dp02 * duv12.y - dp12 * duv02.y) / det : p1 - p0;
+    si.shading = Frame::FromNormalTangent(ns, dpdu);
+  }
   si.t = t;
-  si.wo = -Normalize(ray.d);
+  si.wo = -ray.d * (1 / Length(ray.d));
   return si;
 }
 
@@ -100,15 +98,12 @@ ShapeSample TriangleMesh::SampleArea(Vec2f u) const {
   ShapeSample s;
   s.p = p0 * b.x + p1 * b.y + p2 * b2;
   s.p_error = (Abs(p0 * b.x) + Abs(p1 * b.y) + Abs(p2 * b2)) * Gamma(6);
-  s.n = Normalize(Cross(p1 - p0, p2 - p0));
-  if (flip_) s.n = -s.n;
-  Vec2f uv0(0, 0), uv1(1, 0), uv2(1, 1);
-  if (!data_.uvs.empty()) {
-    uv0 = data_.uvs[tri[0]];
-    uv1 = data_.uvs[tri[1]];
-    uv2 = data_.uvs[tri[2]];
+  s.n = face_normals_[i];
+  if (data_.uvs.empty()) {
+    s.uv = {b.y + b2, b2};  // as ComputeInteraction: barycentric uv
+  } else {
+    s.uv = data_.uvs[tri[0]] * b.x + data_.uvs[tri[1]] * b.y + data_.uvs[tri[2]] * b2;
   }
-  s.uv = uv0 * b.x + uv1 * b.y + uv2 * b2;
   s.pdf = 1 / area_;
   return s;
 }

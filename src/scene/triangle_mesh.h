@@ -38,6 +38,7 @@ class TriangleMesh final : public Shape {
 
  private:
   MeshData data_;
+  std::vector<Vec3f> face_normals_;  // unit, front side (after flip_normals); per triangle
   bool flip_;
   float area_ = 0;
   Bounds3f bounds_;
