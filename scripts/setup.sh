@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config
+  build-essential cmake ninja-build pkg-config make
   libembree-dev libtbb-dev libopenimageio-dev libopenexr-dev
   libpugixml-dev libtinyobjloader-dev libassimp-dev
   libcli11-dev libfmt-dev libspdlog-dev

@@ -116,3 +116,20 @@ TEST(Prism, DeviationMatchesTheAnalyticFormulaPerWavelength) {
 
 }  // namespace
 }  // namespace objektiv
+
+namespace objektiv {
+namespace {
+TEST(Fresnel, SpectralConductorFormulaMatchesComplexArithmetic) {
+  SampledSpectrum eta, k;
+  const float etas[4] = {0.2f, 1.2f, 0.f, 2.5f}, ks[4] = {3.f, 2.f, 1.f, 0.3f};
+  for (int i = 0; i < 4; ++i) {
+    eta[i] = etas[i];
+    k[i] = ks[i];
+  }
+  for (float c : {0.f, 0.05f, 0.3f, 0.7f, 1.f}) {
+    SampledSpectrum r = FresnelComplex(c, eta, k);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(r[i], FresnelComplex(c, {etas[i], ks[i]}), 2e-5f) << c << " " << i;
+  }
+}
+}  // namespace
+}  // namespace objektiv

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "base/error.h"
 #include "render_helpers.h"
 
 namespace objektiv {
@@ -129,6 +130,62 @@ TEST(Integrators, ConvergesWithSampleCount) {
   };
   double e16 = err(16), e64 = err(64);
   EXPECT_LT(e64, 0.75 * e16) << e16 << " -> " << e64;
+}
+
+}  // namespace
+}  // namespace objektiv
+
+namespace objektiv {
+namespace {
+
+std::string InstancingScene(const std::string& objects) {
+  return fmt::format(R"(<scene version="3.0.0">
+  <integrator type="path"><integer name="max_depth" value="4"/></integrator>
+  <sensor type="perspective">
+    <float name="fov" value="45"/>
+    <transform name="to_world"><lookat origin="0, 1.5, 5" target="0, 0.5, 0" up="0, 1, 0"/></transform>
+    <sampler type="independent"><integer name="sample_count" value="16"/></sampler>
+    <film type="hdrfilm"><integer name="width" value="24"/><integer name="height" value="24"/><rfilter type="box"/></film>
+  </sensor>
+  <emitter type="constant"><float name="radiance" value="0.5"/></emitter>
+  <emitter type="directional"><vector name="direction" x="-1" y="-2" z="-1"/><float name="irradiance" value="3"/></emitter>
+  <shape type="rectangle"><transform name="to_world"><rotate x="1" angle="-90"/><scale value="4"/></transform></shape>
+  {}
+</scene>)",
+                     objects);
+}
+
+TEST(Instancing, InstancesRenderLikeTheShapesThemselves) {
+  const char* placements[2] = {R"(<translate x="-0.8" y="0.5"/>)", R"(<scale value="0.7"/><rotate y="1" angle="30"/><translate x="0.9" y="0.35" z="0.4"/>)"};
+  std::string direct, group = R"(<shape type="shapegroup" id="g">
+      <shape type="sphere"><float name="radius" value="0.5"/><bsdf type="plastic"/></shape>
+      <shape type="cube"><transform name="to_world"><scale value="0.3"/><translate y="0.7"/></transform>
+        <bsdf type="roughconductor"><string name="material" value="Cu"/></bsdf></shape></shape>)";
+  std::string instances;
+  for (const char* t : placements) {
+    direct += fmt::format(R"(<shape type="sphere"><float name="radius" value="0.5"/><transform name="to_world">{}</transform>
+      <bsdf type="plastic"/></shape>
+      <shape type="cube"><transform name="to_world"><scale value="0.3"/><translate y="0.7"/>{}</transform>
+      <bsdf type="roughconductor"><string name="material" value="Cu"/></bsdf></shape>)",
+                          t, t);
+    instances += fmt::format(R"(<shape type="instance"><ref id="g"/><transform name="to_world">{}</transform></shape>)", t);
+  }
+  auto a = test::RenderXml(InstancingScene(direct));
+  auto b = test::RenderXml(InstancingScene(group + instances));
+  // The same sample sequences meet the same surfaces: only float rounding differs.
+  double diff = 0, sum = 0;
+  for (size_t i = 0; i < a.image.pixels.size(); ++i) {
+    diff += std::abs(a.image.pixels[i] - b.image.pixels[i]);
+    sum += std::abs(a.image.pixels[i]);
+  }
+  EXPECT_LT(diff / sum, 1e-3);
+  EXPECT_GT(sum / a.image.pixels.size(), 0.05);
+}
+
+TEST(Instancing, InstancedShapesCannotEmit) {
+  std::string xml = InstancingScene(R"(<shape type="shapegroup" id="g"><shape type="sphere">
+      <emitter type="area"><rgb name="radiance" value="1"/></emitter></shape></shape>)");
+  EXPECT_THROW(LoadSceneFromString(xml, "t.xml", {}), InputError);
 }
 
 }  // namespace

@@ -101,7 +101,46 @@ const std::map<std::string, ShapeFactory>& ShapeRegistry() {
 
 }  // namespace
 
-void BuildShape(const ObjectNode& node, LoaderContext& ctx) {
+namespace {
+
+int BuildShapeGroup(const ObjectNode& node, LoaderContext& ctx) {
+  if (auto it = ctx.shape_groups.find(&node); it != ctx.shape_groups.end()) return it->second;
+  Properties props(node);
+  int group = ctx.scene.AddShapeGroup();
+  ctx.shape_groups[&node] = group;
+  auto shapes = props.Children("shape");
+  if (shapes.empty()) throw ErrorAt(node.loc, "a shapegroup needs at least one nested <shape>");
+  for (const auto& child : shapes) {
+    if (child->type == "shapegroup" || child->type == "instance")
+      throw ErrorAt(child->loc, "a shapegroup cannot contain a {} (one level of instancing)", child->type);
+    BuildShape(*child, ctx, group);
+  }
+  props.WarnUnused();
+  return group;
+}
+
+void BuildInstance(const ObjectNode& node, LoaderContext& ctx) {
+  Properties props(node);
+  auto refs = props.Children("shape");
+  if (refs.size() != 1 || refs[0]->type != "shapegroup")
+    throw ErrorAt(node.loc, "an instance needs exactly one <ref> to a shapegroup");
+  int group = BuildShapeGroup(*refs[0], ctx);
+  ctx.scene.AddInstance(group, props.GetTransform("to_world"));
+  props.WarnUnused();
+}
+
+}  // namespace
+
+void BuildShape(const ObjectNode& node, LoaderContext& ctx, int group) {
+  if (node.type == "shapegroup") {
+    if (group >= 0) throw ErrorAt(node.loc, "shapegroups cannot be nested");
+    BuildShapeGroup(node, ctx);
+    return;
+  }
+  if (node.type == "instance") {
+    BuildInstance(node, ctx);
+    return;
+  }
   const auto& registry = ShapeRegistry();
   auto it = registry.find(node.type);
   if (it == registry.end()) UnknownType(node, registry);
@@ -134,6 +173,12 @@ void BuildShape(const ObjectNode& node, LoaderContext& ctx) {
     radiance = GetTexture(ep, "radiance", SpectrumUsage::kIlluminant, 1, ctx);
     two_sided = ep.Bool("two_sided", false);
     ep.WarnUnused();
+  }
+  if (group >= 0) {
+    if (radiance) throw ErrorAt(emitters[0]->loc, "shapes inside a shapegroup cannot emit light");
+    for (auto& shape : shapes) ctx.scene.AddShapeToGroup(group, std::move(shape), material);
+    props.WarnUnused();
+    return;
   }
   for (auto& shape : shapes) {
     if (radiance && !(shape->Area() < std::numeric_limits<float>::infinity()))

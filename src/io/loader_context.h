@@ -12,6 +12,7 @@ struct LoaderContext {
   // Objects referenced more than once (by id) are built once.
   std::map<const ObjectNode*, std::shared_ptr<const Material>> materials;
   std::map<std::pair<const ObjectNode*, int>, std::shared_ptr<const SpectrumTexture>> textures;
+  std::map<const ObjectNode*, int> shape_groups;  // built <shape type="shapegroup">s
 };
 
 // Resolves a file name relative to the scene file that mentions it.
@@ -24,7 +25,8 @@ std::shared_ptr<const SpectrumTexture> GetTexture(const Properties& props, const
 std::shared_ptr<const SpectrumTexture> BuildTexture(const ObjectNode& node, SpectrumUsage usage, LoaderContext& ctx);
 
 std::shared_ptr<const Material> BuildMaterial(const ObjectNode& node, LoaderContext& ctx);
-void BuildShape(const ObjectNode& node, LoaderContext& ctx);
+// Adds a shape to the scene (group < 0) or to a shape group; shapegroup and instance too.
+void BuildShape(const ObjectNode& node, LoaderContext& ctx, int group = -1);
 std::unique_ptr<Light> BuildEmitter(const ObjectNode& node, LoaderContext& ctx);
 // The camera, film settings and sampler settings from a <sensor>.
 void BuildSensor(const ObjectNode& node, RenderSetup& setup);

@@ -31,8 +31,24 @@ float FresnelComplex(float cos_i, std::complex<float> eta) {
 }
 
 SampledSpectrum FresnelComplex(float cos_i, const SampledSpectrum& eta, const SampledSpectrum& k) {
+  // The same equations in real arithmetic (no complex square roots or divisions): with
+  // a^2 + b^2 = |eta_c^2 - sin^2|, a = Re sqrt(eta_c^2 - sin^2), for eta_c = eta + i k,
+  //   Rs = (a^2 + b^2 + cos^2 - 2 a cos) / (a^2 + b^2 + cos^2 + 2 a cos)
+  //   Rp = Rs (cos^2 (a^2 + b^2) + sin^4 - 2 a cos sin^2) / (cos^2 (a^2 + b^2) + sin^4 + 2 a cos sin^2).
+  cos_i = Clamp(cos_i, 0, 1);
+  float cos2 = cos_i * cos_i, sin2 = 1 - cos2;
   SampledSpectrum r;
-  for (int i = 0; i < kSpectrumSamples; ++i) r[i] = FresnelComplex(cos_i, std::complex<float>(eta[i], k[i]));
+  for (int i = 0; i < kSpectrumSamples; ++i) {
+    float eta2 = eta[i] * eta[i], k2 = k[i] * k[i];
+    float t0 = eta2 - k2 - sin2;
+    float a2b2 = std::sqrt(t0 * t0 + 4 * eta2 * k2);
+    float a = SafeSqrt(0.5f * (a2b2 + t0));
+    float t1 = a2b2 + cos2, t2 = 2 * cos_i * a;
+    float rs = (t1 - t2) / (t1 + t2);
+    float t3 = cos2 * a2b2 + sin2 * sin2, t4 = t2 * sin2;
+    float rp = rs * (t3 - t4) / (t3 + t4);
+    r[i] = t1 + t2 > 0 ? 0.5f * (rp + rs) : 1.f;
+  }
   return r;
 }
 

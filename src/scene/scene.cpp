@@ -22,6 +22,8 @@ Scene::Scene() {
 }
 
 Scene::~Scene() {
+  for (ShapeGroup& g : groups_)
+    if (g.scene) rtcReleaseScene(g.scene);
   if (scene_) rtcReleaseScene(scene_);
   if (device_) rtcReleaseDevice(device_);
 }
@@ -32,8 +34,48 @@ ShapeRecord& Scene::AddShape(std::unique_ptr<Shape> shape, std::shared_ptr<const
   rtcReleaseGeometry(geom);
   if (id != shapes_.size()) throw std::logic_error("Embree geometry IDs out of step with shapes");
   bounds_.Extend(shape->WorldBounds());
-  shapes_.push_back(ShapeRecord{std::move(shape), std::move(material), nullptr});
+  shapes_.push_back(ShapeRecord{std::move(shape), std::move(material), nullptr, -1});
   return shapes_.back();
+}
+
+int Scene::AddShapeGroup() {
+  ShapeGroup g;
+  g.scene = rtcNewScene(device_);
+  rtcSetSceneBuildQuality(g.scene, RTC_BUILD_QUALITY_HIGH);
+  groups_.push_back(std::move(g));
+  return int(groups_.size()) - 1;
+}
+
+void Scene::AddShapeToGroup(int group, std::unique_ptr<Shape> shape, std::shared_ptr<const Material> material) {
+  ShapeGroup& g = groups_.at(group);
+  RTCGeometry geom = shape->CreateGeometry(device_);
+  unsigned id = rtcAttachGeometry(g.scene, geom);
+  rtcReleaseGeometry(geom);
+  if (id != g.shapes.size()) throw std::logic_error("Embree geometry IDs out of step with group shapes");
+  g.bounds.Extend(shape->WorldBounds());
+  g.shapes.push_back(ShapeRecord{std::move(shape), std::move(material), nullptr, -1});
+}
+
+void Scene::AddInstance(int group, const Transform& to_world) {
+  ShapeGroup& g = groups_.at(group);
+  // Embree needs the child BVH built before an instance of it is committed.
+  rtcCommitScene(g.scene);
+  RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
+  rtcSetGeometryInstancedScene(geom, g.scene);
+  float m[12];  // 3x4, column major
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 3; ++r) m[c * 3 + r] = float(to_world.Matrix().m[r][c]);
+  rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, m);
+  rtcCommitGeometry(geom);
+  unsigned id = rtcAttachGeometry(scene_, geom);
+  rtcReleaseGeometry(geom);
+  if (id != shapes_.size()) throw std::logic_error("Embree geometry IDs out of step with shapes");
+  if (!g.bounds.Empty())
+    for (int i = 0; i < 8; ++i)
+      bounds_.Extend(to_world.Point(Vec3f(i & 1 ? g.bounds.hi.x : g.bounds.lo.x, i & 2 ? g.bounds.hi.y : g.bounds.lo.y,
+                                          i & 4 ? g.bounds.hi.z : g.bounds.lo.z)));
+  instances_.push_back(Instance{group, to_world, to_world.Inverse()});
+  shapes_.push_back(ShapeRecord{nullptr, nullptr, nullptr, int(instances_.size()) - 1});
 }
 
 void Scene::AddAreaLight(ShapeRecord& record, std::shared_ptr<const SpectrumTexture> radiance, bool two_sided) {
@@ -54,6 +96,7 @@ void Scene::AddLight(std::unique_ptr<Light> light) {
 }
 
 void Scene::Commit() {
+  for (ShapeGroup& g : groups_) rtcCommitScene(g.scene);
   rtcCommitScene(scene_);
   std::vector<float> power;
   for (auto& l : lights_) {
@@ -88,8 +131,33 @@ std::optional<SurfaceInteraction> Scene::Intersect(const Ray& ray) const {
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &ctx, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) return InstanceInteraction(ray, rh);
   const ShapeRecord& rec = shapes_[rh.hit.geomID];
   SurfaceInteraction si = rec.shape->ComputeInteraction(ray, rh.hit, rh.ray.tfar);
+  si.shape = &rec;
+  return si;
+}
+
+SurfaceInteraction Scene::InstanceInteraction(const Ray& ray, const RTCRayHit& rh) const {
+  const Instance& inst = instances_[shapes_[rh.hit.instID[0]].instance];
+  const ShapeRecord& rec = groups_[inst.group].shapes[rh.hit.geomID];
+  // The hit parameter t is the same along the object-space ray (an affine map).
+  Ray local{inst.to_object.Point(ray.o), inst.to_object.Vector(ray.d), ray.tmax};
+  SurfaceInteraction o = rec.shape->ComputeInteraction(local, rh.hit, rh.ray.tfar);
+  SurfaceInteraction si = o;
+  const Transform& m = inst.to_world;
+  si.p = m.Point(o.p);
+  // Error of the object-space point carried through |M|, plus the transform's own rounding.
+  Vec3f abs_p(0.f), abs_err(0.f);
+  const auto& a = m.Matrix().m;
+  for (int i = 0; i < 3; ++i) {
+    abs_p[i] = float(std::abs(a[i][0] * o.p.x) + std::abs(a[i][1] * o.p.y) + std::abs(a[i][2] * o.p.z) + std::abs(a[i][3]));
+    abs_err[i] = float(std::abs(a[i][0]) * o.p_error.x + std::abs(a[i][1]) * o.p_error.y + std::abs(a[i][2]) * o.p_error.z);
+  }
+  si.p_error = abs_err * (1 + Gamma(3)) + abs_p * Gamma(3);
+  si.n = Normalize(m.Normal(o.n));
+  si.shading = Frame::FromNormalTangent(Normalize(m.Normal(o.shading.n)), m.Vector(o.shading.s));
+  si.wo = -Normalize(ray.d);
   si.shape = &rec;
   return si;
 }

@@ -18,6 +18,7 @@ struct ShapeRecord {
   std::unique_ptr<Shape> shape;
   std::shared_ptr<const Material> material;
   const AreaLight* area_light = nullptr;
+  int instance = -1;  // for a top-level instance: index into the scene's instances
 };
 
 class Scene {
@@ -32,6 +33,11 @@ class Scene {
   // Makes the shape record an emitter.
   void AddAreaLight(ShapeRecord& record, std::shared_ptr<const SpectrumTexture> radiance, bool two_sided);
   void AddLight(std::unique_ptr<Light> light);
+  // Instancing: shapes added to a group live in its own BVH (in object space); each instance
+  // places the whole group with a transform. Instanced shapes cannot emit.
+  int AddShapeGroup();
+  void AddShapeToGroup(int group, std::unique_ptr<Shape> shape, std::shared_ptr<const Material> material);
+  void AddInstance(int group, const Transform& to_world);
   // Builds the BVH, preprocesses lights, builds the light-selection distribution.
   void Commit();
 
@@ -48,9 +54,22 @@ class Scene {
   size_t ShapeCount() const { return shapes_.size(); }
 
  private:
+  struct ShapeGroup {
+    RTCScene scene = nullptr;
+    std::vector<ShapeRecord> shapes;
+    Bounds3f bounds;
+  };
+  struct Instance {
+    int group;
+    Transform to_world, to_object;
+  };
+  SurfaceInteraction InstanceInteraction(const Ray& ray, const RTCRayHit& rh) const;
+
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
   std::vector<ShapeRecord> shapes_;
+  std::vector<ShapeGroup> groups_;
+  std::vector<Instance> instances_;
   std::vector<std::unique_ptr<Light>> lights_;
   std::vector<const InfiniteLight*> infinite_lights_;
   Distribution1D light_distribution_;

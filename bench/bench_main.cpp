@@ -1,0 +1,129 @@
+// Micro-benchmarks: ray casting against the Cornell box, BSDF sampling, samplers.
+// Run: build/objektiv-bench (the full-render figure comes from bench/cornell.sh).
+#include <benchmark/benchmark.h>
+
+#include "base/rng.h"
+#include "base/sampling.h"
+#include "io/scene_loader.h"
+#include "render/sampler.h"
+#include "scene/bsdf.h"
+#include "scene/fresnel.h"
+
+namespace objektiv {
+namespace {
+
+const RenderSetup& Cornell() {
+  static RenderSetup setup = LoadScene(OBJEKTIV_SCENES_DIR "/cornell-box/cornell-box.xml", {});
+  return setup;
+}
+
+// Random rays from points inside the box in uniform directions (incoherent, like bounces).
+std::vector<Ray> CornellRays(int n) {
+  PCG32 rng(1, 1);
+  std::vector<Ray> rays(n);
+  for (Ray& r : rays) {
+    r.o = Vec3f(rng.UniformFloat() * 1.8f - 0.9f, rng.UniformFloat() * 1.8f + 0.1f, rng.UniformFloat() * 1.8f - 0.9f);
+    r.d = SampleUniformSphere({rng.UniformFloat(), rng.UniformFloat()});
+  }
+  return rays;
+}
+
+void BM_IntersectClosest(benchmark::State& state) {
+  const Scene& scene = *Cornell().scene;
+  std::vector<Ray> rays = CornellRays(4096);
+  size_t i = 0, hits = 0;
+  for (auto _ : state) {
+    auto si = scene.Intersect(rays[i++ & 4095]);
+    hits += si.has_value();
+    benchmark::DoNotOptimize(si);
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["hit_fraction"] = double(hits) / state.iterations();
+}
+BENCHMARK(BM_IntersectClosest);
+
+void BM_Occluded(benchmark::State& state) {
+  const Scene& scene = *Cornell().scene;
+  std::vector<Ray> rays = CornellRays(4096);
+  for (Ray& r : rays) r.tmax = 0.5f;
+  size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(scene.Occluded(rays[i++ & 4095]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_Occluded);
+
+BSDF MakeBsdf(int kind) {
+  SampledSpectrum s(0.5f);
+  switch (kind) {
+    case 0:
+      return BSDF(Frame(), Vec3f(0, 0, 1), DiffuseBxDF{s}, false);
+    case 1: {
+      DielectricBxDF d;
+      d.eta = 1.5f;
+      return BSDF(Frame(), Vec3f(0, 0, 1), d, true);
+    }
+    case 2: {
+      DielectricBxDF d;
+      d.eta = 1.5f;
+      d.distrib = TrowbridgeReitz(0.2f, 0.2f);
+      return BSDF(Frame(), Vec3f(0, 0, 1), d, true);
+    }
+    case 3:
+      return BSDF(Frame(), Vec3f(0, 0, 1), ConductorBxDF{SampledSpectrum(0.2f), SampledSpectrum(3.f), SampledSpectrum(1.f), TrowbridgeReitz(0.3f, 0.3f)}, false);
+    default: {
+      PlasticBxDF p;
+      p.diffuse = s;
+      p.fdr_int = FresnelDiffuseReflectance(1 / 1.49f);
+      return BSDF(Frame(), Vec3f(0, 0, 1), p, false);
+    }
+  }
+}
+
+void BM_BsdfSample(benchmark::State& state) {
+  BSDF bsdf = MakeBsdf(int(state.range(0)));
+  PCG32 rng(2, 2);
+  Vec3f wo = Normalize(Vec3f(0.3f, 0.2f, 0.9f));
+  for (auto _ : state) {
+    auto s = bsdf.Sample(wo, rng.UniformFloat(), {rng.UniformFloat(), rng.UniformFloat()});
+    benchmark::DoNotOptimize(s);
+  }
+  state.SetItemsProcessed(state.iterations());
+  static const char* names[] = {"diffuse", "dielectric", "roughdielectric", "roughconductor", "plastic"};
+  state.SetLabel(names[state.range(0)]);
+}
+BENCHMARK(BM_BsdfSample)->DenseRange(0, 4);
+
+void BM_BsdfEvalPdf(benchmark::State& state) {
+  BSDF bsdf = MakeBsdf(int(state.range(0)));
+  PCG32 rng(3, 3);
+  Vec3f wo = Normalize(Vec3f(0.3f, 0.2f, 0.9f));
+  for (auto _ : state) {
+    Vec3f wi = SampleUniformSphere({rng.UniformFloat(), rng.UniformFloat()});
+    benchmark::DoNotOptimize(bsdf.f(wo, wi));
+    benchmark::DoNotOptimize(bsdf.Pdf(wo, wi));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_BsdfEvalPdf)->DenseRange(0, 4);
+
+void BM_Sampler2D(benchmark::State& state) {
+  std::unique_ptr<Sampler> s;
+  if (state.range(0) == 0) s = std::make_unique<IndependentSampler>(64, 0);
+  if (state.range(0) == 1) s = std::make_unique<StratifiedSampler>(64, 0);
+  if (state.range(0) == 2) s = std::make_unique<SobolSampler>(64, 0);
+  int i = 0;
+  for (auto _ : state) {
+    if ((i & 15) == 0) s->StartPixelSample({i & 511, 7}, (i >> 4) & 63);
+    ++i;
+    benchmark::DoNotOptimize(s->Get2D());
+  }
+  state.SetItemsProcessed(state.iterations());
+  static const char* names[] = {"independent", "stratified", "sobol"};
+  state.SetLabel(names[state.range(0)]);
+}
+BENCHMARK(BM_Sampler2D)->DenseRange(0, 2);
+
+}  // namespace
+}  // namespace objektiv
+
+BENCHMARK_MAIN();
