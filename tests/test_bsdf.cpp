@@ -152,3 +152,19 @@ TEST(Bsdf, OneSidedOpaqueBsdfsAreBlackFromBehind) {
 
 }  // namespace
 }  // namespace objektiv
+
+namespace objektiv {
+namespace {
+TEST(Bsdf, EvalWithPdfEqualsSeparateCalls) {
+  PCG32 g(4, 4);
+  for (const Case& c : NonSpecularCases())
+    for (int i = 0; i < 200; ++i) {
+      Vec3f wo = SampleUniformSphere({g.UniformFloat(), g.UniformFloat()});
+      Vec3f wi = SampleUniformSphere({g.UniformFloat(), g.UniformFloat()});
+      BSDF::Evaluation e = c.bsdf.EvalWithPdf(wo, wi);
+      EXPECT_EQ(e.f[0], c.bsdf.f(wo, wi)[0]) << c.name;
+      EXPECT_EQ(e.pdf, c.bsdf.Pdf(wo, wi)) << c.name;
+    }
+}
+}  // namespace
+}  // namespace objektiv

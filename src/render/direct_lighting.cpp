@@ -10,7 +10,8 @@ SampledSpectrum SampleLightMIS(const Scene& scene, const SurfaceInteraction& si,
   if (!light) return {};
   std::optional<LightSample> ls = light->SampleLi(si.p, u, lambda);
   if (!ls || ls->pdf == 0 || ls->L.IsBlack()) return {};
-  SampledSpectrum f = bsdf.f(si.wo, ls->wi) * AbsDot(ls->wi, si.shading.n);
+  BSDF::Evaluation eval = bsdf.EvalWithPdf(si.wo, ls->wi);
+  SampledSpectrum f = eval.f * AbsDot(ls->wi, si.shading.n);
   if (f.IsBlack()) return {};
   Ray shadow;
   if (ls->infinite) {
@@ -22,8 +23,7 @@ SampledSpectrum SampleLightMIS(const Scene& scene, const SurfaceInteraction& si,
   if (scene.Occluded(shadow)) return {};
   float light_pdf = pmf * ls->pdf;
   if (light->IsDelta() || bsdf_count == 0) return f * ls->L / (light_pdf * light_count);
-  float bsdf_pdf = bsdf.Pdf(si.wo, ls->wi);
-  float w = PowerHeuristic(light_count * light_pdf, bsdf_count * bsdf_pdf);
+  float w = PowerHeuristic(light_count * light_pdf, bsdf_count * eval.pdf);
   return f * ls->L * (w / (light_pdf * light_count));
 }
 

@@ -50,6 +50,18 @@ float BSDF::Pdf(const Vec3f& wo_world, const Vec3f& wi_world, TransportMode mode
                     bxdf_);
 }
 
+BSDF::Evaluation BSDF::EvalWithPdf(const Vec3f& wo_world, const Vec3f& wi_world, TransportMode mode) const {
+  Vec3f wo = frame_.ToLocal(wo_world), wi = frame_.ToLocal(wi_world);
+  if (wo.z == 0) return {};
+  if (two_sided_ && wo.z < 0 && IsOpaque()) {
+    wo.z = -wo.z;
+    wi.z = -wi.z;
+  }
+  return std::visit(Overloaded{[&](const DielectricBxDF& b) { return Evaluation{b.f(wo, wi, mode), b.Pdf(wo, wi, mode)}; },
+                               [&](const auto& b) { return Evaluation{b.f(wo, wi), b.Pdf(wo, wi)}; }},
+                    bxdf_);
+}
+
 int BSDF::Flags() const {
   return std::visit([](const auto& b) { return b.Flags(); }, bxdf_);
 }

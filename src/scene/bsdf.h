@@ -21,6 +21,13 @@ class BSDF {
   std::optional<BSDFSample> Sample(const Vec3f& wo_world, float uc, Vec2f u,
                                    TransportMode mode = TransportMode::kRadiance) const;
   float Pdf(const Vec3f& wo_world, const Vec3f& wi_world, TransportMode mode = TransportMode::kRadiance) const;
+  // f and Pdf together (one frame change, one dispatch), for next-event estimation.
+  struct Evaluation {
+    SampledSpectrum f;
+    float pdf = 0;
+  };
+  Evaluation EvalWithPdf(const Vec3f& wo_world, const Vec3f& wi_world,
+                         TransportMode mode = TransportMode::kRadiance) const;
   int Flags() const;
   bool IsSpecular() const { return (Flags() & (kDiffuse | kGlossy)) == 0; }
   const Frame& frame() const { return frame_; }
