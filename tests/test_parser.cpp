@@ -41,6 +41,8 @@ TEST(Parser, BadInputNamesFileAndLine) {
        5, "must lie in [0, 1]"},
       {Wrap("<shape type=\"sphere\"><bsdf type=\"dielectric\">\n<string name=\"int_ior\" value=\"unobtainium\"/></bsdf></shape>"),
        5, "unknown index of refraction"},
+      {Wrap("<shape type=\"sphere\"><bsdf type=\"dielectric\">\n<string name=\"int_ior\" value=\"SCHOTT:N-NOPE\"/></bsdf></shape>"),
+       5, "catalog glass"},
       {Wrap("<shape type=\"sphere\"><bsdf type=\"conductor\">\n<string name=\"material\" value=\"Zz\"/></bsdf></shape>"), 5,
        "unknown conductor"},
       {Wrap("<shape type=\"sphere\">\n<transform name=\"to_world\"><scale x=\"0\"/></transform></shape>"), 5,

@@ -68,6 +68,12 @@ TEST(WhiteFurnace, DispersiveGlassConservesEnergy) {
                 "dispersive dielectric");
 }
 
+TEST(WhiteFurnace, CatalogGlassConservesEnergy) {
+  ExpectFurnace(Furnace(R"(<bsdf type="dielectric"><string name="int_ior" value="N-BK7"/></bsdf>)"), "catalog N-BK7");
+  ExpectFurnace(Furnace(R"(<bsdf type="dielectric"><string name="int_ior" value="OHARA:S-TIH53"/></bsdf>)"),
+                "catalog S-TIH53");
+}
+
 std::string SmallBox(const std::string& integrator, int spp) {
   return fmt::format(R"(<scene version="3.0.0">
   {}

@@ -4,6 +4,7 @@
 #include "base/cie.h"
 #include "io/image_io.h"
 #include "io/loader_context.h"
+#include "optics/glass_catalog.h"
 #include "scene/conductor_data.h"
 
 namespace objektiv {
@@ -102,12 +103,16 @@ std::shared_ptr<const SpectrumTexture> BuildTexture(const ObjectNode& node, Spec
 
 namespace {
 
+const Property* FindProperty(const Properties& p, const std::string& name) {
+  for (const Property& q : p.node().props)
+    if (q.name == name) return &q;
+  return nullptr;
+}
+
 // An index of refraction given as a number or one of Mitsuba's names.
 double GetIor(const Properties& p, const std::string& name, double fallback) {
   if (!p.Has(name)) return fallback;
-  const Property* prop = nullptr;
-  for (const Property& q : p.node().props)
-    if (q.name == name) prop = &q;
+  const Property* prop = FindProperty(p, name);
   if (std::holds_alternative<std::string>(prop->data)) {
     std::string s = p.String(name);
     if (auto v = NamedIor(s)) return *v;
@@ -132,6 +137,19 @@ IorModel GetInteriorIor(const Properties& p) {
       c[i] = p.Float(fmt::format("sellmeier_c{}", i + 1), 0);
     }
     return IorModel::Sellmeier(b, c);
+  }
+  // A name that is not one of Mitsuba's constants is looked up in the glass catalogs.
+  if (p.Has("int_ior") && std::holds_alternative<std::string>(FindProperty(p, "int_ior")->data)) {
+    std::string name = p.String("int_ior");
+    if (!NamedIor(name)) {
+      const Glass* glass = GlassCatalog::Default().Find(name);
+      if (!glass)
+        throw ErrorAt(p.LocOf("int_ior"),
+                      "unknown index of refraction '{}' (a number, a name such as bk7 or water, or a catalog glass "
+                      "such as N-BK7 or OHARA:S-BSL7)",
+                      name);
+      return IorModel::FromGlass(glass);
+    }
   }
   return IorModel(GetIor(p, "int_ior", *NamedIor("bk7")));
 }

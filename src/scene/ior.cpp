@@ -1,5 +1,7 @@
 #include "scene/ior.h"
 
+#include "optics/glass.h"
+
 #include <cmath>
 #include <utility>
 
@@ -20,6 +22,14 @@ IorModel IorModel::Sellmeier(std::array<double, 3> b, std::array<double, 3> c) {
   return m;
 }
 
+IorModel IorModel::FromGlass(const Glass* glass) {
+  IorModel m;
+  m.kind_ = glass->IsDispersive() ? Kind::kGlass : Kind::kConstant;
+  m.glass_ = glass;
+  m.n_ = glass->Index(587.5618);
+  return m;
+}
+
 double IorModel::operator()(double lambda_nm) const {
   double l = lambda_nm * 1e-3, l2 = l * l;
   switch (kind_) {
@@ -27,6 +37,8 @@ double IorModel::operator()(double lambda_nm) const {
       return n_;
     case Kind::kCauchy:
       return a_[0] + a_[1] / l2 + a_[2] / (l2 * l2);
+    case Kind::kGlass:
+      return glass_->Index(lambda_nm);
     case Kind::kSellmeier: {
       double n2 = 1;
       for (int i = 0; i < 3; ++i) n2 += a_[i] * l2 / (l2 - b_[i]);

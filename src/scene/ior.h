@@ -7,6 +7,8 @@
 
 namespace objektiv {
 
+class Glass;
+
 class IorModel {
  public:
   IorModel() = default;
@@ -15,12 +17,15 @@ class IorModel {
   static IorModel Cauchy(double a, double b, double c = 0);
   // n^2 = 1 + sum B_i l^2 / (l^2 - C_i), l in micrometres, C_i in um^2 (Schott's form).
   static IorModel Sellmeier(std::array<double, 3> b, std::array<double, 3> c);
+  // A glass of the lens library's catalogs (it must outlive the model).
+  static IorModel FromGlass(const Glass* glass);
 
   double operator()(double lambda_nm) const;
   bool IsDispersive() const { return kind_ != Kind::kConstant; }
 
  private:
-  enum class Kind { kConstant, kCauchy, kSellmeier } kind_ = Kind::kConstant;
+  enum class Kind { kConstant, kCauchy, kSellmeier, kGlass } kind_ = Kind::kConstant;
+  const Glass* glass_ = nullptr;
   double n_ = 1;
   std::array<double, 3> a_{}, b_{};
 };

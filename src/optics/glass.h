@@ -1,0 +1,50 @@
+// Optical glasses: refractive index by wavelength and internal transmittance, from a catalog
+// formula, a "model glass" (nd, Vd), or a constant index.
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include "optics/dispersion.h"
+
+namespace objektiv {
+
+class Glass {
+ public:
+  // A catalog glass with its AGF formula and coefficients.
+  Glass(std::string name, std::string catalog, DispersionFormula formula, const std::array<double, 10>& coefficients);
+  // A model glass through nd and Vd: n = A + B / l^2 (two-term Cauchy), so that n(d) = nd and
+  // (nd - 1) / (nF - nC) = Vd exactly. Used when a prescription gives only nd and Vd.
+  static Glass Model(double nd, double vd);
+  static Glass Constant(double n);
+
+  double Index(double lambda_nm) const;
+  // Internal transmittance through `thickness_mm` of glass (1 where the catalog has no data):
+  // Beer-Lambert with the absorption coefficient interpolated between the catalog's IT rows.
+  double InternalTransmittance(double lambda_nm, double thickness_mm) const;
+  double ComputedNd() const { return Index(kLambdad); }
+  double ComputedVd() const { return (Index(kLambdad) - 1) / (Index(kLambdaF) - Index(kLambdaC)); }
+  bool IsDispersive() const { return kind_ != Kind::kConstant; }
+
+  const std::string& name() const { return name_; }
+  const std::string& catalog() const { return catalog_; }
+  DispersionFormula formula() const { return formula_; }  // meaningful for catalog glasses
+  // Nominal catalog values from the NM line (0 when not given).
+  double catalog_nd = 0, catalog_vd = 0;
+  // Wavelength range (um) in which the formula is valid (0, 0 when unknown).
+  double lambda_min_um = 0, lambda_max_um = 0;
+
+  void SetCoefficients(const std::array<double, 10>& c) { c_ = c; }
+  // IT row: internal transmittance `tau` over `thickness_mm` at `lambda_um`.
+  void AddTransmission(double lambda_um, double tau, double thickness_mm);
+
+ private:
+  enum class Kind { kCatalog, kModel, kConstant } kind_ = Kind::kCatalog;
+  std::string name_, catalog_;
+  DispersionFormula formula_ = DispersionFormula::kSchott;
+  std::array<double, 10> c_{};
+  // Absorption coefficient (per mm) at increasing wavelengths (um).
+  std::vector<std::pair<double, double>> absorption_;
+};
+
+}  // namespace objektiv

@@ -1,0 +1,157 @@
+#include "optics/glass_catalog.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "base/error.h"
+#include "base/log.h"
+
+namespace objektiv {
+namespace {
+
+std::string Upper(std::string_view s) {
+  std::string r(s);
+  for (char& c : r) c = char(std::toupper(static_cast<unsigned char>(c)));
+  return r;
+}
+
+// UTF-16 (with a byte-order mark) to ASCII; other text passes through.
+std::string DecodeText(const std::string& raw) {
+  if (raw.size() >= 2 && ((uint8_t(raw[0]) == 0xff && uint8_t(raw[1]) == 0xfe) ||
+                          (uint8_t(raw[0]) == 0xfe && uint8_t(raw[1]) == 0xff))) {
+    bool le = uint8_t(raw[0]) == 0xff;
+    std::string out;
+    for (size_t i = 2; i + 1 < raw.size(); i += 2) {
+      unsigned code = le ? (uint8_t(raw[i]) | (uint8_t(raw[i + 1]) << 8)) : ((uint8_t(raw[i]) << 8) | uint8_t(raw[i + 1]));
+      out += code < 128 ? char(code) : '?';
+    }
+    return out;
+  }
+  if (raw.size() >= 3 && uint8_t(raw[0]) == 0xef && uint8_t(raw[1]) == 0xbb && uint8_t(raw[2]) == 0xbf) return raw.substr(3);
+  return raw;
+}
+
+double Number(const std::string& s, const std::string& path, int line) {
+  char* end = nullptr;
+  errno = 0;
+  double v = std::strtod(s.c_str(), &end);
+  if (end == s.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+    throw MakeInputError(path, line, "'{}' is not a finite number", s);
+  return v;
+}
+
+}  // namespace
+
+void GlassCatalog::LoadAgf(const std::string& path, const std::string& name) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw MakeInputError(path, 0, "cannot open glass catalog");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  LoadAgfText(ss.str(), path, name);
+}
+
+void GlassCatalog::LoadAgfText(const std::string& raw, const std::string& path, const std::string& catalog) {
+  std::string text = DecodeText(raw);
+  auto& table = glasses_[catalog];
+  if (std::find(order_.begin(), order_.end(), catalog) == order_.end()) order_.push_back(catalog);
+  Glass* current = nullptr;
+  std::istringstream lines(text);
+  std::string line;
+  int number = 0;
+  while (std::getline(lines, line)) {
+    ++number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::istringstream tok(line);
+    std::string type;
+    if (!(tok >> type)) continue;
+    std::vector<std::string> f;
+    for (std::string t; tok >> t;) f.push_back(t);
+    if (type == "NM") {
+      // NM name formula MIL nd vd [exclude status melt]
+      if (f.size() < 5) throw MakeInputError(path, number, "NM line needs name, formula, MIL, nd and vd");
+      double formula_number = Number(f[1], path, number);
+      auto formula = DispersionFormulaFromNumber(int(formula_number));
+      if (!formula || formula_number != std::floor(formula_number))
+        throw MakeInputError(path, number, "glass {}: unknown dispersion formula {}", f[0], f[1]);
+      auto glass = std::make_unique<Glass>(f[0], catalog, *formula, std::array<double, 10>{});
+      glass->catalog_nd = Number(f[3], path, number);
+      glass->catalog_vd = Number(f[4], path, number);
+      std::string key = Upper(f[0]);
+      if (table.count(key)) throw MakeInputError(path, number, "glass {} is listed twice", f[0]);
+      current = glass.get();
+      table[key] = std::move(glass);
+    } else if (type == "CD" || type == "LD" || type == "IT") {
+      if (!current) throw MakeInputError(path, number, "{} line before any NM line", type);
+      if (type == "CD") {
+        if (f.empty() || f.size() > 10) throw MakeInputError(path, number, "CD line needs 1 to 10 coefficients");
+        std::array<double, 10> c{};
+        for (size_t i = 0; i < f.size(); ++i) c[i] = Number(f[i], path, number);
+        current->SetCoefficients(c);
+      } else if (type == "LD") {
+        if (f.size() < 2) throw MakeInputError(path, number, "LD line needs a minimum and a maximum wavelength");
+        current->lambda_min_um = Number(f[0], path, number);
+        current->lambda_max_um = Number(f[1], path, number);
+        if (!(current->lambda_min_um < current->lambda_max_um))
+          throw MakeInputError(path, number, "LD range is empty");
+      } else {
+        if (f.size() < 3) throw MakeInputError(path, number, "IT line needs wavelength, transmittance and thickness");
+        double l = Number(f[0], path, number), tau = Number(f[1], path, number), d = Number(f[2], path, number);
+        // Implausible rows occur in real catalogs (HIKARI lists transmittances of 12 and
+        // 1.959): one bad optional row should not make a catalog unusable. Skip it, loudly.
+        if (!(l > 0) || tau < 0 || tau > 1.0001 || !(d > 0)) {
+          spdlog::warn("{}:{}: glass {}: ignoring transmission row (wavelength {} um, transmittance {}, thickness {} mm)",
+                       path, number, current->name(), l, tau, d);
+          continue;
+        }
+        current->AddTransmission(l, std::min(tau, 1.0), d);
+      }
+    }
+    // Other line types (CC, GC, ED, TD, OD, BD, ...) carry nothing the renderer uses.
+  }
+}
+
+std::string DataDirectory() {
+  if (const char* env = std::getenv("OBJEKTIV_DATA_DIR"); env && *env) return env;
+  return OBJEKTIV_BUILTIN_DATA_DIR;
+}
+
+const GlassCatalog& GlassCatalog::Default() {
+  static const GlassCatalog catalog = [] {
+    GlassCatalog c;
+    for (const char* name : {"SCHOTT", "OHARA", "HOYA", "CDGM", "SUMITA", "HIKARI"})
+      c.LoadAgf(DataDirectory() + "/glass/" + name + ".AGF", name);
+    return c;
+  }();
+  return catalog;
+}
+
+const Glass* GlassCatalog::Find(std::string_view name) const {
+  size_t colon = name.find(':');
+  if (colon != std::string_view::npos) {
+    std::string cat = Upper(name.substr(0, colon));
+    auto it = glasses_.find(cat);
+    if (it == glasses_.end()) return nullptr;
+    auto g = it->second.find(Upper(name.substr(colon + 1)));
+    return g == it->second.end() ? nullptr : g->second.get();
+  }
+  std::string key = Upper(name);
+  for (const std::string& cat : order_) {
+    const auto& table = glasses_.at(cat);
+    if (auto g = table.find(key); g != table.end()) return g->second.get();
+  }
+  return nullptr;
+}
+
+std::vector<const Glass*> GlassCatalog::All() const {
+  std::vector<const Glass*> all;
+  for (const std::string& cat : order_)
+    for (const auto& [key, g] : glasses_.at(cat)) all.push_back(g.get());
+  return all;
+}
+
+}  // namespace objektiv
