@@ -107,10 +107,7 @@ void BM_BsdfEvalPdf(benchmark::State& state) {
 BENCHMARK(BM_BsdfEvalPdf)->DenseRange(0, 4);
 
 void BM_Sampler2D(benchmark::State& state) {
-  std::unique_ptr<Sampler> s;
-  if (state.range(0) == 0) s = std::make_unique<IndependentSampler>(64, 0);
-  if (state.range(0) == 1) s = std::make_unique<StratifiedSampler>(64, 0);
-  if (state.range(0) == 2) s = std::make_unique<SobolSampler>(64, 0);
+  auto s = std::make_unique<Sampler>(SamplerKind(state.range(0)), 64, 0);
   int i = 0;
   for (auto _ : state) {
     if ((i & 15) == 0) s->StartPixelSample({i & 511, 7}, (i >> 4) & 63);

@@ -133,3 +133,18 @@ TEST(Fresnel, SpectralConductorFormulaMatchesComplexArithmetic) {
 }
 }  // namespace
 }  // namespace objektiv
+
+#include "scene/ray.h"
+
+namespace objektiv {
+namespace {
+TEST(Ray, NextFloatStepsOneUlp) {
+  for (float v : {1.f, -1.f, 3.5e-20f, -7.25e12f, 0.f, -0.f}) {
+    EXPECT_EQ(NextFloatUp(v), std::nextafter(v == -0.f ? 0.f : v, INFINITY)) << v;
+    EXPECT_EQ(NextFloatDown(v), std::nextafter(v == 0.f ? -0.f : v, -INFINITY)) << v;
+  }
+  EXPECT_EQ(NextFloatUp(INFINITY), INFINITY);
+  EXPECT_EQ(NextFloatDown(-INFINITY), -INFINITY);
+}
+}  // namespace
+}  // namespace objektiv

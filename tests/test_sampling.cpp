@@ -121,7 +121,7 @@ TEST(Sobol, FirstPowerOfTwoPointsAreNets) {
   // For spp = 2^m, every dimension pair of a pixel's first spp samples must put exactly
   // one point in each elementary interval of area 1/spp (all shapes 2^a x 2^(m-a)).
   const int m = 6, n = 1 << m;
-  SobolSampler s(n, 17);
+  Sampler s(SamplerKind::kSobol, n, 17);
   for (int dimpair = 0; dimpair < 4; ++dimpair) {
     std::vector<Vec2f> pts;
     for (int i = 0; i < n; ++i) {
@@ -141,9 +141,7 @@ TEST(Sobol, FirstPowerOfTwoPointsAreNets) {
 TEST(Samplers, DeterministicPerPixelAndIndex) {
   for (int kind = 0; kind < 3; ++kind) {
     std::unique_ptr<Sampler> a, b;
-    if (kind == 0) a = std::make_unique<IndependentSampler>(16, 5);
-    if (kind == 1) a = std::make_unique<StratifiedSampler>(16, 5);
-    if (kind == 2) a = std::make_unique<SobolSampler>(16, 5);
+    a = std::make_unique<Sampler>(SamplerKind(kind), 16, 5);
     b = a->Clone();
     // Different visiting orders give the same numbers for the same (pixel, index, dimension).
     a->StartPixelSample({4, 2}, 7);
@@ -157,8 +155,19 @@ TEST(Samplers, DeterministicPerPixelAndIndex) {
   }
 }
 
+TEST(Sobol, ReversedFormulationGivesTheSamePoints) {
+  PCG32 g(8, 8);
+  for (int i = 0; i < 2000; ++i) {
+    uint32_t index = g.Uniform32() & 0xffff;
+    uint64_t seed = (uint64_t(g.Uniform32()) << 32) | g.Uniform32();
+    EXPECT_EQ(Sobol1Reversed(ReverseBits32(index)), ReverseBits32(Sobol1(index)));
+    EXPECT_EQ(ScrambledSobol2DReversed(ReverseBits32(index), seed), ScrambledSobol2D(index, seed));
+    EXPECT_EQ(ScrambledSobol1DReversed(ReverseBits32(index), seed), ScrambledSobol1D(index, seed));
+  }
+}
+
 TEST(Samplers, StratifiedFillsEveryStratum) {
-  StratifiedSampler s(16, 3);
+  Sampler s(SamplerKind::kStratified, 16, 3);
   std::vector<int> count(16, 0);
   for (int i = 0; i < 16; ++i) {
     s.StartPixelSample({1, 1}, i);

@@ -47,7 +47,7 @@ constexpr float kD65[kCieCount] = {
 // Position of lambda in the 10 nm tables: index and fraction, or false outside.
 bool Locate(float lambda, int* i, float* t) {
   if (!(lambda >= kLambdaMin && lambda <= kLambdaMax)) return false;
-  float x = (lambda - kLambdaMin) / 10.f;
+  float x = (lambda - kLambdaMin) * 0.1f;
   *i = std::min(int(x), kCieCount - 2);
   *t = x - *i;
   return true;

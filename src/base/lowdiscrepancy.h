@@ -60,6 +60,36 @@ inline uint32_t Sobol1(uint32_t index) {
   return t[0][index & 0xff] ^ t[1][(index >> 8) & 0xff] ^ t[2][(index >> 16) & 0xff] ^ t[3][index >> 24];
 }
 
+// The same map seen through bit reversal on both sides: Sobol1Rev(Reverse(i)) = Reverse(Sobol1(i)).
+// Tabulated directly, it lets the scrambled sampler below skip two reversals per point.
+struct Sobol1ReversedTables {
+  uint32_t t[4][256];
+  constexpr Sobol1ReversedTables() : t{} {
+    uint32_t columns[32] = {};
+    uint32_t v = 1u << 31;
+    for (int i = 0; i < 32; ++i, v ^= v >> 1) {
+      uint32_t r = 0;  // reverse the column
+      for (int b = 0; b < 32; ++b)
+        if (v & (1u << b)) r |= 1u << (31 - b);
+      columns[31 - i] = r;  // input bit i of the index is bit 31 - i of the reversed index
+    }
+    for (int b = 0; b < 4; ++b)
+      for (int x = 0; x < 256; ++x) {
+        uint32_t r = 0;
+        for (int bit = 0; bit < 8; ++bit)
+          if (x & (1 << bit)) r ^= columns[8 * b + bit];
+        t[b][x] = r;
+      }
+  }
+};
+inline constexpr Sobol1ReversedTables kSobol1ReversedTables{};
+
+inline uint32_t Sobol1Reversed(uint32_t index_reversed) {
+  const auto& t = kSobol1ReversedTables.t;
+  return t[0][index_reversed & 0xff] ^ t[1][(index_reversed >> 8) & 0xff] ^ t[2][(index_reversed >> 16) & 0xff] ^
+         t[3][index_reversed >> 24];
+}
+
 // Point `index` of the shuffled, Owen-scrambled 2D Sobol' net for a 64-bit seed. The
 // index shuffle is itself a nested uniform scramble (Burley 2020), which keeps every
 // aligned power-of-two block of indices a (0,m,2)-net. Nested scrambles are applied as
@@ -70,6 +100,22 @@ inline Vec2f ScrambledSobol2D(uint32_t index, uint64_t seed) {
   uint32_t x = ReverseBits32(LaineKarrasPermutation(shuffled, s_x));  // Sobol0 = Reverse(shuffled)
   uint32_t y = ReverseBits32(LaineKarrasPermutation(ReverseBits32(Sobol1(shuffled)), s_y));
   return {UIntToUnitFloat(x), UIntToUnitFloat(y)};
+}
+
+// The same points from the bit-reversed index (reversed once per sample by the sampler).
+// With r = LK(Reverse(index)) = Reverse(shuffled): x = Reverse(LK(Reverse(r))) and
+// y = Reverse(LK(Reverse(Sobol1(shuffled)))) = Reverse(LK(Sobol1Reversed(r))).
+inline Vec2f ScrambledSobol2DReversed(uint32_t index_reversed, uint64_t seed) {
+  uint32_t s_index = uint32_t(seed), s_x = uint32_t(seed >> 32), s_y = uint32_t(MixBits(seed));
+  uint32_t r = LaineKarrasPermutation(index_reversed, s_index);
+  uint32_t x = ReverseBits32(LaineKarrasPermutation(ReverseBits32(r), s_x));
+  uint32_t y = ReverseBits32(LaineKarrasPermutation(Sobol1Reversed(r), s_y));
+  return {UIntToUnitFloat(x), UIntToUnitFloat(y)};
+}
+
+inline float ScrambledSobol1DReversed(uint32_t index_reversed, uint64_t seed) {
+  uint32_t r = LaineKarrasPermutation(index_reversed, uint32_t(seed));
+  return UIntToUnitFloat(ReverseBits32(LaineKarrasPermutation(ReverseBits32(r), uint32_t(seed >> 32))));
 }
 
 inline float ScrambledSobol1D(uint32_t index, uint64_t seed) {

@@ -112,6 +112,10 @@ float Distribution1D::SampleContinuous(float u, float* pdf, int* cell) const {
 
 int Distribution1D::SampleDiscrete(float u, float* pmf) const {
   int n = Count();
+  if (n == 1) {  // one light, one triangle: common enough to skip the search
+    if (pmf) *pmf = 1;
+    return 0;
+  }
   int i = int(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin()) - 1;
   i = std::clamp(i, 0, n - 1);
   if (pmf) *pmf = DiscretePmf(i);

@@ -16,9 +16,10 @@ std::string ResolvePath(const Location& loc, const std::string& filename) {
 }
 
 std::unique_ptr<Sampler> MakeSampler(const SamplerSettings& s) {
-  if (s.type == "independent") return std::make_unique<IndependentSampler>(s.spp, s.seed);
-  if (s.type == "stratified") return std::make_unique<StratifiedSampler>(s.spp, s.seed);
-  return std::make_unique<SobolSampler>(s.spp, s.seed);
+  SamplerKind kind = s.type == "independent" ? SamplerKind::kIndependent
+                    : s.type == "stratified"  ? SamplerKind::kStratified
+                                              : SamplerKind::kSobol;
+  return std::make_unique<Sampler>(kind, s.spp, s.seed);
 }
 
 namespace {

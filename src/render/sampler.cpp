@@ -4,11 +4,11 @@
 
 namespace objektiv {
 
-void IndependentSampler::StartPixelSample(Vec2i pixel, int index) {
-  Sampler::StartPixelSample(pixel, index);
-  rng_.SetSequence(pixel_hash_);
-  // 2^16 numbers per sample: more than any path consumes.
-  rng_.Advance(uint64_t(index) << 16);
+Sampler::Sampler(SamplerKind kind, int spp, uint64_t seed) : kind_(kind), spp_(spp), seed_(seed) {
+  if (kind == SamplerKind::kStratified) {
+    side_ = int(std::ceil(std::sqrt(double(spp))));
+    spp_ = side_ * side_;
+  }
 }
 
 namespace {
@@ -45,21 +45,15 @@ uint32_t PermutationElement(uint32_t i, uint32_t n, uint32_t seed) {
 }
 }  // namespace
 
-StratifiedSampler::StratifiedSampler(int spp, uint64_t seed) : Sampler(spp, seed) {
-  side_ = int(std::ceil(std::sqrt(double(spp))));
-  spp_ = side_ * side_;
-}
-
-float StratifiedSampler::Get1D() {
-  uint64_t h = DimensionHash(dim_);
-  ++dim_;
+float Sampler::Stratified1D() {
+  uint64_t h = DimensionHash(dim_++);
   uint32_t n = uint32_t(spp_);
   uint32_t stratum = PermutationElement(uint32_t(index_) % n, n, uint32_t(h));
   float jitter = UIntToUnitFloat(uint32_t(MixBits(h ^ uint64_t(index_))));
   return std::min((stratum + jitter) / n, kOneMinusEpsilon);
 }
 
-Vec2f StratifiedSampler::Get2D() {
+Vec2f Sampler::Stratified2D() {
   uint64_t h = DimensionHash(dim_);
   dim_ += 2;
   uint32_t n = uint32_t(spp_);
@@ -68,18 +62,6 @@ Vec2f StratifiedSampler::Get2D() {
   uint64_t j = MixBits(h ^ uint64_t(index_));
   float dx = UIntToUnitFloat(uint32_t(j)), dy = UIntToUnitFloat(uint32_t(j >> 32));
   return {std::min((sx + dx) / side_, kOneMinusEpsilon), std::min((sy + dy) / side_, kOneMinusEpsilon)};
-}
-
-float SobolSampler::Get1D() {
-  uint64_t h = DimensionHash(dim_);
-  ++dim_;
-  return ScrambledSobol1D(uint32_t(index_), h);
-}
-
-Vec2f SobolSampler::Get2D() {
-  uint64_t h = DimensionHash(dim_);
-  dim_ += 2;
-  return ScrambledSobol2D(uint32_t(index_), h);
 }
 
 }  // namespace objektiv
