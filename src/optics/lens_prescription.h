@@ -1,0 +1,32 @@
+// A lens prescription: surfaces from the object side to the film, lengths in millimetres.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "optics/glass.h"
+
+namespace objektiv {
+
+struct LensSurface {
+  double radius = 0;          // mm; positive: centre of curvature on the film side; 0 with flat = true
+  bool flat = false;          // a plane surface (radius infinite)
+  double thickness = 0;       // mm to the next surface (the last: to the film)
+  double semi_diameter = 0;   // clear semi-diameter, mm
+  bool is_stop = false;       // the aperture stop (a plane iris, no refraction)
+  // Medium after this surface (towards the film); null means air.
+  std::shared_ptr<const Glass> medium;
+
+  double Curvature() const { return (flat || is_stop || radius == 0) ? 0.0 : 1.0 / radius; }
+  double IndexAfter(double lambda_nm) const { return medium ? medium->Index(lambda_nm) : 1.0; }
+};
+
+struct LensPrescription {
+  std::string name, source;
+  std::vector<LensSurface> surfaces;
+
+  int StopIndex() const;  // -1 if none
+  double TotalTrack() const;  // first vertex to the last (without the distance to the film)
+};
+
+}  // namespace objektiv

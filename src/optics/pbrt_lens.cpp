@@ -1,0 +1,81 @@
+#include "optics/pbrt_lens.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "base/error.h"
+
+namespace objektiv {
+
+LensPrescription ReadPbrtLens(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw MakeInputError(path, 0, "cannot open lens file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ParsePbrtLens(ss.str(), path);
+}
+
+LensPrescription ParsePbrtLens(const std::string& text, const std::string& path) {
+  LensPrescription lens;
+  lens.name = std::filesystem::path(path).stem().string();
+  lens.source = path;
+  std::istringstream lines(text);
+  std::string line;
+  int number = 0, stop_line = 0;
+  // Media are shared between rows with the same index.
+  std::map<double, std::shared_ptr<const Glass>> media;
+  while (std::getline(lines, line)) {
+    ++number;
+    size_t hash = line.find('#');
+    if (hash != std::string::npos) line.resize(hash);
+    std::istringstream tok(line);
+    std::vector<double> v;
+    std::string t;
+    while (tok >> t) {
+      char* end = nullptr;
+      errno = 0;
+      double x = std::strtod(t.c_str(), &end);
+      if (end == t.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(x))
+        throw MakeInputError(path, number, "'{}' is not a finite number", t);
+      v.push_back(x);
+    }
+    if (v.empty()) continue;
+    if (v.size() != 4)
+      throw MakeInputError(path, number, "a lens row needs 4 numbers (radius, thickness, index, aperture), got {}", v.size());
+    LensSurface s;
+    s.radius = v[0];
+    s.thickness = v[1];
+    s.semi_diameter = v[3] / 2;
+    if (v[3] <= 0) throw MakeInputError(path, number, "aperture diameter must be positive, got {}", v[3]);
+    if (s.thickness < 0) throw MakeInputError(path, number, "thickness must not be negative, got {}", s.thickness);
+    if (v[0] == 0) {
+      if (stop_line) throw MakeInputError(path, number, "a second aperture stop (radius 0; the first is on line {})", stop_line);
+      s.is_stop = true;
+      stop_line = number;
+      if (v[2] != 0 && v[2] != 1) throw MakeInputError(path, number, "the stop row must have index 0 or 1 (air)");
+    } else {
+      if (s.semi_diameter > std::abs(s.radius))
+        throw MakeInputError(path, number, "semi-diameter {} is larger than the radius {}", s.semi_diameter, s.radius);
+      if (v[2] != 0 && v[2] < 1)
+        throw MakeInputError(path, number, "index of refraction {} is below 1", v[2]);
+    }
+    double n = (v[2] == 0) ? 1 : v[2];
+    if (n != 1) {
+      auto& m = media[n];
+      if (!m) m = std::make_shared<const Glass>(Glass::Constant(n));
+      s.medium = m;
+    }
+    lens.surfaces.push_back(std::move(s));
+  }
+  if (lens.surfaces.empty()) throw MakeInputError(path, 0, "no lens surfaces");
+  if (!stop_line) throw MakeInputError(path, 0, "no aperture stop (a row with radius 0)");
+  if (lens.surfaces.back().medium) throw MakeInputError(path, number, "the last surface must leave the lens into air");
+  return lens;
+}
+
+}  // namespace objektiv

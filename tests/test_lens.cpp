@@ -1,0 +1,102 @@
+// Lens prescriptions and first-order optics.
+#include <gtest/gtest.h>
+
+#include "base/error.h"
+#include "optics/glass_catalog.h"
+#include "optics/paraxial.h"
+#include "optics/pbrt_lens.h"
+
+namespace objektiv {
+namespace {
+
+struct Published {
+  const char* file;
+  double efl, bfl;
+};
+
+TEST(Paraxial, ShippedLensesMatchTheirPublishedFocalLengths) {
+  // data/lenses/README.md: paraxial EFL and BFL at the files' indices, to 3 decimals.
+  const Published lenses[] = {{"dgauss.50mm", 50.358, 36.106},
+                              {"wide.22mm", 22.023, 14.318},
+                              {"fisheye.10mm", 9.991, 23.161},
+                              {"telephoto.250mm", 249.567, 105.070},
+                              {"tessar.brendel.100mm", 100.076, 79.895}};
+  for (const Published& p : lenses) {
+    LensPrescription lens = ReadPbrtLens(DataDirectory() + "/lenses/" + p.file + ".dat");
+    ParaxialData d = ComputeParaxial(lens);
+    EXPECT_NEAR(d.efl, p.efl, 1e-4 * p.efl) << p.file;
+    EXPECT_NEAR(d.bfl, p.bfl, 1e-4 * p.efl) << p.file;
+    EXPECT_GE(lens.StopIndex(), 0) << p.file;
+  }
+}
+
+LensPrescription Singlet(double r1, double r2, double t, double n) {
+  LensPrescription l;
+  auto glass = std::make_shared<const Glass>(Glass::Constant(n));
+  LensSurface stop;
+  stop.is_stop = true;
+  stop.semi_diameter = 5;
+  stop.thickness = 1;
+  LensSurface a, b;
+  a.radius = r1;
+  a.flat = r1 == 0;
+  a.thickness = t;
+  a.semi_diameter = 10;
+  a.medium = glass;
+  b.radius = r2;
+  b.flat = r2 == 0;
+  b.semi_diameter = 10;
+  l.surfaces = {stop, a, b};
+  return l;
+}
+
+TEST(Paraxial, ThickLensMatchesTheLensmakersEquation) {
+  for (auto [r1, r2, t, n] : {std::tuple{50.0, -50.0, 5.0, 1.5}, {30.0, 200.0, 8.0, 1.7}, {-40.0, -15.0, 3.0, 1.6}}) {
+    double phi = (n - 1) * (1 / r1 - 1 / r2 + (n - 1) * t / (n * r1 * r2));
+    double f = 1 / phi;
+    double bfl = f * (1 - (n - 1) * t / (n * r1));
+    double ffl = -f * (1 + (n - 1) * t / (n * r2));
+    ParaxialData d = ComputeParaxial(Singlet(r1, r2, t, n));
+    EXPECT_NEAR(d.efl, f, 1e-9 * std::abs(f));
+    EXPECT_NEAR(d.bfl, bfl, 1e-9 * std::abs(f));
+    // d.ffl is measured from the first row (the stop, 1 mm in front of the first refracting
+    // surface); the closed form from that surface.
+    EXPECT_NEAR(d.ffl - 1, ffl, 1e-9 * std::abs(f));
+  }
+}
+
+TEST(Paraxial, PlaneParallelPlateHasNoPower) {
+  ParaxialData d = ComputeParaxial(Singlet(0, 0, 10, 1.5));
+  EXPECT_TRUE(std::isinf(d.efl));
+}
+
+TEST(PbrtLens, BadFilesNameTheLine) {
+  struct Bad {
+    std::string text;
+    int line;
+    std::string part;
+  };
+  std::vector<Bad> cases = {
+      {"# header\n10 2 1.5 8\n0 1 0\n", 3, "needs 4 numbers"},
+      {"10 2 1.5 8\n0 1 0 6\n0 1 0 6\n-10 5 1 8\n", 3, "second aperture stop"},
+      {"10 2 1.5 8\n-10 5 1 8\n", 0, "no aperture stop"},
+      {"10 2 1.5 30\n0 1 0 6\n-10 5 1 8\n", 1, "larger than the radius"},
+      {"10 2 abc 8\n", 1, "not a finite number"},
+      {"10 2 1.5 8\n0 1 0 6\n-10 5 1 -8\n", 3, "must be positive"},
+      {"10 2 0.5 8\n0 1 0 6\n-10 5 1 8\n", 1, "below 1"},
+  };
+  for (const Bad& b : cases) {
+    try {
+      ParsePbrtLens(b.text, "bad.dat");
+      ADD_FAILURE() << "no error for:\n" << b.text;
+    } catch (const InputError& e) {
+      std::string msg = e.what();
+      std::string prefix = b.line > 0 ? "bad.dat:" + std::to_string(b.line) + ":" : "bad.dat:";
+      EXPECT_EQ(msg.rfind(prefix, 0), 0u) << msg;
+      EXPECT_NE(msg.find(b.part), std::string::npos) << msg;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace objektiv
