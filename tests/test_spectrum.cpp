@@ -163,3 +163,22 @@ TEST(Wavelengths, BundleMatchesTheScalarFormulas) {
 }
 }  // namespace
 }  // namespace objektiv
+
+#include "scene/texture.h"
+
+namespace objektiv {
+namespace {
+TEST(ConstantTexture, DenseTableFollowsTheSpectrum) {
+  for (const Spectrum& s : {Spectrum::RgbAlbedo({0.7f, 0.2f, 0.1f}), Spectrum::RgbIlluminant({17, 12, 4}), Spectrum::D65(2)}) {
+    ConstantTexture t(s);
+    for (float u : {0.f, 0.21f, 0.5f, 0.83f}) {
+      SampledWavelengths w = SampledWavelengths::SampleVisible(u);
+      SampledSpectrum v = t.Evaluate({0, 0}, w);
+      // Linear interpolation at 1 nm of smooth spectra (and the 10 nm D65 table).
+      for (int i = 0; i < kSpectrumSamples; ++i) EXPECT_NEAR(v[i], s(w[i]), 2e-4f * s.MaxValue()) << w[i];
+    }
+  }
+  EXPECT_EQ(ConstantTexture(Spectrum(0.25f)).Evaluate({0, 0}, SampledWavelengths::SampleVisible(0.4f))[2], 0.25f);
+}
+}  // namespace
+}  // namespace objektiv

@@ -2,7 +2,27 @@
 
 #include <cmath>
 
+#include "base/cie.h"
+
 namespace objektiv {
+
+ConstantTexture::ConstantTexture(Spectrum s) : s_(std::move(s)) {
+  if (s_.IsConstant()) return;
+  dense_.resize(size_t(kLambdaMax - kLambdaMin) + 2);
+  for (size_t i = 0; i < dense_.size(); ++i) dense_[i] = s_(kLambdaMin + float(i));
+}
+
+SampledSpectrum ConstantTexture::Evaluate(Vec2f, const SampledWavelengths& lambda) const {
+  if (dense_.empty()) return SampledSpectrum(s_.ConstantValue());
+  SampledSpectrum r;
+  for (int i = 0; i < kSpectrumSamples; ++i) {
+    float x = Clamp(lambda[i] - kLambdaMin, 0, kLambdaMax - kLambdaMin);
+    int k = int(x);
+    float t = x - float(k);
+    r[i] = dense_[k] + t * (dense_[k + 1] - dense_[k]);
+  }
+  return r;
+}
 
 Vec3f ConstantTexture::MeanRgb() const { return s_.IsConstant() ? Vec3f(s_.ConstantValue()) : SpectrumToRgb(s_); }
 

@@ -1,6 +1,7 @@
 // Textures: spectral values (reflectances, emission) or floats as functions of the surface point.
 #pragma once
 #include <memory>
+#include <vector>
 
 #include "base/image.h"
 #include "base/sampled_spectrum.h"
@@ -21,14 +22,18 @@ class SpectrumTexture {
   virtual Vec3f MeanRgb() const = 0;
 };
 
+// A spectrum that does not vary over the surface, tabulated at 1 nm over 360-830 nm when it
+// is built (as pbrt's DenselySampledSpectrum), so that a lookup costs a linear interpolation
+// instead of evaluating a sigmoid polynomial or an illuminant table per wavelength.
 class ConstantTexture final : public SpectrumTexture {
  public:
-  explicit ConstantTexture(Spectrum s) : s_(std::move(s)) {}
-  SampledSpectrum Evaluate(Vec2f, const SampledWavelengths& lambda) const override { return s_.Sample(lambda); }
+  explicit ConstantTexture(Spectrum s);
+  SampledSpectrum Evaluate(Vec2f, const SampledWavelengths& lambda) const override;
   Vec3f MeanRgb() const override;
 
  private:
   Spectrum s_;
+  std::vector<float> dense_;  // empty for constant spectra
 };
 
 // Mitsuba's checkerboard: color0 where floor(u*2)+floor(v*2) is even, color1 otherwise,
