@@ -100,3 +100,83 @@ TEST(PbrtLens, BadFilesNameTheLine) {
 
 }  // namespace
 }  // namespace objektiv
+
+#include "optics/lens_file.h"
+
+namespace objektiv {
+namespace {
+
+TEST(NativeLens, TessarWithCatalogGlassesHasItsPatentFocalLength) {
+  // data/lenses/README.md: with HIKARI LAK9, OHARA PBL7 and HIKARI SF7, EFL 100.00 mm and
+  // BFL 79.82 mm at the d line.
+  LensPrescription t = LoadLens("tessar.brendel.100mm");
+  ASSERT_EQ(t.surfaces.size(), 8u);
+  EXPECT_EQ(t.StopIndex(), 3);
+  ParaxialData d = ComputeParaxial(t, 587.5618);
+  EXPECT_NEAR(d.efl, 100.00, 0.005);
+  EXPECT_NEAR(d.bfl, 79.82, 0.005);
+  EXPECT_EQ(t.design_focal_length, 100);
+  // Dispersion: blue focuses closer than red (undercorrected axial colour of a simple design
+  // would be larger; the Tessar is achromatised, so the difference is small but present).
+  EXPECT_NE(ComputeParaxial(t, 486.1327).bfl, ComputeParaxial(t, 656.2725).bfl);
+}
+
+TEST(NativeLens, ShippedLensesAreFoundByName) {
+  std::vector<std::string> names = ShippedLensNames();
+  for (const char* n : {"dgauss.50mm", "wide.22mm", "fisheye.10mm", "telephoto.250mm", "tessar.brendel.100mm"})
+    EXPECT_NE(std::find(names.begin(), names.end(), n), names.end()) << n;
+  EXPECT_THROW(LoadLens("no.such.lens"), InputError);
+}
+
+TEST(NativeLens, BadFilesNameTheLine) {
+  struct Bad {
+    std::string text;
+    int line;
+    std::string part;
+  };
+  const std::string stop = "stop 2 air 5\n";
+  std::vector<Bad> cases = {
+      {"surface 50 5 N-NOPE 10\n" + stop + "surface -50 40 air 10\n", 1, "unknown glass"},
+      {"surface 50 5 N-BK7 10\nsurface -50 40 air 10\n", 0, "no stop"},
+      {stop + stop + "surface 50 5 N-BK7 10\nsurface -50 40 air 10\n", 2, "second stop"},
+      {stop + "surface 8 5 N-BK7 10\nsurface -50 40 air 10\n", 2, "larger than the surface can reach"},
+      {stop + "surface 50 5 N-BK7 10 k=abc\nsurface -50 40 air 10\n", 2, "not a finite number"},
+      {stop + "surface 50 5 N-BK7 10 a5=1\nsurface -50 40 air 10\n", 2, "a4, a6"},
+      {stop + "surface 50 5 N-BK7 10\nsurface -50 40 N-BK7 10\n", 3, "into air"},
+      {"focal: 50\n" + stop, 1, "unknown key"},
+      {stop + "lens 50 5 air 10\n", 2, "unknown line"},
+      {stop + "surface 0 5 N-BK7 10\n", 2, "write inf"},
+      {stop + "surface 50 5 nd=1.5 10\nsurface -50 40 air 10\n", 2, "nd=N,vd=V"},
+  };
+  for (const Bad& b : cases) {
+    try {
+      ParseNativeLens(b.text, "bad.lens");
+      ADD_FAILURE() << "no error for:\n" << b.text;
+    } catch (const InputError& e) {
+      std::string msg = e.what();
+      std::string prefix = b.line > 0 ? "bad.lens:" + std::to_string(b.line) + ":" : "bad.lens:";
+      EXPECT_EQ(msg.rfind(prefix, 0), 0u) << msg;
+      EXPECT_NE(msg.find(b.part), std::string::npos) << msg;
+    }
+  }
+}
+
+TEST(NativeLens, ConicsAspheresCurvaturesAndModelGlasses) {
+  LensPrescription l = ParseNativeLens(
+      "stop 1 air 4\nsurface c=0.02 5 nd=1.5168,vd=64.17 10 k=-1 a4=1e-6 a6=-2e-9 coating=MgF2\n"
+      "surface inf 40 air 10\n",
+      "ok.lens");
+  ASSERT_EQ(l.surfaces.size(), 3u);
+  EXPECT_NEAR(l.surfaces[1].radius, 50, 1e-12);
+  EXPECT_EQ(l.surfaces[1].conic, -1);
+  EXPECT_EQ(l.surfaces[1].aspheric[0], 1e-6);
+  EXPECT_EQ(l.surfaces[1].aspheric[1], -2e-9);
+  EXPECT_EQ(l.surfaces[1].coating, "MgF2");
+  EXPECT_TRUE(l.surfaces[2].flat);
+  EXPECT_NEAR(l.surfaces[1].medium->ComputedNd(), 1.5168, 1e-12);
+  // Plano-convex with the flat side toward the film: EFL = R / (n - 1).
+  EXPECT_NEAR(ComputeParaxial(l, 587.5618).efl, 50 / 0.5168, 1e-9);
+}
+
+}  // namespace
+}  // namespace objektiv

@@ -1,5 +1,6 @@
 // A lens prescription: surfaces from the object side to the film, lengths in millimetres.
 #pragma once
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,6 +15,9 @@ struct LensSurface {
   double thickness = 0;       // mm to the next surface (the last: to the film)
   double semi_diameter = 0;   // clear semi-diameter, mm
   bool is_stop = false;       // the aperture stop (a plane iris, no refraction)
+  double conic = 0;           // k: 0 sphere, -1 paraboloid
+  std::array<double, 7> aspheric{};  // even aspheric coefficients a4, a6, ..., a16
+  std::string coating;        // anti-reflection coating name (empty: uncoated)
   // Medium after this surface (towards the film); null means air.
   std::shared_ptr<const Glass> medium;
 
@@ -23,6 +27,7 @@ struct LensSurface {
 
 struct LensPrescription {
   std::string name, source;
+  double design_focal_length = 0, design_fnumber = 0, image_circle = 0;  // metadata (0: not given)
   std::vector<LensSurface> surfaces;
 
   int StopIndex() const;  // -1 if none

@@ -1,0 +1,176 @@
+#include "optics/lens_file.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "base/error.h"
+#include "optics/glass_catalog.h"
+#include "optics/pbrt_lens.h"
+
+namespace objektiv {
+namespace {
+
+namespace fs = std::filesystem;
+
+double ParseNumber(const std::string& s, const std::string& path, int line) {
+  char* end = nullptr;
+  errno = 0;
+  double v = std::strtod(s.c_str(), &end);
+  if (end == s.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+    throw MakeInputError(path, line, "'{}' is not a finite number", s);
+  return v;
+}
+
+std::shared_ptr<const Glass> ParseMedium(const std::string& m, const std::string& path, int line) {
+  if (m == "air") return nullptr;
+  if (m.rfind("n=", 0) == 0) {
+    double n = ParseNumber(m.substr(2), path, line);
+    if (n < 1) throw MakeInputError(path, line, "index {} is below 1", n);
+    return std::make_shared<const Glass>(Glass::Constant(n));
+  }
+  if (m.rfind("nd=", 0) == 0) {
+    size_t comma = m.find(",vd=");
+    if (comma == std::string::npos) throw MakeInputError(path, line, "a model glass is written nd=N,vd=V, got '{}'", m);
+    double nd = ParseNumber(m.substr(3, comma - 3), path, line), vd = ParseNumber(m.substr(comma + 4), path, line);
+    if (nd < 1 || vd <= 0) throw MakeInputError(path, line, "model glass needs nd >= 1 and vd > 0");
+    return std::make_shared<const Glass>(Glass::Model(nd, vd));
+  }
+  const Glass* g = GlassCatalog::Default().Find(m);
+  if (!g) throw MakeInputError(path, line, "unknown glass '{}' (a catalog glass, air, n=..., or nd=...,vd=...)", m);
+  // Catalog glasses live as long as the program: share without owning.
+  return std::shared_ptr<const Glass>(std::shared_ptr<const Glass>(), g);
+}
+
+// Largest semi-diameter a conic surface reaches before its sag turns over: r^2 (1+k) c^2 < 1.
+void CheckReachable(const LensSurface& s, const std::string& path, int line) {
+  double c = s.Curvature();
+  if (c == 0 || s.conic <= -1) return;
+  double limit = 1 / (std::abs(c) * std::sqrt(1 + s.conic));
+  if (s.semi_diameter > limit)
+    throw MakeInputError(path, line, "semi-diameter {} is larger than the surface can reach ({:.4g})", s.semi_diameter, limit);
+}
+
+}  // namespace
+
+LensPrescription ParseNativeLens(const std::string& text, const std::string& path) {
+  LensPrescription lens;
+  lens.name = fs::path(path).stem().string();
+  lens.source = path;
+  std::istringstream lines(text);
+  std::string line;
+  int number = 0, stop_line = 0, last_line = 0;
+  while (std::getline(lines, line)) {
+    ++number;
+    if (size_t h = line.find('#'); h != std::string::npos) line.resize(h);
+    std::istringstream tok(line);
+    std::vector<std::string> f;
+    for (std::string t; tok >> t;) f.push_back(t);
+    if (f.empty()) continue;
+    if (f[0].back() == ':') {
+      if (!lens.surfaces.empty()) throw MakeInputError(path, number, "metadata must come before the surfaces");
+      std::string key = f[0].substr(0, f[0].size() - 1), value;
+      for (size_t i = 1; i < f.size(); ++i) value += (i > 1 ? " " : "") + f[i];
+      if (key == "name") lens.name = value;
+      else if (key == "source") lens.source = value;
+      else if (key == "focal_length") lens.design_focal_length = ParseNumber(value, path, number);
+      else if (key == "fnumber") lens.design_fnumber = ParseNumber(value, path, number);
+      else if (key == "image_circle") lens.image_circle = ParseNumber(value, path, number);
+      else throw MakeInputError(path, number, "unknown key '{}' (name, source, focal_length, fnumber, image_circle)", key);
+      continue;
+    }
+    LensSurface s;
+    size_t next;
+    if (f[0] == "stop") {
+      if (f.size() != 4) throw MakeInputError(path, number, "a stop line is: stop THICKNESS MEDIUM SEMI_DIAMETER");
+      if (stop_line) throw MakeInputError(path, number, "a second stop (the first is on line {})", stop_line);
+      s.is_stop = true;
+      s.flat = true;
+      stop_line = number;
+      next = 1;
+    } else if (f[0] == "surface") {
+      if (f.size() < 5) throw MakeInputError(path, number, "a surface line is: surface RADIUS THICKNESS MEDIUM SEMI_DIAMETER [options]");
+      if (f[1] == "inf" || f[1] == "c=0") {
+        s.flat = true;
+      } else if (f[1].rfind("c=", 0) == 0) {
+        s.radius = 1 / ParseNumber(f[1].substr(2), path, number);
+      } else {
+        s.radius = ParseNumber(f[1], path, number);
+        if (s.radius == 0) throw MakeInputError(path, number, "radius 0: write inf for a plane (the stop is its own line)");
+      }
+      next = 2;
+    } else {
+      throw MakeInputError(path, number, "unknown line '{}' (surface, stop, or key: value)", f[0]);
+    }
+    s.thickness = ParseNumber(f[next], path, number);
+    if (s.thickness < 0) throw MakeInputError(path, number, "thickness must not be negative");
+    s.medium = ParseMedium(f[next + 1], path, number);
+    s.semi_diameter = ParseNumber(f[next + 2], path, number);
+    if (!(s.semi_diameter > 0)) throw MakeInputError(path, number, "semi-diameter must be positive");
+    for (size_t i = next + 3; i < f.size(); ++i) {
+      if (s.is_stop) throw MakeInputError(path, number, "the stop takes no options");
+      size_t eq = f[i].find('=');
+      if (eq == std::string::npos) throw MakeInputError(path, number, "option '{}' is not key=value", f[i]);
+      std::string key = f[i].substr(0, eq), value = f[i].substr(eq + 1);
+      if (key == "k") {
+        s.conic = ParseNumber(value, path, number);
+      } else if (key == "coating") {
+        s.coating = value;
+      } else if (key.size() >= 2 && key[0] == 'a' && std::all_of(key.begin() + 1, key.end(), ::isdigit)) {
+        int order = std::atoi(key.c_str() + 1);
+        if (order < 4 || order > 16 || order % 2) throw MakeInputError(path, number, "aspheric terms are a4, a6, ..., a16");
+        s.aspheric[(order - 4) / 2] = ParseNumber(value, path, number);
+      } else {
+        throw MakeInputError(path, number, "unknown option '{}' (k, a4..a16, coating)", key);
+      }
+    }
+    CheckReachable(s, path, number);
+    lens.surfaces.push_back(std::move(s));
+    last_line = number;
+  }
+  if (lens.surfaces.empty()) throw MakeInputError(path, 0, "no surfaces");
+  if (!stop_line) throw MakeInputError(path, 0, "no stop line");
+  if (lens.surfaces.back().medium) throw MakeInputError(path, last_line, "the last surface must leave the lens into air");
+  return lens;
+}
+
+LensPrescription ReadLensFile(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  if (ext == ".dat") return ReadPbrtLens(path);
+  if (ext != ".lens") throw MakeInputError(path, 0, "unknown lens file type '{}' (.lens or .dat)", ext);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw MakeInputError(path, 0, "cannot open lens file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ParseNativeLens(ss.str(), path);
+}
+
+LensPrescription LoadLens(const std::string& name) {
+  if (fs::exists(name)) return ReadLensFile(name);
+  for (const char* ext : {".lens", ".dat"}) {
+    fs::path p = fs::path(DataDirectory()) / "lenses" / (name + ext);
+    if (fs::exists(p)) return ReadLensFile(p.string());
+  }
+  std::string known;
+  for (const std::string& n : ShippedLensNames()) known += (known.empty() ? "" : ", ") + n;
+  throw InputError(fmt::format("{}: no such lens file or shipped lens (shipped: {})", name, known));
+}
+
+std::vector<std::string> ShippedLensNames() {
+  std::vector<std::string> names;
+  fs::path dir = fs::path(DataDirectory()) / "lenses";
+  if (!fs::exists(dir)) return names;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    std::string ext = e.path().extension().string();
+    if (ext == ".lens" || ext == ".dat") names.push_back(e.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  return names;
+}
+
+}  // namespace objektiv
