@@ -1,0 +1,173 @@
+#include "optics/lens_tracer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace objektiv {
+
+LensTracer::LensTracer(LensPrescription lens) : lens_(std::move(lens)) {
+  double z = 0;
+  for (const LensSurface& s : lens_.surfaces) {
+    vertex_z_.push_back(z);
+    z += s.thickness;
+  }
+  film_z_ = z;
+  int stop = lens_.StopIndex();
+  stop_semi_ = stop >= 0 ? lens_.surfaces[stop].semi_diameter : 0;
+}
+
+void LensTracer::SetStopSemiDiameter(double r) {
+  int stop = lens_.StopIndex();
+  if (stop < 0) return;
+  stop_semi_ = std::clamp(r, 0.0, lens_.surfaces[stop].semi_diameter);
+}
+
+double LensTracer::StopSemiDiameter() const { return stop_semi_; }
+
+double LensTracer::Sag(int i, double r) const {
+  const LensSurface& s = lens_.surfaces[i];
+  double c = s.Curvature(), r2 = r * r;
+  double z = 0;
+  if (c != 0) {
+    double arg = 1 - (1 + s.conic) * c * c * r2;
+    z = c * r2 / (1 + std::sqrt(std::max(arg, 0.0)));
+  }
+  double rp = r2 * r2;  // r^4
+  for (double a : s.aspheric) {
+    z += a * rp;
+    rp *= r2;
+  }
+  return z;
+}
+
+double LensTracer::SagSlope(int i, double r) const {
+  const LensSurface& s = lens_.surfaces[i];
+  double c = s.Curvature(), r2 = r * r;
+  double dz = 0;
+  if (c != 0) {
+    double arg = 1 - (1 + s.conic) * c * c * r2;
+    dz = c * r / std::sqrt(std::max(arg, 1e-300));
+  }
+  double rp = r2 * r;  // r^3
+  int order = 4;
+  for (double a : s.aspheric) {
+    dz += order * a * rp;
+    rp *= r2;
+    order += 2;
+  }
+  return dz;
+}
+
+Vec3d LensTracer::Normal(int i, const Vec3d& p) const {
+  double r = std::sqrt(p.x * p.x + p.y * p.y);
+  if (r == 0) return {0, 0, 1};
+  double slope = SagSlope(i, r);
+  Vec3d n(-slope * p.x / r, -slope * p.y / r, 1);
+  return n / Length(n);
+}
+
+std::optional<double> LensTracer::Intersect(int i, const LensRay& ray) const {
+  const LensSurface& s = lens_.surfaces[i];
+  Vec3d o = ray.o - Vec3d(0, 0, vertex_z_[i]);  // relative to the vertex
+  const Vec3d& d = ray.d;
+  double c = s.Curvature();
+  bool aspheric = std::any_of(s.aspheric.begin(), s.aspheric.end(), [](double a) { return a != 0; });
+  double t;
+  if (c == 0) {
+    if (d.z == 0) return std::nullopt;
+    t = -o.z / d.z;
+  } else {
+    // Conic through the vertex: c (x^2 + y^2) + (1 + k) c z^2 - 2 z = 0.
+    double k1 = 1 + s.conic;
+    double A = c * (d.x * d.x + d.y * d.y) + k1 * c * d.z * d.z;
+    double B = 2 * (c * (o.x * d.x + o.y * d.y) + k1 * c * o.z * d.z - d.z);
+    double C = c * (o.x * o.x + o.y * o.y) + k1 * c * o.z * o.z - 2 * o.z;
+    double disc = B * B - 4 * A * C;
+    if (disc < 0) return std::nullopt;
+    // Of the two roots, the one on the sheet through the vertex (sag continuous from 0).
+    double q = B < 0 ? -0.5 * (B - std::sqrt(disc)) : -0.5 * (B + std::sqrt(disc));
+    double roots[2] = {q != 0 ? C / q : -C / B, A != 0 ? q / A : std::numeric_limits<double>::infinity()};
+    double best = std::numeric_limits<double>::infinity(), best_err = best;
+    for (double tr : roots) {
+      if (!std::isfinite(tr)) continue;
+      Vec3d p = o + d * tr;
+      double r = std::sqrt(p.x * p.x + p.y * p.y);
+      if (k1 * c * c * r * r > 1) continue;
+      double err = std::abs(p.z - Sag(i, r));
+      if (err < best_err) {
+        best_err = err;
+        best = tr;
+      }
+    }
+    if (!std::isfinite(best) || best_err > 1e-6 * (1 + std::abs(1 / c))) return std::nullopt;
+    t = best;
+  }
+  if (aspheric) {
+    // Newton on f(t) = z(t) - sag(r(t)), from the conic's (or plane's) intersection.
+    for (int it = 0; it < 60; ++it) {
+      Vec3d p = o + d * t;
+      double r = std::sqrt(p.x * p.x + p.y * p.y);
+      if (c != 0 && (1 + s.conic) * c * c * r * r > 1) return std::nullopt;
+      double f = p.z - Sag(i, r);
+      double drdt = r > 0 ? (p.x * d.x + p.y * d.y) / r : 0;
+      double df = d.z - SagSlope(i, r) * drdt;
+      if (df == 0) return std::nullopt;
+      double step = f / df;
+      t -= step;
+      if (std::abs(step) < 1e-13 * (1 + std::abs(t))) break;
+      if (it == 59) return std::nullopt;
+    }
+  }
+  return t;
+}
+
+TraceResult LensTracer::Trace(const LensRay& in, double lambda_nm, bool from_film) const {
+  const int n = int(lens_.surfaces.size());
+  LensRay ray = in;
+  TraceResult result;
+  for (int k = 0; k < n; ++k) {
+    int i = from_film ? n - 1 - k : k;
+    const LensSurface& s = lens_.surfaces[i];
+    std::optional<double> t = Intersect(i, ray);
+    if (!t || *t < -1e-9) {
+      result.failure = TraceFailure::kMissedSurface;
+      result.surface = i;
+      return result;
+    }
+    Vec3d p = ray.o + ray.d * *t;
+    double r = std::sqrt(p.x * p.x + p.y * p.y);
+    double limit = s.is_stop ? stop_semi_ : s.semi_diameter;
+    if (r > limit) {
+      result.failure = TraceFailure::kClipped;
+      result.surface = i;
+      return result;
+    }
+    ray.o = p;
+    if (s.is_stop) continue;
+    // Indices on the incoming and outgoing sides.
+    double n_object_side = i > 0 ? lens_.surfaces[i - 1].IndexAfter(lambda_nm) : 1.0;
+    double n_film_side = s.IndexAfter(lambda_nm);
+    double n1 = from_film ? n_film_side : n_object_side, n2 = from_film ? n_object_side : n_film_side;
+    if (n1 == n2) continue;
+    // Vector Snell's law with the normal facing the incoming ray.
+    Vec3d nrm = Normal(i, p);
+    if (Dot(nrm, ray.d) > 0) nrm = -nrm;
+    double eta = n1 / n2, cos_i = -Dot(nrm, ray.d);
+    double k2 = 1 - eta * eta * (1 - cos_i * cos_i);
+    if (k2 < 0) {
+      result.failure = TraceFailure::kTotalInternalReflection;
+      result.surface = i;
+      return result;
+    }
+    ray.d = ray.d * eta + nrm * (eta * cos_i - std::sqrt(k2));
+    ray.d = ray.d / Length(ray.d);
+  }
+  result.ray = ray;
+  return result;
+}
+
+TraceResult LensTracer::TraceFromObject(const LensRay& ray, double lambda_nm) const { return Trace(ray, lambda_nm, false); }
+TraceResult LensTracer::TraceFromFilm(const LensRay& ray, double lambda_nm) const { return Trace(ray, lambda_nm, true); }
+
+}  // namespace objektiv

@@ -1,0 +1,58 @@
+// Exact sequential ray tracing through a prescription, in double precision (for analysis).
+// Lens space: millimetres, z along the optical axis toward the film, the first vertex at z = 0.
+#pragma once
+#include <optional>
+#include <vector>
+
+#include "base/vec.h"
+#include "optics/lens_prescription.h"
+
+namespace objektiv {
+
+struct LensRay {
+  Vec3d o, d;  // d unit length
+};
+
+enum class TraceFailure { kNone, kMissedSurface, kClipped, kTotalInternalReflection };
+
+struct TraceResult {
+  std::optional<LensRay> ray;  // the ray after the last surface traced, if it got through
+  TraceFailure failure = TraceFailure::kNone;
+  int surface = -1;            // where it failed
+};
+
+class LensTracer {
+ public:
+  explicit LensTracer(LensPrescription lens);
+
+  // From the object side through every surface toward the film.
+  TraceResult TraceFromObject(const LensRay& ray, double lambda_nm) const;
+  // From the film through every surface toward the object.
+  TraceResult TraceFromFilm(const LensRay& ray, double lambda_nm) const;
+
+  // The stop's semi-diameter may be narrowed (never widened) to set an f-number.
+  void SetStopSemiDiameter(double r);
+  double StopSemiDiameter() const;
+
+  // Moves the film to `distance` mm behind the last vertex (the last thickness).
+  void SetBackFocus(double distance) { film_z_ = vertex_z_.back() + distance; }
+  const LensPrescription& lens() const { return lens_; }
+  double VertexZ(int i) const { return vertex_z_[i]; }
+  double FilmZ() const { return film_z_; }
+  // Sag z(r) of surface i relative to its vertex, and dz/dr.
+  double Sag(int i, double r) const;
+  double SagSlope(int i, double r) const;
+
+ private:
+  // Intersect with surface i (ray in lens space); returns the parameter t or nothing.
+  std::optional<double> Intersect(int i, const LensRay& ray) const;
+  Vec3d Normal(int i, const Vec3d& p) const;  // unit, pointing toward +z
+  TraceResult Trace(const LensRay& ray, double lambda_nm, bool from_film) const;
+
+  LensPrescription lens_;
+  std::vector<double> vertex_z_;
+  double film_z_ = 0;
+  double stop_semi_ = 0;
+};
+
+}  // namespace objektiv

@@ -1,0 +1,120 @@
+// Exact tracing through lenses against first-order optics and exact geometry.
+#include <gtest/gtest.h>
+
+#include "optics/lens_file.h"
+#include "optics/lens_tracer.h"
+#include "optics/paraxial.h"
+
+namespace objektiv {
+namespace {
+
+LensPrescription Parse(const std::string& text) { return ParseNativeLens(text, "test.lens"); }
+
+TEST(LensTracer, PlaneParallelPlateDeviatesNoRay) {
+  LensTracer plate(Parse("stop 1 air 20\nsurface inf 10 N-SF11 20\nsurface inf 5 air 20\n"));
+  for (double angle : {0.0, 5.0, 20.0, 40.0}) {
+    double a = angle * M_PI / 180;
+    LensRay in{{1, -2, -10}, Normalize(Vec3d(std::sin(a), 0.3 * std::sin(a), std::cos(a)))};
+    for (double lambda : {450.0, 550.0, 650.0}) {
+      TraceResult r = plate.TraceFromObject(in, lambda);
+      ASSERT_TRUE(r.ray);
+      EXPECT_NEAR(r.ray->d.x, in.d.x, 1e-14);
+      EXPECT_NEAR(r.ray->d.y, in.d.y, 1e-14);
+      EXPECT_NEAR(r.ray->d.z, in.d.z, 1e-14);
+    }
+  }
+}
+
+TEST(LensTracer, SmallHeightRaysMeetTheParaxialFocus) {
+  for (const char* name : {"dgauss.50mm", "wide.22mm", "fisheye.10mm", "telephoto.250mm", "tessar.brendel.100mm"}) {
+    LensPrescription lens = LoadLens(name);
+    ParaxialData p = ComputeParaxial(lens, 587.5618);
+    LensTracer tracer(lens);
+    // A ray parallel to the axis at a height far below the aperture: aberrations ~ h^2 vanish.
+    double h = 1e-4;
+    TraceResult r = tracer.TraceFromObject({{h, 0, -20}, {0, 0, 1}}, 587.5618);
+    ASSERT_TRUE(r.ray) << name;
+    double z_cross = r.ray->o.z - r.ray->o.x * r.ray->d.z / r.ray->d.x;
+    double bfl = z_cross - tracer.VertexZ(int(lens.surfaces.size()) - 1);
+    EXPECT_NEAR(bfl, p.bfl, 1e-6 * p.efl) << name;
+    // EFL from the exit angle: h / tan(u').
+    EXPECT_NEAR(-h / (r.ray->d.x / r.ray->d.z), p.efl, 1e-6 * p.efl) << name;
+  }
+}
+
+TEST(LensTracer, FilmToObjectAndBackReturnsTheRay) {
+  for (const char* name : {"dgauss.50mm", "tessar.brendel.100mm", "wide.22mm"}) {
+    LensPrescription lens = LoadLens(name);
+    LensTracer tracer(lens);
+    tracer.SetBackFocus(ComputeParaxial(lens).bfl);  // pbrt files leave the film at the last vertex
+    int got = 0;
+    for (int i = 0; i < 50; ++i) {
+      double fx = 0.3 * (i % 7) - 1, fy = 0.2 * (i % 5);
+      Vec3d film(fx, fy, tracer.FilmZ());
+      Vec3d target(0.9 * std::cos(i), 0.9 * std::sin(i), tracer.VertexZ(int(tracer.lens().surfaces.size()) - 1));
+      LensRay out{film, Normalize(target - film)};
+      TraceResult a = tracer.TraceFromFilm(out, 550);
+      if (!a.ray) continue;
+      ++got;
+      // Reverse the exiting ray and trace it back toward the film.
+      TraceResult b = tracer.TraceFromObject({a.ray->o + a.ray->d * 30.0, a.ray->d * -1.0}, 550);
+      ASSERT_TRUE(b.ray) << name;
+      Vec3d back = b.ray->o + b.ray->d * ((tracer.FilmZ() - b.ray->o.z) / b.ray->d.z);
+      EXPECT_NEAR(back.x, film.x, 1e-9) << name;
+      EXPECT_NEAR(back.y, film.y, 1e-9) << name;
+      EXPECT_NEAR(Dot(b.ray->d, out.d * -1.0), 1, 1e-12) << name;
+    }
+    EXPECT_GT(got, 25) << name;
+  }
+}
+
+TEST(LensTracer, HyperbolicSingletFocusesPerfectly) {
+  // Flat front, exit surface with conic -n^2: a collimated beam in glass leaving a hyperbola
+  // of eccentricity n meets at its focus, |R| / (n - 1) behind the vertex.
+  const double n = 1.5, R = -50;
+  LensTracer t(Parse("stop 0 air 12\nsurface inf 8 n=1.5 12\nsurface -50 100 air 12 k=-2.25\n"));
+  EXPECT_NEAR(t.FilmZ() - t.VertexZ(2), -R / (n - 1), 1e-12);
+  double worst = 0;
+  for (int i = 0; i <= 20; ++i)
+    for (int j = 0; j < 8; ++j) {
+      double r = 11.5 * i / 20, phi = j * M_PI / 4;
+      TraceResult res = t.TraceFromObject({{r * std::cos(phi), r * std::sin(phi), -5}, {0, 0, 1}}, 587.6);
+      ASSERT_TRUE(res.ray);
+      Vec3d p = res.ray->o + res.ray->d * ((t.FilmZ() - res.ray->o.z) / res.ray->d.z);
+      worst = std::max(worst, std::hypot(p.x, p.y));
+    }
+  EXPECT_LT(worst, 1e-3);  // below 1 um (in practice ~1e-12 mm)
+  // The same singlet with a spherical exit surface has plain spherical aberration.
+  LensTracer sphere(Parse("stop 0 air 12\nsurface inf 8 n=1.5 12\nsurface -50 100 air 12\n"));
+  TraceResult edge = sphere.TraceFromObject({{11.5, 0, -5}, {0, 0, 1}}, 587.6);
+  ASSERT_TRUE(edge.ray);
+  Vec3d p = edge.ray->o + edge.ray->d * ((sphere.FilmZ() - edge.ray->o.z) / edge.ray->d.z);
+  EXPECT_GT(std::abs(p.x), 0.1);
+}
+
+TEST(LensTracer, AperturesClipAndTotalInternalReflectionStops) {
+  LensTracer t(LoadLens("dgauss.50mm"));
+  // Far outside the front element: clipped at the first surface.
+  TraceResult r = t.TraceFromObject({{20, 0, -10}, {0, 0, 1}}, 550);
+  EXPECT_FALSE(r.ray);
+  EXPECT_EQ(r.failure, TraceFailure::kClipped);
+  EXPECT_EQ(r.surface, 0);
+  // Narrowing the stop clips a marginal ray that passed before.
+  TraceResult wide = t.TraceFromObject({{10, 0, -10}, {0, 0, 1}}, 550);
+  ASSERT_TRUE(wide.ray);
+  t.SetStopSemiDiameter(2);
+  TraceResult narrow = t.TraceFromObject({{10, 0, -10}, {0, 0, 1}}, 550);
+  EXPECT_FALSE(narrow.ray);
+  EXPECT_EQ(narrow.surface, t.lens().StopIndex());
+  // Glass to air beyond the critical angle (41.8 degrees for n = 1.5): a ray inside glass at
+  // 60 degrees cannot leave through a plane face.
+  Vec3d steep = Normalize(Vec3d(std::sin(M_PI / 3), 0, std::cos(M_PI / 3)));
+  // Only the exit face, with glass in front of it (the stop sits inside the glass).
+  LensTracer exit_face(Parse("stop 0 n=1.5 50\nsurface inf 5 air 50\n"));
+  TraceResult tir = exit_face.TraceFromObject({{0, 0, -1}, steep}, 550);
+  EXPECT_FALSE(tir.ray);
+  EXPECT_EQ(tir.failure, TraceFailure::kTotalInternalReflection);
+}
+
+}  // namespace
+}  // namespace objektiv
