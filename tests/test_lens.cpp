@@ -180,3 +180,72 @@ TEST(NativeLens, ConicsAspheresCurvaturesAndModelGlasses) {
 
 }  // namespace
 }  // namespace objektiv
+
+namespace objektiv {
+namespace {
+
+struct PupilData {
+  const char* file;
+  double epd, ep_position, fnumber;
+};
+
+TEST(Paraxial, PupilsMatchThePublishedValues) {
+  // data/lenses/README.md: EPD, entrance pupil behind the first vertex, f-number = EFL / EPD.
+  const PupilData lenses[] = {{"dgauss.50mm", 24.805, 19.95, 2.03},
+                              {"wide.22mm", 8.206, 12.09, 2.68},
+                              {"fisheye.10mm", 2.532, 11.54, 3.95},
+                              {"telephoto.250mm", 46.016, 15.29, 5.42},
+                              {"tessar.brendel.100mm", 36.651, 13.84, 2.73}};
+  for (const PupilData& p : lenses) {
+    ParaxialData d = ComputeParaxial(ReadPbrtLens(DataDirectory() + "/lenses/" + p.file + ".dat"));
+    EXPECT_NEAR(d.entrance_pupil_diameter, p.epd, 0.0015) << p.file;
+    EXPECT_NEAR(d.entrance_pupil_position, p.ep_position, 0.006) << p.file;
+    EXPECT_NEAR(d.fnumber, p.fnumber, 0.006) << p.file;
+  }
+}
+
+TEST(Paraxial, PupilsOfAThinLensWithAStopBehind) {
+  // Stop d behind a thin lens: the entrance pupil is the stop seen through the lens, virtual
+  // at d f / (f - d) behind it, magnified f / (f - d).
+  const double f = 100, dist = 30, semi = 5;
+  LensPrescription l;
+  auto glass = std::make_shared<const Glass>(Glass::Constant(1.5));
+  LensSurface a, b, stop;
+  a.radius = 100;
+  a.medium = glass;
+  a.semi_diameter = 20;
+  b.radius = -100;
+  b.thickness = dist;
+  b.semi_diameter = 20;
+  stop.is_stop = true;
+  stop.semi_diameter = semi;
+  stop.thickness = 50;
+  l.surfaces = {a, b, stop};
+  ParaxialData d = ComputeParaxial(l);
+  EXPECT_NEAR(d.efl, f, 1e-9);
+  EXPECT_NEAR(d.entrance_pupil_position, dist * f / (f - dist), 1e-9);
+  EXPECT_NEAR(d.entrance_pupil_diameter, 2 * semi * f / (f - dist), 1e-9);
+  EXPECT_NEAR(d.exit_pupil_position, 0, 1e-12);
+}
+
+TEST(Paraxial, PupilsOfAThinLensWithAStopInFront) {
+  // A thin lens with the stop d in front: the exit pupil is the stop's image; for d < f it is
+  // virtual, at s' = d f / (d - f) from the lens (negative: in front), magnified f / (f - d).
+  const double R = 100, n = 1.5, f = 100, dist = 30, semi = 5;
+  LensPrescription l = Singlet(R, -R, 0, n);  // thin: zero thickness
+  l.surfaces[0].thickness = dist;
+  l.surfaces[0].semi_diameter = semi;
+  ParaxialData d = ComputeParaxial(l);
+  EXPECT_NEAR(d.efl, f, 1e-9);
+  EXPECT_NEAR(d.entrance_pupil_position, 0, 1e-12);
+  EXPECT_NEAR(d.entrance_pupil_diameter, 2 * semi, 1e-12);
+  EXPECT_NEAR(d.exit_pupil_position, dist * f / (dist - f), 1e-9);
+  EXPECT_NEAR(d.exit_pupil_diameter, 2 * semi * f / (f - dist), 1e-9);
+  EXPECT_NEAR(d.fnumber, f / (2 * semi), 1e-12);
+  // Principal planes of a thin lens: both at the lens.
+  EXPECT_NEAR(d.back_principal_plane, 0, 1e-9);
+  EXPECT_NEAR(d.front_principal_plane, dist, 1e-9);
+}
+
+}  // namespace
+}  // namespace objektiv

@@ -10,5 +10,6 @@ namespace objektiv {
 // the action returns the process exit code.
 std::function<int()> AddRenderCommand(CLI::App& app);
 std::function<int()> AddImgtoolCommand(CLI::App& app);
+std::function<int()> AddLensCommand(CLI::App& app);
 
 }  // namespace objektiv

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "objektiv 0.1.0");
   auto render = AddRenderCommand(app);
   auto imgtool = AddImgtoolCommand(app);
+  auto lens = AddLensCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -24,9 +25,11 @@ int main(int argc, char** argv) {
     app.exit(e);
     return 2;  // bad command-line values
   }
+  SetupLogging(1);
   try {
     if (app.got_subcommand("render")) return render();
     if (app.got_subcommand("imgtool")) return imgtool();
+    if (app.got_subcommand("lens")) return lens();
   } catch (const InputError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;

@@ -102,9 +102,10 @@ void GlassCatalog::LoadAgfText(const std::string& raw, const std::string& path, 
         if (f.size() < 3) throw MakeInputError(path, number, "IT line needs wavelength, transmittance and thickness");
         double l = Number(f[0], path, number), tau = Number(f[1], path, number), d = Number(f[2], path, number);
         // Implausible rows occur in real catalogs (HIKARI lists transmittances of 12 and
-        // 1.959): one bad optional row should not make a catalog unusable. Skip it, loudly.
+        // 1.959): one bad optional row should not make a catalog unusable. Skip it and say so
+        // in the debug log (the shipped catalogs would otherwise warn on every run).
         if (!(l > 0) || tau < 0 || tau > 1.0001 || !(d > 0)) {
-          spdlog::warn("{}:{}: glass {}: ignoring transmission row (wavelength {} um, transmittance {}, thickness {} mm)",
+          spdlog::debug("{}:{}: glass {}: ignoring transmission row (wavelength {} um, transmittance {}, thickness {} mm)",
                        path, number, current->name(), l, tau, d);
           continue;
         }

@@ -1,52 +1,85 @@
 #include "optics/paraxial.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace objektiv {
 
 namespace {
-// Trace a ray parallel to the axis at height 1 through the surfaces in the given order;
-// returns the final height and reduced angle (n u) after the last surface (n = 1, air).
+
 struct YNu {
   double y, nu;
 };
-YNu TraceParallel(const LensPrescription& lens, double lambda_nm, bool reversed) {
+
+// y-nu trace through surfaces [first, last] (inclusive), forward (toward the film) or
+// backward (toward the object), starting just before `first` with height y and reduced
+// angle nu (n u, u the slope along the direction of travel). Returns the values just after `last`.
+YNu TraceRange(const LensPrescription& lens, double lambda_nm, YNu ray, int first, int last, bool backward) {
   const auto& s = lens.surfaces;
-  const int n = int(s.size());
-  double y = 1, nu = 0;
-  for (int k = 0; k < n; ++k) {
-    int i = reversed ? n - 1 - k : k;
-    // Media on either side of surface i in the direction of travel.
-    double n_before, n_after, c = s[i].Curvature();
-    if (!reversed) {
-      n_before = i > 0 ? s[i - 1].IndexAfter(lambda_nm) : 1.0;
-      n_after = s[i].IndexAfter(lambda_nm);
-    } else {
-      n_before = s[i].IndexAfter(lambda_nm);
-      n_after = i > 0 ? s[i - 1].IndexAfter(lambda_nm) : 1.0;
-      c = -c;  // seen from the film side the surface's curvature changes sign
-    }
+  int step = backward ? -1 : 1;
+  for (int i = first;; i += step) {
+    double c = s[i].Curvature();
+    double n_object = i > 0 ? s[i - 1].IndexAfter(lambda_nm) : 1.0, n_film = s[i].IndexAfter(lambda_nm);
+    double n_before = backward ? n_film : n_object, n_after = backward ? n_object : n_film;
+    if (backward) c = -c;  // seen from the film side the curvature changes sign
     // Refraction: n' u' = n u - y c (n' - n).
-    nu = nu - y * c * (n_after - n_before);
-    // Transfer to the next surface in the direction of travel.
-    if (k + 1 < n) {
-      int next = reversed ? i - 1 : i + 1;
-      double t = reversed ? s[next].thickness : s[i].thickness;
-      double index = reversed ? s[next].IndexAfter(lambda_nm) : n_after;
-      y += t * nu / index;
-    }
+    ray.nu -= ray.y * c * (n_after - n_before);
+    if (i == last) break;
+    // Transfer to the next surface in the direction of travel through the medium between.
+    int next = i + step;
+    double t = backward ? s[next].thickness : s[i].thickness;
+    double index = backward ? s[next].IndexAfter(lambda_nm) : n_after;
+    ray.y += t * ray.nu / index;
   }
-  return {y, nu};
+  return ray;
 }
+
 }  // namespace
 
-ParaxialData ComputeParaxial(const LensPrescription& lens, double lambda_nm) {
+ParaxialData ComputeParaxial(const LensPrescription& lens, double lambda_nm, double stop_semi) {
   ParaxialData d;
-  YNu f = TraceParallel(lens, lambda_nm, false);
-  d.efl = -1 / f.nu;          // EFL = -y1 / (n' u') with y1 = 1
-  d.bfl = -f.y / f.nu;        // distance at which the ray crosses the axis
-  YNu b = TraceParallel(lens, lambda_nm, true);
-  d.ffl = b.y / b.nu;         // the front focus lies in front of the first vertex (negative)
+  const int n = int(lens.surfaces.size());
+  YNu f = TraceRange(lens, lambda_nm, {1, 0}, 0, n - 1, false);
+  d.efl = -1 / f.nu;    // EFL = -y1 / (n' u') with y1 = 1
+  d.bfl = -f.y / f.nu;  // where the ray crosses the axis behind the last vertex
+  YNu b = TraceRange(lens, lambda_nm, {1, 0}, n - 1, 0, true);
+  d.ffl = b.y / b.nu;   // the front focus, in front of the first vertex (negative)
+  d.back_principal_plane = d.bfl - d.efl;
+  d.front_principal_plane = d.ffl + d.efl;
+
+  int stop = lens.StopIndex();
+  if (stop < 0) return d;
+  double semi = stop_semi >= 0 ? stop_semi : lens.surfaces[stop].semi_diameter;
+  // Entrance pupil: from the stop centre backward through the front group. Its size scales
+  // the stop by the ratio of heights of a ray parallel to the axis (first surface / stop).
+  if (stop == 0) {
+    d.entrance_pupil_position = 0;
+    d.entrance_pupil_diameter = 2 * semi;
+  } else {
+    // Start at the stop centre and transfer back to the surface in front of it.
+    double n_front = lens.surfaces[stop - 1].IndexAfter(lambda_nm);
+    YNu e{0, n_front};  // u = 1
+    e.y += lens.surfaces[stop - 1].thickness * e.nu / n_front;
+    e = TraceRange(lens, lambda_nm, e, stop - 1, 0, true);
+    d.entrance_pupil_position = e.y / e.nu;
+    YNu m = TraceRange(lens, lambda_nm, {1, 0}, 0, stop - 1, false);
+    double y_stop = m.y + lens.surfaces[stop - 1].thickness * m.nu / lens.surfaces[stop - 1].IndexAfter(lambda_nm);
+    d.entrance_pupil_diameter = std::abs(2 * semi / y_stop);
+  }
+  // Exit pupil: from the stop centre forward through the rear group; the Lagrange invariant
+  // gives its magnification as the ratio of reduced angles (n u at the stop / n' u' after).
+  if (stop == n - 1) {
+    d.exit_pupil_position = 0;
+    d.exit_pupil_diameter = 2 * semi;
+  } else {
+    double n_stop = lens.surfaces[stop].IndexAfter(lambda_nm);
+    YNu x{0, n_stop};  // u = 1 at the stop
+    x.y += lens.surfaces[stop].thickness * x.nu / n_stop;
+    x = TraceRange(lens, lambda_nm, x, stop + 1, n - 1, false);
+    d.exit_pupil_position = -x.y / x.nu;
+    d.exit_pupil_diameter = std::abs(2 * semi * n_stop / x.nu);
+  }
+  d.fnumber = d.efl / d.entrance_pupil_diameter;
   return d;
 }
 

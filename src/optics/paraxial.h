@@ -8,9 +8,18 @@ struct ParaxialData {
   double efl = 0;  // effective focal length, mm
   double bfl = 0;  // back focal length: last vertex to the paraxial focus, mm
   double ffl = 0;  // front focal length: first vertex to the front focus (negative: in front), mm
+  // Pupils: the stop imaged through the elements in front of it (entrance) and behind it
+  // (exit). Positions from the first / last vertex, positive toward the film.
+  double entrance_pupil_position = 0, entrance_pupil_diameter = 0;
+  double exit_pupil_position = 0, exit_pupil_diameter = 0;
+  double fnumber = 0;  // EFL / entrance pupil diameter (object at infinity)
+  // Principal planes, from the first / last vertex (positive toward the film). In air the
+  // nodal points coincide with them.
+  double front_principal_plane = 0, back_principal_plane = 0;
 };
 
 // Object at infinity. Surfaces are refracted with their indices at lambda_nm.
-ParaxialData ComputeParaxial(const LensPrescription& lens, double lambda_nm = 587.5618);
+// stop_semi_diameter < 0: the prescription's stop.
+ParaxialData ComputeParaxial(const LensPrescription& lens, double lambda_nm = 587.5618, double stop_semi_diameter = -1);
 
 }  // namespace objektiv

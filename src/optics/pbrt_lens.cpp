@@ -29,10 +29,23 @@ LensPrescription ParsePbrtLens(const std::string& text, const std::string& path)
   int number = 0, stop_line = 0;
   // Media are shared between rows with the same index.
   std::map<double, std::shared_ptr<const Glass>> media;
+  bool described = false;
   while (std::getline(lines, line)) {
     ++number;
     size_t hash = line.find('#');
-    if (hash != std::string::npos) line.resize(hash);
+    if (hash != std::string::npos) {
+      // The first comment line names the design (pbrt's files start with one).
+      if (!described) {
+        std::string c = line.substr(hash + 1);
+        while (!c.empty() && (c.back() == '\t' || c.back() == ' ' || c.back() == '"' || c.back() == '\r')) c.pop_back();
+        size_t b = c.find_first_not_of(" \t");
+        if (b != std::string::npos) {
+          lens.source = c.substr(b);
+          described = true;
+        }
+      }
+      line.resize(hash);
+    }
     std::istringstream tok(line);
     std::vector<double> v;
     std::string t;

@@ -1,0 +1,78 @@
+// `objektiv lens list` and `objektiv lens info LENS`: the lens library's command-line face.
+#include <cmath>
+
+#include "app/commands.h"
+#include "base/error.h"
+#include "optics/lens_file.h"
+#include "optics/paraxial.h"
+
+namespace objektiv {
+namespace {
+
+struct LensArgs {
+  std::string lens;
+  double wavelength = 587.5618;
+  bool json = false;
+};
+
+int RunList() {
+  std::printf("%-24s %10s %8s  %s\n", "name", "EFL (mm)", "f/", "source");
+  for (const std::string& name : ShippedLensNames()) {
+    LensPrescription lens = LoadLens(name);
+    ParaxialData d = ComputeParaxial(lens);
+    std::printf("%-24s %10.3f %8.2f  %s\n", name.c_str(), d.efl, d.fnumber, lens.source.c_str());
+  }
+  return 0;
+}
+
+int RunInfo(const LensArgs& a) {
+  LensPrescription lens = LoadLens(a.lens);
+  ParaxialData d = ComputeParaxial(lens, a.wavelength);
+  int stop = lens.StopIndex();
+  double stop_diameter = 2 * lens.surfaces[stop].semi_diameter;
+  if (a.json) {
+    std::printf(
+        "{\n  \"name\": \"%s\",\n  \"wavelength_nm\": %.4f,\n  \"efl_mm\": %.6f,\n  \"bfl_mm\": %.6f,\n"
+        "  \"ffl_mm\": %.6f,\n  \"fnumber\": %.6f,\n  \"entrance_pupil_diameter_mm\": %.6f,\n"
+        "  \"entrance_pupil_position_mm\": %.6f,\n  \"exit_pupil_diameter_mm\": %.6f,\n"
+        "  \"exit_pupil_position_mm\": %.6f,\n  \"front_principal_plane_mm\": %.6f,\n"
+        "  \"back_principal_plane_mm\": %.6f,\n  \"stop_diameter_mm\": %.6f,\n  \"total_track_mm\": %.6f,\n"
+        "  \"surfaces\": %zu\n}\n",
+        lens.name.c_str(), a.wavelength, d.efl, d.bfl, d.ffl, d.fnumber, d.entrance_pupil_diameter,
+        d.entrance_pupil_position, d.exit_pupil_diameter, d.exit_pupil_position, d.front_principal_plane,
+        d.back_principal_plane, stop_diameter, lens.TotalTrack(), lens.surfaces.size());
+    return 0;
+  }
+  std::printf("%s (%s)\n", lens.name.c_str(), lens.source.c_str());
+  std::printf("  %zu surfaces, stop at row %d (diameter %.3f mm), total track %.3f mm\n", lens.surfaces.size(),
+              stop + 1, stop_diameter, lens.TotalTrack());
+  std::printf("  paraxial, object at infinity, %.2f nm:\n", a.wavelength);
+  std::printf("  EFL %.4f mm   BFL %.4f mm   FFL %.4f mm   f/%.3f\n", d.efl, d.bfl, d.ffl, d.fnumber);
+  std::printf("  entrance pupil: diameter %.4f mm, %.4f mm behind the first vertex\n", d.entrance_pupil_diameter,
+              d.entrance_pupil_position);
+  std::printf("  exit pupil:     diameter %.4f mm, %.4f mm behind the last vertex\n", d.exit_pupil_diameter,
+              d.exit_pupil_position);
+  std::printf("  principal planes: front %.4f mm from the first vertex, back %.4f mm from the last\n",
+              d.front_principal_plane, d.back_principal_plane);
+  return 0;
+}
+
+}  // namespace
+
+std::function<int()> AddLensCommand(CLI::App& app) {
+  auto args = std::make_shared<LensArgs>();
+  CLI::App* lens = app.add_subcommand("lens", "The lens library: shipped lenses and first-order data");
+  lens->require_subcommand(1);
+  CLI::App* list = lens->add_subcommand("list", "List the shipped lenses with focal length, f-number and source");
+  CLI::App* info = lens->add_subcommand("info", "Paraxial data of a lens (a file, or a shipped lens by name)");
+  info->add_option("lens", args->lens, "Lens file (.lens or .dat) or shipped lens name, e.g. dgauss.50mm")->required();
+  info->add_option("--wavelength", args->wavelength, "Wavelength in nm (default: the d line, 587.56)")
+      ->check(CLI::Range(300.0, 2500.0));
+  info->add_flag("--json", args->json, "Print the figures as a JSON object");
+  return [args, list, info] {
+    if (list->parsed()) return RunList();
+    return RunInfo(*args);
+  };
+}
+
+}  // namespace objektiv
