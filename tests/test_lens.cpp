@@ -249,3 +249,58 @@ TEST(Paraxial, PupilsOfAThinLensWithAStopInFront) {
 
 }  // namespace
 }  // namespace objektiv
+
+#include "optics/focusing.h"
+#include "optics/lens_tracer.h"
+
+namespace objektiv {
+namespace {
+
+TEST(Focusing, UnitFocusObeysNewtonsEquation) {
+  // x x' = f^2 with x the object's distance from the front focal point and x' the image's
+  // from the back focal point: true for any thick lens in air.
+  for (const char* name : {"dgauss.50mm", "tessar.brendel.100mm", "telephoto.250mm"}) {
+    LensPrescription lens = LoadLens(name);
+    ParaxialData p = ComputeParaxial(lens);
+    for (double distance_m : {0.8, 2.0, 10.0}) {
+      double D = distance_m * 1000 * (p.efl / 50);  // keep closer than minimum focus away
+      std::optional<FocusSolution> f = FocusAtDistance(lens, D);
+      ASSERT_TRUE(f) << name << " at " << D;
+      EXPECT_NEAR(f->object_distance + lens.TotalTrack() + f->back_focus, D, 1e-6 * D);
+      double x = f->object_distance + p.ffl, xp = f->back_focus - p.bfl;
+      EXPECT_NEAR(x * xp, p.efl * p.efl, 1e-7 * p.efl * p.efl) << name;
+      EXPECT_NEAR(f->magnification, -p.efl / x, 1e-7) << name;
+      // Real rays near the axis from the object meet on the film.
+      LensTracer t(lens);
+      t.SetBackFocus(f->back_focus);
+      double h = 1e-4;
+      Vec3d from(0, 0, -f->object_distance);
+      TraceResult r = t.TraceFromObject({from, Normalize(Vec3d(h, 0, f->object_distance))}, 587.5618);
+      ASSERT_TRUE(r.ray);
+      Vec3d hit = r.ray->o + r.ray->d * ((t.FilmZ() - r.ray->o.z) / r.ray->d.z);
+      EXPECT_NEAR(hit.x, 0, 1e-6) << name;
+    }
+    // Too close: inside the front focal point there is no real image.
+    EXPECT_FALSE(FocusAtDistance(lens, lens.TotalTrack() + p.bfl + 0.5 * p.efl));
+    // At infinity the working f-number tends to EFL / EPD; closer it grows as (1 + |m|) N.
+    FocusSolution far = ImageObject(lens, 1e9);
+    EXPECT_NEAR(far.working_fnumber, p.fnumber, 1e-5 * p.fnumber) << name;
+  }
+}
+
+TEST(Focusing, ScalingKeepsTheFNumberAndHitsTheFocalLength) {
+  LensPrescription lens = LoadLens("tessar.brendel.100mm");
+  LensPrescription s = ScaleToFocalLength(lens, 35);
+  ParaxialData a = ComputeParaxial(lens), b = ComputeParaxial(s);
+  EXPECT_NEAR(b.efl, 35, 1e-9);
+  EXPECT_NEAR(b.fnumber, a.fnumber, 1e-9);
+  EXPECT_NEAR(b.bfl, a.bfl * 35 / a.efl, 1e-9);
+  // Aspheric terms scale so that the sag scales with the lens.
+  LensPrescription asph = ParseNativeLens("stop 1 air 4\nsurface 50 5 N-BK7 10 k=-0.5 a4=1e-5 a6=-1e-8\n"
+                                          "surface inf 40 air 10\n", "a.lens");
+  LensTracer t1(asph), t2(ScaleLens(asph, 3));
+  EXPECT_NEAR(t2.Sag(1, 3 * 7.0), 3 * t1.Sag(1, 7.0), 1e-12);
+}
+
+}  // namespace
+}  // namespace objektiv

@@ -3,6 +3,7 @@
 
 #include "app/commands.h"
 #include "base/error.h"
+#include "optics/focusing.h"
 #include "optics/lens_file.h"
 #include "optics/paraxial.h"
 
@@ -12,6 +13,7 @@ namespace {
 struct LensArgs {
   std::string lens;
   double wavelength = 587.5618;
+  double focus_m = 0;  // 0: infinity
   bool json = false;
 };
 
@@ -30,6 +32,20 @@ int RunInfo(const LensArgs& a) {
   ParaxialData d = ComputeParaxial(lens, a.wavelength);
   int stop = lens.StopIndex();
   double stop_diameter = 2 * lens.surfaces[stop].semi_diameter;
+  std::optional<FocusSolution> focus;
+  if (a.focus_m > 0) {
+    focus = FocusAtDistance(lens, a.focus_m * 1000, a.wavelength);
+    if (!focus)
+      throw InputError(fmt::format("{}: cannot focus at {} m from the film (closer than the front focal point allows "
+                                   "with unit focusing)",
+                                   a.lens, a.focus_m));
+  }
+  std::string focus_json;
+  if (focus)
+    focus_json = fmt::format(
+        ",\n  \"focus_distance_m\": {:.6f},\n  \"back_focus_mm\": {:.6f},\n  \"object_distance_mm\": {:.6f},\n"
+        "  \"magnification\": {:.8f},\n  \"working_fnumber\": {:.6f}",
+        a.focus_m, focus->back_focus, focus->object_distance, focus->magnification, focus->working_fnumber);
   if (a.json) {
     std::printf(
         "{\n  \"name\": \"%s\",\n  \"wavelength_nm\": %.4f,\n  \"efl_mm\": %.6f,\n  \"bfl_mm\": %.6f,\n"
@@ -37,10 +53,10 @@ int RunInfo(const LensArgs& a) {
         "  \"entrance_pupil_position_mm\": %.6f,\n  \"exit_pupil_diameter_mm\": %.6f,\n"
         "  \"exit_pupil_position_mm\": %.6f,\n  \"front_principal_plane_mm\": %.6f,\n"
         "  \"back_principal_plane_mm\": %.6f,\n  \"stop_diameter_mm\": %.6f,\n  \"total_track_mm\": %.6f,\n"
-        "  \"surfaces\": %zu\n}\n",
+        "  \"surfaces\": %zu%s\n}\n",
         lens.name.c_str(), a.wavelength, d.efl, d.bfl, d.ffl, d.fnumber, d.entrance_pupil_diameter,
         d.entrance_pupil_position, d.exit_pupil_diameter, d.exit_pupil_position, d.front_principal_plane,
-        d.back_principal_plane, stop_diameter, lens.TotalTrack(), lens.surfaces.size());
+        d.back_principal_plane, stop_diameter, lens.TotalTrack(), lens.surfaces.size(), focus_json.c_str());
     return 0;
   }
   std::printf("%s (%s)\n", lens.name.c_str(), lens.source.c_str());
@@ -54,6 +70,10 @@ int RunInfo(const LensArgs& a) {
               d.exit_pupil_position);
   std::printf("  principal planes: front %.4f mm from the first vertex, back %.4f mm from the last\n",
               d.front_principal_plane, d.back_principal_plane);
+  if (focus)
+    std::printf("  focused at %.4g m from the film (unit focusing): back focus %.4f mm, object %.2f mm in front of the\n"
+                "  first vertex, magnification %.6f, working f-number %.3f\n",
+                a.focus_m, focus->back_focus, focus->object_distance, focus->magnification, focus->working_fnumber);
   return 0;
 }
 
@@ -68,6 +88,8 @@ std::function<int()> AddLensCommand(CLI::App& app) {
   info->add_option("lens", args->lens, "Lens file (.lens or .dat) or shipped lens name, e.g. dgauss.50mm")->required();
   info->add_option("--wavelength", args->wavelength, "Wavelength in nm (default: the d line, 587.56)")
       ->check(CLI::Range(300.0, 2500.0));
+  info->add_option("--focus", args->focus_m, "Also focus on an object this many metres from the film (unit focusing)")
+      ->check(CLI::PositiveNumber);
   info->add_flag("--json", args->json, "Print the figures as a JSON object");
   return [args, list, info] {
     if (list->parsed()) return RunList();

@@ -1,0 +1,100 @@
+#include "optics/focusing.h"
+
+#include <cmath>
+
+#include "optics/paraxial.h"
+
+namespace objektiv {
+
+namespace {
+// y-nu trace of a ray leaving the axial object point with slope 1; returns the height and
+// reduced angle after the last surface, and the height at the stop.
+struct ObjectRay {
+  double y_end, nu_end, y_stop;
+};
+ObjectRay TraceFromObjectPoint(const LensPrescription& lens, double s, double lambda_nm) {
+  const auto& surf = lens.surfaces;
+  double y = s, nu = 1, y_stop = 0;  // slope 1 over the object distance s
+  for (size_t i = 0; i < surf.size(); ++i) {
+    double n_before = i > 0 ? surf[i - 1].IndexAfter(lambda_nm) : 1.0, n_after = surf[i].IndexAfter(lambda_nm);
+    if (surf[i].is_stop) y_stop = y;
+    nu -= y * surf[i].Curvature() * (n_after - n_before);
+    if (i + 1 < surf.size()) y += surf[i].thickness * nu / n_after;
+  }
+  return {y, nu, y_stop};
+}
+}  // namespace
+
+FocusSolution ImageObject(const LensPrescription& lens, double s, double lambda_nm) {
+  ObjectRay r = TraceFromObjectPoint(lens, s, lambda_nm);
+  FocusSolution f;
+  f.object_distance = s;
+  f.back_focus = -r.y_end / r.nu_end;
+  f.magnification = 1 / r.nu_end;  // Lagrange: n u / n' u' with n u = 1 at the object
+  int stop = lens.StopIndex();
+  double semi = stop >= 0 ? lens.surfaces[stop].semi_diameter : 0;
+  // Scale the ray to pass the stop's edge: its slope at the film gives the cone of light.
+  double u_image = r.y_stop != 0 ? r.nu_end * semi / std::abs(r.y_stop) : 0;
+  f.working_fnumber = u_image != 0 ? 1 / (2 * std::abs(u_image)) : 0;
+  return f;
+}
+
+std::optional<FocusSolution> FocusAtDistance(const LensPrescription& lens, double distance_from_film, double lambda_nm) {
+  const double track = lens.TotalTrack();
+  ParaxialData p = ComputeParaxial(lens, lambda_nm);
+  // g(t) = (image distance of the object at D - track - t) - t; zero when in focus. At
+  // t = BFL the object is at a finite distance, its image lies beyond BFL: g > 0. Search
+  // upward for a sign change while the object stays outside the front focus.
+  auto g = [&](double t) {
+    double s = distance_from_film - track - t;
+    return ImageObject(lens, s, lambda_nm).back_focus - t;
+  };
+  double lo = p.bfl, hi = p.bfl;
+  double front_focus_distance = -p.ffl;  // object must stay farther than this from the first vertex
+  double step = std::max(1e-3 * p.efl, 1e-6);
+  bool bracketed = false;
+  while (distance_from_film - track - hi > front_focus_distance) {
+    if (g(hi) < 0) {
+      bracketed = true;
+      break;
+    }
+    lo = hi;
+    hi += step;
+    step *= 2;
+    if (distance_from_film - track - hi <= front_focus_distance) hi = distance_from_film - track - front_focus_distance - 1e-9 * p.efl;
+    if (hi <= lo) break;
+  }
+  if (!bracketed || g(lo) < 0) return std::nullopt;
+  for (int it = 0; it < 200 && hi - lo > 1e-12 * (1 + hi); ++it) {
+    double mid = 0.5 * (lo + hi);
+    (g(mid) > 0 ? lo : hi) = mid;
+  }
+  double t = 0.5 * (lo + hi);
+  FocusSolution f = ImageObject(lens, distance_from_film - track - t, lambda_nm);
+  f.back_focus = t;
+  return f;
+}
+
+LensPrescription ScaleLens(const LensPrescription& lens, double factor) {
+  LensPrescription out = lens;
+  for (LensSurface& s : out.surfaces) {
+    s.radius *= factor;
+    s.thickness *= factor;
+    s.semi_diameter *= factor;
+    // z = a r^2k scales as z' = factor z at r' = factor r: a' = a / factor^(2k - 1).
+    double scale = factor * factor * factor;  // 2k - 1 = 3 for a4
+    for (double& a : s.aspheric) {
+      a /= scale;
+      scale *= factor * factor;
+    }
+  }
+  if (out.design_focal_length > 0) out.design_focal_length *= factor;
+  if (out.image_circle > 0) out.image_circle *= factor;
+  return out;
+}
+
+LensPrescription ScaleToFocalLength(const LensPrescription& lens, double focal_length) {
+  return ScaleLens(lens, focal_length / ComputeParaxial(lens).efl);
+}
+
+}  // namespace objektiv
