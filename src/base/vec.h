@@ -68,6 +68,7 @@ template <typename T> Vec3<T> FaceForward(const Vec3<T>& v, const Vec3<T>& ref) 
 template <typename T> Vec3<T> Reflect(const Vec3<T>& wo, const Vec3<T>& n) { return -wo + n * (2 * Dot(wo, n)); }
 
 using Vec2f = Vec2<float>;
+using Vec2d = Vec2<double>;
 using Vec2i = Vec2<int>;
 using Vec3f = Vec3<float>;
 using Vec3d = Vec3<double>;

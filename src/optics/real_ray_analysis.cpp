@@ -1,0 +1,110 @@
+#include "optics/real_ray_analysis.h"
+
+#include <cmath>
+
+#include "optics/paraxial.h"
+
+namespace objektiv {
+
+namespace {
+constexpr double kStartZ = -50;  // rays start this far in front of the first vertex (mm)
+
+// Height at which a ray from direction theta, entering at height y0 (at kStartZ), crosses the
+// stop plane; nothing if it does not get there.
+std::optional<double> HeightAtStop(const LensTracer& tracer, double theta, double y0, double lambda_nm) {
+  int stop = tracer.lens().StopIndex();
+  LensPrescription front = tracer.lens();
+  front.surfaces.resize(size_t(stop) + 1);
+  LensTracer partial(front);
+  partial.SetStopSemiDiameter(1e30);  // only find where it crosses; do not clip at the stop
+  LensRay r{{0, y0, kStartZ}, {0, std::sin(theta), std::cos(theta)}};
+  TraceResult t = partial.TraceFromObject(r, lambda_nm);
+  if (!t.ray) return std::nullopt;
+  return t.ray->o.y;
+}
+}  // namespace
+
+std::optional<LensRay> ChiefRay(const LensTracer& tracer, double field_deg, double lambda_nm) {
+  double theta = field_deg * M_PI / 180;
+  // Start from the paraxial entrance pupil; refine by the secant method on the stop height.
+  ParaxialData p = ComputeParaxial(tracer.lens(), lambda_nm);
+  double y_a = -std::tan(theta) * (p.entrance_pupil_position - kStartZ), y_b = y_a + 1e-3;
+  std::optional<double> h_a = HeightAtStop(tracer, theta, y_a, lambda_nm);
+  std::optional<double> h_b = HeightAtStop(tracer, theta, y_b, lambda_nm);
+  for (int it = 0; it < 60 && h_a && h_b; ++it) {
+    if (std::abs(*h_b) < 1e-12) break;
+    double denom = *h_b - *h_a;
+    if (denom == 0) return std::nullopt;
+    double y_c = y_b - *h_b * (y_b - y_a) / denom;
+    y_a = y_b;
+    h_a = h_b;
+    y_b = y_c;
+    h_b = HeightAtStop(tracer, theta, y_b, lambda_nm);
+  }
+  if (!h_b || std::abs(*h_b) > 1e-9) return std::nullopt;
+  return LensRay{{0, y_b, kStartZ}, {0, std::sin(theta), std::cos(theta)}};
+}
+
+std::optional<double> RealImageHeight(const LensTracer& tracer, double field_deg, double lambda_nm) {
+  std::optional<LensRay> chief = ChiefRay(tracer, field_deg, lambda_nm);
+  if (!chief) return std::nullopt;
+  LensTracer open = tracer;
+  open.SetStopSemiDiameter(1e30);  // the chief ray passes the stop centre anyway
+  TraceResult t = open.TraceFromObject(*chief, lambda_nm);
+  if (!t.ray || t.ray->d.z <= 0) return std::nullopt;
+  return t.ray->o.y + t.ray->d.y * (tracer.FilmZ() - t.ray->o.z) / t.ray->d.z;
+}
+
+std::optional<double> Distortion(const LensTracer& tracer, double efl, double field_deg, double lambda_nm) {
+  std::optional<double> h = RealImageHeight(tracer, field_deg, lambda_nm);
+  if (!h) return std::nullopt;
+  // Light travelling toward +y comes from an object below the axis, imaged (inverted) above it.
+  double ideal = efl * std::tan(field_deg * M_PI / 180);
+  return (*h - ideal) / ideal;
+}
+
+Spot SpotDiagram(const LensTracer& tracer, double field_deg, double lambda_nm, int n) {
+  Spot spot;
+  ParaxialData p = ComputeParaxial(tracer.lens(), lambda_nm, tracer.StopSemiDiameter());
+  double theta = field_deg * M_PI / 180;
+  std::optional<LensRay> chief = ChiefRay(tracer, field_deg, lambda_nm);
+  // Centre the grid on the chief ray's entrance (the real entrance pupil's centre).
+  double y_centre = chief ? chief->o.y : -std::tan(theta) * (p.entrance_pupil_position - kStartZ);
+  double radius = 0.6 * p.entrance_pupil_diameter;  // 1.2 pupil radii
+  int launched = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      double x = radius * (2.0 * (i + 0.5) / n - 1), y = radius * (2.0 * (j + 0.5) / n - 1);
+      if (x * x + y * y > radius * radius) continue;
+      ++launched;
+      // Parallel rays: same direction, shifted in the plane perpendicular to the axis
+      // (entrance heights measured at kStartZ along the tilted beam).
+      LensRay r{{x, y_centre + y / std::cos(theta), kStartZ}, {0, std::sin(theta), std::cos(theta)}};
+      TraceResult t = tracer.TraceFromObject(r, lambda_nm);
+      if (!t.ray || t.ray->d.z <= 0) continue;
+      double s = (tracer.FilmZ() - t.ray->o.z) / t.ray->d.z;
+      spot.points.push_back({t.ray->o.x + t.ray->d.x * s, t.ray->o.y + t.ray->d.y * s});
+    }
+  spot.transmitted = launched ? double(spot.points.size()) / launched : 0;
+  if (spot.points.empty()) return spot;
+  for (const Vec2d& q : spot.points) spot.centroid = spot.centroid + q * (1.0 / spot.points.size());
+  double sum2 = 0;
+  for (const Vec2d& q : spot.points) {
+    double d2 = (q.x - spot.centroid.x) * (q.x - spot.centroid.x) + (q.y - spot.centroid.y) * (q.y - spot.centroid.y);
+    sum2 += d2;
+    spot.geometric_radius = std::max(spot.geometric_radius, std::sqrt(d2));
+  }
+  spot.rms_radius = std::sqrt(sum2 / spot.points.size());
+  return spot;
+}
+
+std::optional<double> LongitudinalAberration(const LensTracer& tracer, double height, double lambda_nm) {
+  ParaxialData p = ComputeParaxial(tracer.lens(), lambda_nm);
+  TraceResult t = tracer.TraceFromObject({{0, height, kStartZ}, {0, 0, 1}}, lambda_nm);
+  if (!t.ray || t.ray->d.y == 0) return std::nullopt;
+  double z = t.ray->o.z - t.ray->o.y * t.ray->d.z / t.ray->d.y;
+  double last = tracer.VertexZ(int(tracer.lens().surfaces.size()) - 1);
+  return (z - last) - p.bfl;
+}
+
+}  // namespace objektiv

@@ -1,0 +1,37 @@
+// Real-ray analysis of a lens focused at infinity (the film at the paraxial focus, unless
+// the tracer's back focus was set otherwise): chief rays, distortion, spots, aberrations.
+#pragma once
+#include <optional>
+#include <vector>
+
+#include "optics/lens_tracer.h"
+
+namespace objektiv {
+
+// The chief ray for a field angle (degrees, in the y-z plane) from an object at infinity:
+// the ray that crosses the stop at its centre, found by iteration on its entrance height.
+std::optional<LensRay> ChiefRay(const LensTracer& tracer, double field_deg, double lambda_nm);
+
+// Height of the chief ray on the film (mm). Rays travel toward +y for positive fields.
+std::optional<double> RealImageHeight(const LensTracer& tracer, double field_deg, double lambda_nm);
+
+// Distortion at a field angle: (real - ideal) / ideal image height, with the ideal height
+// EFL tan(theta) (rectilinear). Negative: barrel, positive: pincushion.
+std::optional<double> Distortion(const LensTracer& tracer, double efl, double field_deg, double lambda_nm);
+
+struct Spot {
+  std::vector<Vec2d> points;  // on the film, mm
+  Vec2d centroid;
+  double rms_radius = 0, geometric_radius = 0;  // about the centroid, mm
+  double transmitted = 0;  // fraction of the rays launched over the entrance pupil that arrive
+};
+
+// Rays from a field angle over the entrance pupil (a square grid of `n` x `n` rays cut to
+// a circle 1.2 entrance-pupil radii wide, so that vignetting shows), traced to the film.
+Spot SpotDiagram(const LensTracer& tracer, double field_deg, double lambda_nm, int n = 31);
+
+// Longitudinal spherical aberration: where a ray parallel to the axis at `height` mm crosses
+// the axis, minus the paraxial focus (mm; negative = in front of it).
+std::optional<double> LongitudinalAberration(const LensTracer& tracer, double height, double lambda_nm);
+
+}  // namespace objektiv

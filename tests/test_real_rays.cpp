@@ -1,0 +1,87 @@
+// Real-ray analysis: aberrations behave as third-order theory predicts for small fields and
+// apertures; signs of distortion; spots; chromatic aberration of a singlet.
+#include <gtest/gtest.h>
+
+#include "optics/lens_file.h"
+#include "optics/paraxial.h"
+#include "optics/real_ray_analysis.h"
+
+namespace objektiv {
+namespace {
+
+LensTracer Focused(const std::string& name) {
+  LensPrescription lens = LoadLens(name);
+  LensTracer t(lens);
+  t.SetBackFocus(ComputeParaxial(lens).bfl);
+  return t;
+}
+
+TEST(RealRays, ChiefRayCrossesTheStopCentre) {
+  LensTracer t = Focused("dgauss.50mm");
+  for (double field : {0.0, 5.0, 15.0}) {
+    auto chief = ChiefRay(t, field, 587.6);
+    ASSERT_TRUE(chief) << field;
+    EXPECT_NEAR(chief->d.y, std::sin(field * M_PI / 180), 1e-12);
+  }
+  // On axis the real image height is zero.
+  EXPECT_NEAR(*RealImageHeight(t, 0, 587.6), 0, 1e-12);
+}
+
+TEST(RealRays, DistortionGrowsAsTheSquareOfTheField) {
+  // (Not the Tessar: its third-order distortion is corrected almost to zero, -1e-6 at 2
+  // degrees, so higher orders dominate even there.)
+  for (const char* name : {"dgauss.50mm", "wide.22mm", "fisheye.10mm"}) {
+    LensTracer t = Focused(name);
+    double efl = ComputeParaxial(t.lens()).efl;
+    double d1 = *Distortion(t, efl, 1.0, 587.6), d2 = *Distortion(t, efl, 2.0, 587.6);
+    EXPECT_LT(std::abs(d1), 1e-3) << name;
+    // Third order: D ~ theta^2 (higher orders perturb the ratio slightly).
+    EXPECT_NEAR(d2 / d1, 4.0, 0.1) << name;
+  }
+  // The retrofocus wide angle is barrel-distorted, the telephoto pincushion-distorted.
+  LensTracer wide = Focused("wide.22mm");
+  EXPECT_LT(*Distortion(wide, ComputeParaxial(wide.lens()).efl, 15, 587.6), 0);
+  LensTracer tele = Focused("telephoto.250mm");
+  EXPECT_GT(*Distortion(tele, ComputeParaxial(tele.lens()).efl, 4, 587.6), 0);
+}
+
+TEST(RealRays, LongitudinalAberrationGrowsAsTheSquareOfTheHeight) {
+  for (const char* name : {"dgauss.50mm", "telephoto.250mm"}) {
+    LensTracer t = Focused(name);
+    double a1 = *LongitudinalAberration(t, 1.0, 587.6), a2 = *LongitudinalAberration(t, 2.0, 587.6);
+    EXPECT_NEAR(a2 / a1, 4.0, 0.15) << name;
+    EXPECT_NEAR(*LongitudinalAberration(t, 1e-3, 587.6), 0, 1e-6) << name;
+  }
+}
+
+TEST(RealRays, SpotsShrinkWhenStoppingDownAndAreTinyForAnIdealSurface) {
+  LensTracer t = Focused("dgauss.50mm");
+  Spot open = SpotDiagram(t, 0, 587.6);
+  t.SetStopSemiDiameter(t.StopSemiDiameter() / 4);  // about f/8
+  Spot closed = SpotDiagram(t, 0, 587.6);
+  ASSERT_FALSE(open.points.empty());
+  ASSERT_FALSE(closed.points.empty());
+  EXPECT_LT(closed.rms_radius, open.rms_radius);
+  EXPECT_NEAR(open.centroid.x, 0, 1e-9);
+  EXPECT_NEAR(open.centroid.y, 0, 1e-9);
+  // Off axis, the beam is cut by the rims: optical vignetting.
+  t.SetStopSemiDiameter(1e9);
+  Spot axis = SpotDiagram(t, 0, 587.6), edge = SpotDiagram(t, 20, 587.6);
+  EXPECT_LT(edge.transmitted, axis.transmitted);
+
+  LensTracer hyperbola(ParseNativeLens("stop 0 air 12\nsurface inf 8 n=1.5 12\nsurface -50 100 air 12 k=-2.25\n", "h.lens"));
+  Spot ideal = SpotDiagram(hyperbola, 0, 587.6);
+  ASSERT_GT(ideal.points.size(), 100u);
+  EXPECT_LT(ideal.geometric_radius, 1e-3);  // below 1 um
+}
+
+TEST(RealRays, AxialColourOfAThinSingletIsFOverV) {
+  // Thin N-BK7 biconvex lens: the F and C foci are f / Vd apart (to first order).
+  LensPrescription l = ParseNativeLens("stop 0 air 5\nsurface 100 0.001 N-BK7 10\nsurface -100 200 air 10\n", "s.lens");
+  ParaxialData d = ComputeParaxial(l, 587.5618);
+  double lca = ComputeParaxial(l, 656.2725).bfl - ComputeParaxial(l, 486.1327).bfl;
+  EXPECT_NEAR(lca, d.efl / 64.17, 0.01 * d.efl / 64.17);
+}
+
+}  // namespace
+}  // namespace objektiv
