@@ -85,3 +85,27 @@ TEST(RealRays, AxialColourOfAThinSingletIsFOverV) {
 
 }  // namespace
 }  // namespace objektiv
+
+#include "io/lens_plot.h"
+
+namespace objektiv {
+namespace {
+TEST(LensPlot, LayoutHasOneShapePerElementAndRayFans) {
+  LensTracer t = Focused("dgauss.50mm");
+  std::string svg = PlotLensLayout(t, {0, 10}).ToString();
+  auto count = [&](const std::string& what) {
+    size_t n = 0;
+    for (size_t p = svg.find(what); p != std::string::npos; p = svg.find(what, p + 1)) ++n;
+    return n;
+  };
+  // dgauss.50mm: 7 glass spaces (rows followed by glass), drawn as 7 polygons.
+  size_t glass = 0;
+  for (const LensSurface& s : t.lens().surfaces) glass += s.medium != nullptr;
+  EXPECT_EQ(count("<polygon"), glass);
+  EXPECT_EQ(count("<polyline"), 10u);  // five rays per field
+  std::vector<double> fields = DefaultFields(t);
+  ASSERT_EQ(fields.size(), 3u);
+  EXPECT_GT(fields[2], 20.0);  // the double Gauss covers full frame (23.2 degrees)
+}
+}  // namespace
+}  // namespace objektiv

@@ -3,6 +3,7 @@
 
 #include "app/commands.h"
 #include "base/error.h"
+#include "io/lens_plot.h"
 #include "optics/focusing.h"
 #include "optics/lens_file.h"
 #include "optics/paraxial.h"
@@ -11,7 +12,8 @@ namespace objektiv {
 namespace {
 
 struct LensArgs {
-  std::string lens;
+  std::string lens, output;
+  std::vector<double> fields;
   double wavelength = 587.5618;
   double focus_m = 0;  // 0: infinity
   bool json = false;
@@ -77,6 +79,17 @@ int RunInfo(const LensArgs& a) {
   return 0;
 }
 
+int RunPlot(const LensArgs& a) {
+  LensPrescription lens = LoadLens(a.lens);
+  LensTracer tracer(lens);
+  ParaxialData p = ComputeParaxial(lens, a.wavelength);
+  // pbrt files leave the film at the last vertex: put it at the paraxial focus.
+  if (lens.surfaces.back().thickness == 0) tracer.SetBackFocus(p.bfl);
+  std::vector<double> fields = a.fields.empty() ? DefaultFields(tracer, a.wavelength) : a.fields;
+  PlotLensLayout(tracer, fields, a.wavelength).Write(a.output);
+  return 0;
+}
+
 }  // namespace
 
 std::function<int()> AddLensCommand(CLI::App& app) {
@@ -91,8 +104,16 @@ std::function<int()> AddLensCommand(CLI::App& app) {
   info->add_option("--focus", args->focus_m, "Also focus on an object this many metres from the film (unit focusing)")
       ->check(CLI::PositiveNumber);
   info->add_flag("--json", args->json, "Print the figures as a JSON object");
-  return [args, list, info] {
+  CLI::App* plot = lens->add_subcommand("plot", "Draw the lens layout (elements, stop, ray fans) as SVG");
+  plot->add_option("lens", args->lens, "Lens file or shipped lens name")->required();
+  plot->add_option("-o,--output", args->output, "Output SVG file")->required();
+  plot->add_option("--fields", args->fields, "Field angles in degrees (default: 0, 70% and 100% of the field)")
+      ->delimiter(',')
+      ->check(CLI::Range(0.0, 89.0));
+  plot->add_option("--wavelength", args->wavelength, "Wavelength in nm")->check(CLI::Range(300.0, 2500.0));
+  return [args, list, info, plot] {
     if (list->parsed()) return RunList();
+    if (plot->parsed()) return RunPlot(*args);
     return RunInfo(*args);
   };
 }

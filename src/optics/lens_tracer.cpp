@@ -122,7 +122,7 @@ std::optional<double> LensTracer::Intersect(int i, const LensRay& ray) const {
   return t;
 }
 
-TraceResult LensTracer::Trace(const LensRay& in, double lambda_nm, bool from_film) const {
+TraceResult LensTracer::Trace(const LensRay& in, double lambda_nm, bool from_film, std::vector<Vec3d>* path) const {
   const int n = int(lens_.surfaces.size());
   LensRay ray = in;
   TraceResult result;
@@ -136,6 +136,7 @@ TraceResult LensTracer::Trace(const LensRay& in, double lambda_nm, bool from_fil
       return result;
     }
     Vec3d p = ray.o + ray.d * *t;
+    if (path) path->push_back(p);
     double r = std::sqrt(p.x * p.x + p.y * p.y);
     double limit = s.is_stop ? stop_semi_ : s.semi_diameter;
     if (r > limit) {
@@ -167,7 +168,11 @@ TraceResult LensTracer::Trace(const LensRay& in, double lambda_nm, bool from_fil
   return result;
 }
 
-TraceResult LensTracer::TraceFromObject(const LensRay& ray, double lambda_nm) const { return Trace(ray, lambda_nm, false); }
-TraceResult LensTracer::TraceFromFilm(const LensRay& ray, double lambda_nm) const { return Trace(ray, lambda_nm, true); }
+TraceResult LensTracer::TraceFromObject(const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path) const {
+  return Trace(ray, lambda_nm, false, path);
+}
+TraceResult LensTracer::TraceFromFilm(const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path) const {
+  return Trace(ray, lambda_nm, true, path);
+}
 
 }  // namespace objektiv

@@ -25,10 +25,11 @@ class LensTracer {
  public:
   explicit LensTracer(LensPrescription lens);
 
-  // From the object side through every surface toward the film.
-  TraceResult TraceFromObject(const LensRay& ray, double lambda_nm) const;
+  // From the object side through every surface toward the film. `path`, if given, receives
+  // the point where the ray meets each surface it reaches (for plots).
+  TraceResult TraceFromObject(const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path = nullptr) const;
   // From the film through every surface toward the object.
-  TraceResult TraceFromFilm(const LensRay& ray, double lambda_nm) const;
+  TraceResult TraceFromFilm(const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path = nullptr) const;
 
   // The stop's semi-diameter may be narrowed (never widened) to set an f-number.
   void SetStopSemiDiameter(double r);
@@ -47,7 +48,7 @@ class LensTracer {
   // Intersect with surface i (ray in lens space); returns the parameter t or nothing.
   std::optional<double> Intersect(int i, const LensRay& ray) const;
   Vec3d Normal(int i, const Vec3d& p) const;  // unit, pointing toward +z
-  TraceResult Trace(const LensRay& ray, double lambda_nm, bool from_film) const;
+  TraceResult Trace(const LensRay& ray, double lambda_nm, bool from_film, std::vector<Vec3d>* path) const;
 
   LensPrescription lens_;
   std::vector<double> vertex_z_;

@@ -1,0 +1,100 @@
+#include "io/lens_plot.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "optics/paraxial.h"
+#include "optics/real_ray_analysis.h"
+
+namespace objektiv {
+
+std::vector<double> DefaultFields(const LensTracer& tracer, double lambda_nm) {
+  ParaxialData p = ComputeParaxial(tracer.lens(), lambda_nm);
+  double max_field = std::atan(21.63 / std::abs(p.efl)) * 180 / M_PI;
+  while (max_field > 0.5 && !RealImageHeight(tracer, max_field, lambda_nm)) max_field *= 0.95;
+  return {0.0, 0.7 * max_field, max_field};
+}
+
+Svg PlotLensLayout(const LensTracer& tracer, const std::vector<double>& fields, double lambda_nm) {
+  const LensPrescription& lens = tracer.lens();
+  const int n = int(lens.surfaces.size());
+  ParaxialData p = ComputeParaxial(lens, lambda_nm, tracer.StopSemiDiameter());
+  double max_semi = 0;
+  for (const LensSurface& s : lens.surfaces) max_semi = std::max(max_semi, s.semi_diameter);
+  // The drawing spans the elements and the image of the largest field on the film.
+  double y_extent = 1.3 * max_semi;
+  for (double f : fields)
+    if (std::optional<double> h = RealImageHeight(tracer, f, lambda_nm)) y_extent = std::max(y_extent, 1.1 * std::abs(*h));
+  const double z_start = -0.25 * std::max(tracer.FilmZ(), 4 * max_semi), z_end = tracer.FilmZ();
+  const double W = 960, H = 540, margin = 40;
+  double scale = std::min((W - 2 * margin) / (z_end - z_start), (H - 2 * margin - 40) / (2 * y_extent));
+  auto map = [&](double z, double y) { return Vec2d(margin + (z - z_start) * scale, H / 2 + 10 - y * scale); };
+  Svg svg(W, H);
+  svg.Text({margin, 24}, fmt::format("{}: EFL {:.2f} mm, f/{:.2f}, {:.1f} nm", lens.name, p.efl, p.fnumber, lambda_nm), 15);
+
+  // Elements: the profile of each surface followed by the next one's, where glass lies between.
+  auto profile = [&](int i, double from, double to) {
+    std::vector<Vec2d> pts;
+    const int steps = 48;
+    for (int k = 0; k <= steps; ++k) {
+      double y = from + (to - from) * k / steps;
+      pts.push_back(map(tracer.VertexZ(i) + tracer.Sag(i, std::abs(y)), y));
+    }
+    return pts;
+  };
+  for (int i = 0; i + 1 < n; ++i) {
+    if (!lens.surfaces[i].medium) continue;
+    double h = std::max(lens.surfaces[i].semi_diameter, lens.surfaces[i + 1].semi_diameter);
+    std::vector<Vec2d> poly = profile(i, -lens.surfaces[i].semi_diameter, lens.surfaces[i].semi_diameter);
+    // Flat rims out to the larger of the two apertures, as lens elements are ground.
+    poly.push_back(map(tracer.VertexZ(i) + tracer.Sag(i, lens.surfaces[i].semi_diameter), h));
+    poly.push_back(map(tracer.VertexZ(i + 1) + tracer.Sag(i + 1, lens.surfaces[i + 1].semi_diameter), h));
+    std::vector<Vec2d> back = profile(i + 1, lens.surfaces[i + 1].semi_diameter, -lens.surfaces[i + 1].semi_diameter);
+    poly.insert(poly.end(), back.begin(), back.end());
+    poly.push_back(map(tracer.VertexZ(i + 1) + tracer.Sag(i + 1, lens.surfaces[i + 1].semi_diameter), -h));
+    poly.push_back(map(tracer.VertexZ(i) + tracer.Sag(i, lens.surfaces[i].semi_diameter), -h));
+    svg.Polygon(poly, "#cfe3f5", "#2b5d8a", 1.2);
+  }
+  // Optical axis, stop, film.
+  svg.Line(map(z_start, 0), map(z_end, 0), "#888", 0.8, "6,4");
+  int stop = lens.StopIndex();
+  if (stop >= 0) {
+    double zs = tracer.VertexZ(stop), r = tracer.StopSemiDiameter(), outer = std::max(r * 1.25, r + 0.08 * max_semi);
+    svg.Line(map(zs, r), map(zs, outer), "#000", 3);
+    svg.Line(map(zs, -r), map(zs, -outer), "#000", 3);
+  }
+  svg.Line(map(z_end, -y_extent), map(z_end, y_extent), "#444", 2);
+  svg.Text(map(z_end, -y_extent) + Vec2d(0, 16), "film", 11, "middle");
+
+  // Ray fans.
+  const char* colours[] = {"#1f5fd1", "#1a9e3a", "#d12f1f", "#a31fd1", "#d18a1f"};
+  for (size_t f = 0; f < fields.size(); ++f) {
+    double theta = fields[f] * M_PI / 180;
+    std::optional<LensRay> chief = ChiefRay(tracer, fields[f], lambda_nm);
+    if (!chief) continue;
+    Vec3d dir(0, std::sin(theta), std::cos(theta));
+    for (double frac : {-1.0, -0.5, 0.0, 0.5, 1.0}) {
+      // Across the entrance pupil, perpendicular to the beam, measured at the chief ray's start.
+      double y0 = chief->o.y + 0.98 * frac * p.entrance_pupil_diameter / 2 / std::cos(theta);
+      LensRay r{{0, y0, chief->o.z}, dir};
+      // Begin the drawn ray at the left edge of the plot.
+      double back = (chief->o.z - z_start) / dir.z;
+      r.o = r.o - dir * back;
+      std::vector<Vec3d> path;
+      TraceResult t = tracer.TraceFromObject(r, lambda_nm, &path);
+      std::vector<Vec2d> pts = {map(r.o.z, r.o.y)};
+      for (const Vec3d& q : path) pts.push_back(map(q.z, q.y));
+      if (t.ray && t.ray->d.z > 0) {
+        double s = (z_end - t.ray->o.z) / t.ray->d.z;
+        pts.push_back(map(z_end, t.ray->o.y + t.ray->d.y * s));
+      }
+      svg.Polyline(pts, colours[f % 5], 0.9, 0.85);
+    }
+    svg.Text({W - margin, 24.0 + 16 * (f + 1)}, fmt::format("field {:.1f} deg", fields[f]), 12, "end", colours[f % 5]);
+  }
+  return svg;
+}
+
+}  // namespace objektiv

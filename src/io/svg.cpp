@@ -1,0 +1,64 @@
+#include "io/svg.h"
+
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "base/error.h"
+
+namespace objektiv {
+
+namespace {
+std::string Points(const std::vector<Vec2d>& pts) {
+  std::string s;
+  for (const Vec2d& p : pts) s += fmt::format("{:.3f},{:.3f} ", p.x, p.y);
+  return s;
+}
+std::string Escape(const std::string& t) {
+  std::string r;
+  for (char c : t) {
+    if (c == '&') r += "&amp;";
+    else if (c == '<') r += "&lt;";
+    else if (c == '>') r += "&gt;";
+    else r += c;
+  }
+  return r;
+}
+}  // namespace
+
+void Svg::Line(Vec2d a, Vec2d b, const std::string& stroke, double width, const std::string& dash) {
+  items_.push_back(fmt::format(R"(<line x1="{:.3f}" y1="{:.3f}" x2="{:.3f}" y2="{:.3f}" stroke="{}" stroke-width="{}"{}/>)",
+                               a.x, a.y, b.x, b.y, stroke, width,
+                               dash.empty() ? "" : fmt::format(R"( stroke-dasharray="{}")", dash)));
+}
+
+void Svg::Polyline(const std::vector<Vec2d>& pts, const std::string& stroke, double width, double opacity) {
+  items_.push_back(fmt::format(R"(<polyline points="{}" fill="none" stroke="{}" stroke-width="{}" stroke-opacity="{}"/>)",
+                               Points(pts), stroke, width, opacity));
+}
+
+void Svg::Polygon(const std::vector<Vec2d>& pts, const std::string& fill, const std::string& stroke, double width) {
+  items_.push_back(fmt::format(R"(<polygon points="{}" fill="{}" stroke="{}" stroke-width="{}"/>)", Points(pts), fill,
+                               stroke, width));
+}
+
+void Svg::Text(Vec2d at, const std::string& text, double size, const std::string& anchor, const std::string& fill) {
+  items_.push_back(fmt::format(R"(<text x="{:.2f}" y="{:.2f}" font-family="sans-serif" font-size="{}" text-anchor="{}" fill="{}">{}</text>)",
+                               at.x, at.y, size, anchor, fill, Escape(text)));
+}
+
+std::string Svg::ToString() const {
+  std::string s = fmt::format(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\">\n"
+      "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
+      width_, height_);
+  for (const std::string& i : items_) s += i + "\n";
+  return s + "</svg>\n";
+}
+
+void Svg::Write(const std::string& path) const {
+  std::ofstream out(path);
+  if (!out || !(out << ToString())) throw InputError(fmt::format("{}: cannot write the SVG file", path));
+}
+
+}  // namespace objektiv

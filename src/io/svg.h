@@ -1,0 +1,27 @@
+// A minimal SVG document builder for plots (lines, polylines, polygons, text).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "base/vec.h"
+
+namespace objektiv {
+
+class Svg {
+ public:
+  Svg(double width, double height) : width_(width), height_(height) {}
+  void Line(Vec2d a, Vec2d b, const std::string& stroke, double width = 1, const std::string& dash = "");
+  void Polyline(const std::vector<Vec2d>& points, const std::string& stroke, double width = 1, double opacity = 1);
+  void Polygon(const std::vector<Vec2d>& points, const std::string& fill, const std::string& stroke, double width = 1);
+  void Text(Vec2d at, const std::string& text, double size = 12, const std::string& anchor = "start",
+            const std::string& fill = "#222");
+  std::string ToString() const;
+  // Throws InputError naming the file if it cannot be written.
+  void Write(const std::string& path) const;
+
+ private:
+  double width_, height_;
+  std::vector<std::string> items_;
+};
+
+}  // namespace objektiv
