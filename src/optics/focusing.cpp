@@ -18,7 +18,7 @@ ObjectRay TraceFromObjectPoint(const LensPrescription& lens, double s, double la
   for (size_t i = 0; i < surf.size(); ++i) {
     double n_before = i > 0 ? surf[i - 1].IndexAfter(lambda_nm) : 1.0, n_after = surf[i].IndexAfter(lambda_nm);
     if (surf[i].is_stop) y_stop = y;
-    nu -= y * surf[i].Curvature() * (n_after - n_before);
+    nu -= y * surf[i].ParaxialCurvature() * (n_after - n_before);
     if (i + 1 < surf.size()) y += surf[i].thickness * nu / n_after;
   }
   return {y, nu, y_stop};
@@ -82,6 +82,7 @@ LensPrescription ScaleLens(const LensPrescription& lens, double factor) {
     s.thickness *= factor;
     s.semi_diameter *= factor;
     // z = a r^2k scales as z' = factor z at r' = factor r: a' = a / factor^(2k - 1).
+    s.a2 /= factor;
     double scale = factor * factor * factor;  // 2k - 1 = 3 for a4
     for (double& a : s.aspheric) {
       a /= scale;

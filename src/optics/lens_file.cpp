@@ -11,6 +11,7 @@
 #include "base/error.h"
 #include "optics/glass_catalog.h"
 #include "optics/pbrt_lens.h"
+#include "optics/zemax_lens.h"
 
 namespace objektiv {
 namespace {
@@ -141,7 +142,8 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
 LensPrescription ReadLensFile(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
   if (ext == ".dat") return ReadPbrtLens(path);
-  if (ext != ".lens") throw MakeInputError(path, 0, "unknown lens file type '{}' (.lens or .dat)", ext);
+  if (ext == ".zmx" || ext == ".ZMX") return ReadZemaxLens(path);
+  if (ext != ".lens") throw MakeInputError(path, 0, "unknown lens file type '{}' (.lens, .dat or .zmx)", ext);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw MakeInputError(path, 0, "cannot open lens file");
   std::stringstream ss;

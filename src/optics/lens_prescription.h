@@ -17,11 +17,20 @@ struct LensSurface {
   bool is_stop = false;       // the aperture stop (a plane iris, no refraction)
   double conic = 0;           // k: 0 sphere, -1 paraboloid
   std::array<double, 7> aspheric{};  // even aspheric coefficients a4, a6, ..., a16
+  double a2 = 0;              // r^2 aspheric term (Zemax EVENASPH PARM 1); adds 2 a2 to the paraxial curvature
   std::string coating;        // anti-reflection coating name (empty: uncoated)
   // Medium after this surface (towards the film); null means air.
   std::shared_ptr<const Glass> medium;
 
   double Curvature() const { return (flat || is_stop || radius == 0) ? 0.0 : 1.0 / radius; }
+  // Curvature at the vertex, including the r^2 aspheric term: what paraxial optics sees.
+  double ParaxialCurvature() const { return Curvature() + 2 * a2; }
+  bool HasAsphericTerms() const {
+    if (a2 != 0) return true;
+    for (double a : aspheric)
+      if (a != 0) return true;
+    return false;
+  }
   double IndexAfter(double lambda_nm) const { return medium ? medium->Index(lambda_nm) : 1.0; }
 };
 

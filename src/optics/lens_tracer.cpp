@@ -33,6 +33,7 @@ double LensTracer::Sag(int i, double r) const {
     double arg = 1 - (1 + s.conic) * c * c * r2;
     z = c * r2 / (1 + std::sqrt(std::max(arg, 0.0)));
   }
+  z += s.a2 * r2;
   double rp = r2 * r2;  // r^4
   for (double a : s.aspheric) {
     z += a * rp;
@@ -49,6 +50,7 @@ double LensTracer::SagSlope(int i, double r) const {
     double arg = 1 - (1 + s.conic) * c * c * r2;
     dz = c * r / std::sqrt(std::max(arg, 1e-300));
   }
+  dz += 2 * s.a2 * r;
   double rp = r2 * r;  // r^3
   int order = 4;
   for (double a : s.aspheric) {
@@ -72,7 +74,7 @@ std::optional<double> LensTracer::Intersect(int i, const LensRay& ray) const {
   Vec3d o = ray.o - Vec3d(0, 0, vertex_z_[i]);  // relative to the vertex
   const Vec3d& d = ray.d;
   double c = s.Curvature();
-  bool aspheric = std::any_of(s.aspheric.begin(), s.aspheric.end(), [](double a) { return a != 0; });
+  bool aspheric = s.HasAsphericTerms();
   double t;
   if (c == 0) {
     if (d.z == 0) return std::nullopt;

@@ -18,7 +18,7 @@ YNu TraceRange(const LensPrescription& lens, double lambda_nm, YNu ray, int firs
   const auto& s = lens.surfaces;
   int step = backward ? -1 : 1;
   for (int i = first;; i += step) {
-    double c = s[i].Curvature();
+    double c = s[i].ParaxialCurvature();
     double n_object = i > 0 ? s[i - 1].IndexAfter(lambda_nm) : 1.0, n_film = s[i].IndexAfter(lambda_nm);
     double n_before = backward ? n_film : n_object, n_after = backward ? n_object : n_film;
     if (backward) c = -c;  // seen from the film side the curvature changes sign

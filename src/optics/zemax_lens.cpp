@@ -1,0 +1,215 @@
+#include "optics/zemax_lens.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "base/error.h"
+#include "base/log.h"
+#include "optics/glass_catalog.h"
+
+namespace objektiv {
+namespace {
+
+// UTF-16 (either byte order, with a byte-order mark) or UTF-8/ASCII to plain ASCII.
+std::string DecodeText(const std::string& raw) {
+  if (raw.size() >= 2 && ((uint8_t(raw[0]) == 0xff && uint8_t(raw[1]) == 0xfe) ||
+                          (uint8_t(raw[0]) == 0xfe && uint8_t(raw[1]) == 0xff))) {
+    bool le = uint8_t(raw[0]) == 0xff;
+    std::string out;
+    for (size_t i = 2; i + 1 < raw.size(); i += 2) {
+      unsigned c = le ? (uint8_t(raw[i]) | (uint8_t(raw[i + 1]) << 8)) : ((uint8_t(raw[i]) << 8) | uint8_t(raw[i + 1]));
+      out += c < 128 ? char(c) : '?';
+    }
+    return out;
+  }
+  if (raw.size() >= 3 && uint8_t(raw[0]) == 0xef && uint8_t(raw[1]) == 0xbb && uint8_t(raw[2]) == 0xbf) return raw.substr(3);
+  return raw;
+}
+
+struct ZSurface {
+  int line = 0;
+  std::string type = "STANDARD";
+  double curv = 0, disz = 0, diam = 0, coni = 0;
+  bool stop = false, infinite_thickness = false;
+  std::string glass;
+  double model_nd = 0, model_vd = 0;
+  double parm[9] = {};
+};
+
+double Number(const std::string& s, const std::string& path, int line) {
+  if (s == "INFINITY" || s == "Infinity" || s == "inf") return INFINITY;
+  char* end = nullptr;
+  errno = 0;
+  double v = std::strtod(s.c_str(), &end);
+  if (end == s.c_str() || *end != '\0' || errno == ERANGE || std::isnan(v))
+    throw MakeInputError(path, line, "'{}' is not a number", s);
+  return v;
+}
+
+}  // namespace
+
+LensPrescription ReadZemaxLens(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw MakeInputError(path, 0, "cannot open Zemax file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ParseZemaxLens(ss.str(), path);
+}
+
+LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path) {
+  std::string text = DecodeText(raw);
+  std::istringstream lines(text);
+  std::string line;
+  int number = 0;
+  double unit = 1;  // to millimetres
+  std::string name = std::filesystem::path(path).stem().string();
+  std::vector<ZSurface> surfs;
+  std::set<std::string> warned;
+  auto warn_once = [&](const std::string& what, int at) {
+    if (warned.insert(what).second) spdlog::warn("{}:{}: not supported, ignored: {}", path, at, what);
+  };
+  // Keywords that carry nothing for sequential refraction of a rotationally symmetric lens.
+  static const std::set<std::string> kIgnored = {
+      "VERS", "MODE", "NOTE", "PFIL", "LANG", "ENPD", "ENVD", "GFAC", "GCAT", "RAIM", "PUSH", "SDMA", "FTYP", "ROPD",
+      "PICB", "XFLN", "YFLN", "FWGN", "VDXN", "VDYN", "VCXN", "VCYN", "VANN", "WAVM", "PWAV", "GLRS", "GSTD", "NSCD",
+      "COFN", "SUMM", "FLOA", "MNUM", "MOFF", "TOL", "MNCA", "MNEA", "MNCG", "MNEG", "MXCA", "MXCG", "RGLA", "TRAC",
+      "HIDE", "SLAB", "MAZH", "COMM", "FLAP", "POPS", "BLNK", "TCEN", "XDAT", "YDAT", "FIMP", "OBNA", "ZVDX", "ZVDY",
+      "ZVCX", "ZVCY", "ZVAN", "WAVN", "WWGN", "CONF", "DMFS", "OPDX", "MIRR", "XFIE", "YFIE"};
+  ZSurface* cur = nullptr;
+  while (std::getline(lines, line)) {
+    ++number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::istringstream tok(line);
+    std::string key;
+    if (!(tok >> key)) continue;
+    std::vector<std::string> f;
+    for (std::string t; tok >> t;) f.push_back(t);
+    auto need = [&](size_t n) {
+      if (f.size() < n) throw MakeInputError(path, number, "{} needs {} value(s)", key, n);
+    };
+    if (key == "SURF") {
+      need(1);
+      surfs.emplace_back();
+      cur = &surfs.back();
+      cur->line = number;
+      continue;
+    }
+    if (key == "NAME") {
+      std::string rest;
+      for (const auto& s : f) rest += (rest.empty() ? "" : " ") + s;
+      if (!rest.empty()) name = rest;
+      continue;
+    }
+    if (key == "UNIT") {
+      need(1);
+      if (f[0] == "MM") unit = 1;
+      else if (f[0] == "CM") unit = 10;
+      else if (f[0] == "IN") unit = 25.4;
+      else if (f[0] == "METER" || f[0] == "M") unit = 1000;
+      else throw MakeInputError(path, number, "unknown lens unit '{}'", f[0]);
+      continue;
+    }
+    if (!cur) {
+      if (!kIgnored.count(key)) warn_once(key, number);
+      continue;
+    }
+    if (key == "TYPE") {
+      need(1);
+      cur->type = f[0];
+      if (f[0] != "STANDARD" && f[0] != "EVENASPH")
+        throw MakeInputError(path, number, "surface type {} is not supported (STANDARD and EVENASPH are)", f[0]);
+    } else if (key == "CURV") {
+      need(1);
+      cur->curv = Number(f[0], path, number);
+    } else if (key == "DISZ") {
+      need(1);
+      cur->disz = Number(f[0], path, number);
+      cur->infinite_thickness = std::isinf(cur->disz);
+    } else if (key == "DIAM") {
+      need(1);
+      cur->diam = Number(f[0], path, number);
+    } else if (key == "CONI") {
+      need(1);
+      cur->coni = Number(f[0], path, number);
+    } else if (key == "STOP") {
+      cur->stop = true;
+    } else if (key == "GLAS") {
+      need(1);
+      cur->glass = f[0];
+      if (f.size() >= 5) {
+        cur->model_nd = Number(f[3], path, number);
+        cur->model_vd = Number(f[4], path, number);
+      }
+    } else if (key == "PARM") {
+      need(2);
+      int k = std::atoi(f[0].c_str());
+      if (k < 1 || k > 8) throw MakeInputError(path, number, "PARM index {} outside 1-8", f[0]);
+      cur->parm[k] = Number(f[1], path, number);
+    } else if (!kIgnored.count(key)) {
+      warn_once(key, number);
+    }
+  }
+  if (surfs.size() < 3) throw MakeInputError(path, 0, "a lens needs an object surface, at least one surface and an image surface");
+
+  LensPrescription lens;
+  lens.name = name;
+  lens.source = path;
+  bool have_stop = false;
+  // Surfaces 1 .. n-2 are the lens; the last thickness before the image is the back focus.
+  for (size_t i = 1; i + 1 < surfs.size(); ++i) {
+    const ZSurface& z = surfs[i];
+    if (z.infinite_thickness) throw MakeInputError(path, z.line, "an infinite thickness inside the lens");
+    if (!(z.diam > 0)) throw MakeInputError(path, z.line, "surface {} has no semi-diameter (DIAM)", i);
+    LensSurface s;
+    s.thickness = z.disz * unit;
+    s.semi_diameter = z.diam * unit;
+    s.conic = z.coni;
+    if (z.curv == 0) s.flat = true;
+    else s.radius = unit / z.curv;
+    if (z.type == "EVENASPH") {
+      // PARM k multiplies r^(2k) in lens units: convert to mm.
+      s.a2 = z.parm[1] / unit;
+      for (int k = 2; k <= 8; ++k) s.aspheric[k - 2] = z.parm[k] / std::pow(unit, 2 * k - 1);
+    }
+    if (!z.glass.empty() && z.glass != "AIR") {
+      if (z.glass == "MIRROR") throw MakeInputError(path, z.line, "mirrors are not supported by the sequential refracting tracer");
+      const Glass* g = z.glass == "___BLANK" ? nullptr : GlassCatalog::Default().Find(z.glass);
+      if (g) {
+        s.medium = std::shared_ptr<const Glass>(std::shared_ptr<const Glass>(), g);
+      } else if (z.glass == "___BLANK" && z.model_nd > 0 && z.model_vd > 0) {
+        s.medium = std::make_shared<const Glass>(Glass::Model(z.model_nd, z.model_vd));  // Zemax's model glass
+      } else if (z.model_nd > 0 && z.model_vd > 0) {
+        spdlog::warn("{}:{}: glass {} is in no catalog; using a model glass nd {} vd {}", path, z.line, z.glass,
+                     z.model_nd, z.model_vd);
+        s.medium = std::make_shared<const Glass>(Glass::Model(z.model_nd, z.model_vd));
+      } else {
+        throw MakeInputError(path, z.line, "unknown glass '{}'", z.glass);
+      }
+    }
+    if (z.stop) {
+      have_stop = true;
+      if (s.flat && !s.medium && (i == 1 || !lens.surfaces.back().medium) && !s.HasAsphericTerms()) {
+        s.is_stop = true;  // a plain plane in air: the stop itself
+      } else {
+        // A refracting stop surface: put the iris in a plane at its vertex.
+        LensSurface iris;
+        iris.is_stop = true;
+        iris.flat = true;
+        iris.semi_diameter = s.semi_diameter;
+        iris.medium = lens.surfaces.empty() ? nullptr : lens.surfaces.back().medium;
+        lens.surfaces.push_back(iris);
+      }
+    }
+    lens.surfaces.push_back(std::move(s));
+  }
+  if (!have_stop) throw MakeInputError(path, 0, "no STOP surface");
+  if (lens.surfaces.back().medium) throw MakeInputError(path, surfs[surfs.size() - 2].line, "the last surface must leave the lens into air");
+  return lens;
+}
+
+}  // namespace objektiv
