@@ -109,3 +109,44 @@ TEST(LensPlot, LayoutHasOneShapePerElementAndRayFans) {
 }
 }  // namespace
 }  // namespace objektiv
+
+namespace objektiv {
+namespace {
+
+// A thin biconvex N-BK7 lens with a small stop in contact (f ~ 193 mm).
+LensTracer ThinLensAtStop() {
+  LensPrescription l = ParseNativeLens("stop 0 air 2\nsurface 200 0.01 N-BK7 30\nsurface -200 190 air 30\n", "thin.lens");
+  LensTracer t(l);
+  t.SetBackFocus(ComputeParaxial(l).bfl);
+  return t;
+}
+
+TEST(RealRays, RelativeIlluminationOfAThinLensIsCos4) {
+  LensTracer t = ThinLensAtStop();
+  EXPECT_NEAR(*RelativeIllumination(t, 0, 587.6), 1, 1e-12);
+  for (double field : {10.0, 20.0, 30.0}) {
+    double c = std::cos(field * M_PI / 180);
+    // The area estimate counts rays on a 61 x 61 grid (edge effects ~1%).
+    EXPECT_NEAR(*RelativeIllumination(t, field, 587.6), c * c * c * c, 0.015) << field;
+  }
+  // Vignetting by rims lowers it further: the double Gauss at full aperture, 20 degrees.
+  LensTracer dg = Focused("dgauss.50mm");
+  double c20 = std::pow(std::cos(20 * M_PI / 180), 4);
+  EXPECT_LT(*RelativeIllumination(dg, 20, 587.6), c20);
+}
+
+TEST(RealRays, FieldCurvatureOfAThinLensMatchesThirdOrderTheory) {
+  LensTracer t = ThinLensAtStop();
+  ParaxialData p = ComputeParaxial(t.lens());
+  double n = t.lens().surfaces[1].medium->Index(587.5618);
+  double field = 4, h = p.efl * std::tan(field * M_PI / 180);
+  FieldCurvature fc = *FieldCurvatureAt(t, field, 587.5618);
+  EXPECT_NEAR(fc.tangential, -(3 + 1 / n) * h * h / (2 * p.efl), 0.03 * (3 + 1 / n) * h * h / (2 * p.efl));
+  EXPECT_NEAR(fc.sagittal, -(1 + 1 / n) * h * h / (2 * p.efl), 0.03 * (1 + 1 / n) * h * h / (2 * p.efl));
+  // On axis both foci are on the film (placed at the paraxial focus for the same wavelength).
+  FieldCurvature axis = *FieldCurvatureAt(t, 0.0, 587.5618);
+  EXPECT_NEAR(axis.tangential, 0, 1e-6);
+}
+
+}  // namespace
+}  // namespace objektiv

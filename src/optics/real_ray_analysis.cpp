@@ -63,6 +63,98 @@ std::optional<double> Distortion(const LensTracer& tracer, double efl, double fi
   return (*h - ideal) / ideal;
 }
 
+namespace {
+// Launch a parallel beam from a field angle over a disk of `radius` (perpendicular to the
+// beam, centred on the chief ray's entrance) and trace it; returns the film points and the
+// launch count. `rim_passed` tells whether rays on the outer ring got through.
+struct Beam {
+  std::vector<Vec2d> points;
+  int launched = 0;
+  bool rim_passed = false;
+};
+Beam TraceBeam(const LensTracer& tracer, double field_deg, double lambda_nm, double y_centre, double radius, int n) {
+  Beam b;
+  double theta = field_deg * M_PI / 180;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      double x = radius * (2.0 * (i + 0.5) / n - 1), y = radius * (2.0 * (j + 0.5) / n - 1);
+      double rr = x * x + y * y;
+      if (rr > radius * radius) continue;
+      ++b.launched;
+      // Perpendicular to the beam the offset is y; in the plane z = kStartZ it is y / cos.
+      LensRay r{{x, y_centre + y / std::cos(theta), kStartZ}, {0, std::sin(theta), std::cos(theta)}};
+      TraceResult t = tracer.TraceFromObject(r, lambda_nm);
+      if (!t.ray || t.ray->d.z <= 0) continue;
+      if (rr > 0.8 * 0.8 * radius * radius) b.rim_passed = true;
+      double s = (tracer.FilmZ() - t.ray->o.z) / t.ray->d.z;
+      b.points.push_back({t.ray->o.x + t.ray->d.x * s, t.ray->o.y + t.ray->d.y * s});
+    }
+  return b;
+}
+
+double BeamCentre(const LensTracer& tracer, double field_deg, double lambda_nm) {
+  std::optional<LensRay> chief = ChiefRay(tracer, field_deg, lambda_nm);
+  if (chief) return chief->o.y;
+  ParaxialData p = ComputeParaxial(tracer.lens(), lambda_nm, tracer.StopSemiDiameter());
+  return -std::tan(field_deg * M_PI / 180) * (p.entrance_pupil_position - kStartZ);
+}
+}  // namespace
+
+std::optional<double> RelativeIllumination(const LensTracer& tracer, double field_deg, double lambda_nm) {
+  const int n = 61;
+  ParaxialData p = ComputeParaxial(tracer.lens(), lambda_nm, tracer.StopSemiDiameter());
+  // Beam cross-section that gets through, in a disk widened until its rim is blocked
+  // (real pupils grow off axis, strongly so in fisheyes).
+  auto beam_area = [&](double field) {
+    double radius = 0.75 * p.entrance_pupil_diameter;
+    for (int k = 0; k < 6; ++k) {
+      Beam b = TraceBeam(tracer, field, lambda_nm, BeamCentre(tracer, field, lambda_nm), radius, n);
+      if (!b.rim_passed || k == 5) return b.launched ? M_PI * radius * radius * b.points.size() / b.launched : 0.0;
+      radius *= 1.6;
+    }
+    return 0.0;
+  };
+  double a0 = beam_area(0);
+  if (field_deg == 0) return 1.0;
+  double theta = field_deg * M_PI / 180, dtheta = 1e-3 * std::max(1.0, field_deg) * M_PI / 180;
+  std::optional<double> h = RealImageHeight(tracer, field_deg, lambda_nm);
+  std::optional<double> h1 = RealImageHeight(tracer, field_deg + dtheta * 180 / M_PI, lambda_nm);
+  std::optional<double> h0 = RealImageHeight(tracer, field_deg - dtheta * 180 / M_PI, lambda_nm);
+  if (!h || !h0 || !h1 || a0 == 0) return std::nullopt;
+  double dh = (*h1 - *h0) / (2 * dtheta);
+  if (*h * dh <= 0) return std::nullopt;
+  double e = beam_area(field_deg) * std::sin(theta) / (*h * dh);
+  // On axis the same ratio tends to A / f^2 (h ~ f theta, dh/dtheta ~ f).
+  double e0 = a0 / (p.efl * p.efl);
+  return e / e0;
+}
+
+std::optional<FieldCurvature> FieldCurvatureAt(const LensTracer& tracer, double field_deg, double lambda_nm) {
+  std::optional<LensRay> chief = ChiefRay(tracer, field_deg, lambda_nm);
+  if (!chief) return std::nullopt;
+  ParaxialData p = ComputeParaxial(tracer.lens(), lambda_nm, tracer.StopSemiDiameter());
+  double theta = field_deg * M_PI / 180, eps = 1e-4 * p.entrance_pupil_diameter;
+  auto trace = [&](double dx, double dy) -> std::optional<LensRay> {
+    LensRay r{{dx, chief->o.y + dy / std::cos(theta), kStartZ}, chief->d};
+    LensTracer open = tracer;
+    open.SetStopSemiDiameter(1e30);
+    TraceResult t = open.TraceFromObject(r, lambda_nm);
+    if (!t.ray) return std::nullopt;
+    return t.ray;
+  };
+  auto c = trace(0, 0), tp = trace(0, eps), tm = trace(0, -eps), sp = trace(eps, 0);
+  if (!c || !tp || !tm || !sp) return std::nullopt;
+  // Tangential focus: where the two meridional neighbours cross (in the y-z plane).
+  auto cross_yz = [](const LensRay& a, const LensRay& b) {
+    double sa = a.d.y / a.d.z, sb = b.d.y / b.d.z;
+    return (b.o.y - sb * b.o.z - (a.o.y - sa * a.o.z)) / (sa - sb);
+  };
+  double zt = cross_yz(*tp, *tm);
+  // Sagittal focus: where the skew neighbour crosses the meridional plane x = 0.
+  double zs = sp->o.z - sp->o.x * sp->d.z / sp->d.x;
+  return FieldCurvature{zt - tracer.FilmZ(), zs - tracer.FilmZ()};
+}
+
 Spot SpotDiagram(const LensTracer& tracer, double field_deg, double lambda_nm, int n) {
   Spot spot;
   ParaxialData p = ComputeParaxial(tracer.lens(), lambda_nm, tracer.StopSemiDiameter());

@@ -30,6 +30,18 @@ struct Spot {
 // a circle 1.2 entrance-pupil radii wide, so that vignetting shows), traced to the film.
 Spot SpotDiagram(const LensTracer& tracer, double field_deg, double lambda_nm, int n = 31);
 
+// Relative illumination at a field angle (1 on axis): the image irradiance from a uniform
+// distant scene, E ~ A(theta) sin(theta) / (h dh/dtheta), with A the cross-section of the
+// beam from that direction that reaches the film (vignetting) and h the real image height
+// (distortion). For a thin lens with the stop at the lens this is the cos^4 law.
+std::optional<double> RelativeIllumination(const LensTracer& tracer, double field_deg, double lambda_nm);
+
+struct FieldCurvature {
+  double tangential = 0, sagittal = 0;  // focus positions relative to the film, along the axis (mm)
+};
+// Tangential and sagittal foci of the thin pencils around the chief ray at a field angle.
+std::optional<FieldCurvature> FieldCurvatureAt(const LensTracer& tracer, double field_deg, double lambda_nm);
+
 // Longitudinal spherical aberration: where a ray parallel to the axis at `height` mm crosses
 // the axis, minus the paraxial focus (mm; negative = in front of it).
 std::optional<double> LongitudinalAberration(const LensTracer& tracer, double height, double lambda_nm);
