@@ -3,6 +3,7 @@
 
 #include "app/commands.h"
 #include "base/error.h"
+#include "io/lens_analysis.h"
 #include "io/lens_plot.h"
 #include "optics/focusing.h"
 #include "optics/lens_file.h"
@@ -79,6 +80,14 @@ int RunInfo(const LensArgs& a) {
   return 0;
 }
 
+int RunAnalyze(const LensArgs& a) {
+  LensPrescription lens = LoadLens(a.lens);
+  LensTracer tracer(lens);
+  tracer.SetBackFocus(ComputeParaxial(lens).bfl);  // the paraxial focus for an object at infinity
+  WriteLensAnalysis(tracer, a.output);
+  return 0;
+}
+
 int RunPlot(const LensArgs& a) {
   LensPrescription lens = LoadLens(a.lens);
   LensTracer tracer(lens);
@@ -111,9 +120,14 @@ std::function<int()> AddLensCommand(CLI::App& app) {
       ->delimiter(',')
       ->check(CLI::Range(0.0, 89.0));
   plot->add_option("--wavelength", args->wavelength, "Wavelength in nm")->check(CLI::Range(300.0, 2500.0));
-  return [args, list, info, plot] {
+  CLI::App* analyze = lens->add_subcommand(
+      "analyze", "Real-ray analysis: spot diagrams, distortion, field curvature, relative illumination, colour (SVG + JSON)");
+  analyze->add_option("lens", args->lens, "Lens file or shipped lens name")->required();
+  analyze->add_option("-o,--output", args->output, "Output directory")->required();
+  return [args, list, info, plot, analyze] {
     if (list->parsed()) return RunList();
     if (plot->parsed()) return RunPlot(*args);
+    if (analyze->parsed()) return RunAnalyze(*args);
     return RunInfo(*args);
   };
 }

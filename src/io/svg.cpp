@@ -42,6 +42,11 @@ void Svg::Polygon(const std::vector<Vec2d>& pts, const std::string& fill, const 
                                stroke, width));
 }
 
+void Svg::Circle(Vec2d c, double r, const std::string& fill, double opacity) {
+  items_.push_back(fmt::format(R"(<circle cx="{:.2f}" cy="{:.2f}" r="{:.2f}" fill="{}" fill-opacity="{}"/>)", c.x, c.y, r,
+                               fill, opacity));
+}
+
 void Svg::Text(Vec2d at, const std::string& text, double size, const std::string& anchor, const std::string& fill) {
   items_.push_back(fmt::format(R"(<text x="{:.2f}" y="{:.2f}" font-family="sans-serif" font-size="{}" text-anchor="{}" fill="{}">{}</text>)",
                                at.x, at.y, size, anchor, fill, Escape(text)));

@@ -13,6 +13,7 @@ class Svg {
   void Line(Vec2d a, Vec2d b, const std::string& stroke, double width = 1, const std::string& dash = "");
   void Polyline(const std::vector<Vec2d>& points, const std::string& stroke, double width = 1, double opacity = 1);
   void Polygon(const std::vector<Vec2d>& points, const std::string& fill, const std::string& stroke, double width = 1);
+  void Circle(Vec2d centre, double radius, const std::string& fill, double opacity = 1);
   void Text(Vec2d at, const std::string& text, double size = 12, const std::string& anchor = "start",
             const std::string& fill = "#222");
   std::string ToString() const;
