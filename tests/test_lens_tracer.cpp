@@ -4,6 +4,7 @@
 #include "optics/lens_file.h"
 #include "optics/lens_tracer.h"
 #include "optics/paraxial.h"
+#include "base/vec.h"
 
 namespace objektiv {
 namespace {
@@ -114,6 +115,59 @@ TEST(LensTracer, AperturesClipAndTotalInternalReflectionStops) {
   TraceResult tir = exit_face.TraceFromObject({{0, 0, -1}, steep}, 550);
   EXPECT_FALSE(tir.ray);
   EXPECT_EQ(tir.failure, TraceFailure::kTotalInternalReflection);
+}
+
+}  // namespace
+}  // namespace objektiv
+
+namespace objektiv {
+namespace {
+
+TEST(LensTracer, FresnelAndAbsorptionThroughAPlate) {
+  LensTracer plate(Parse("stop 1 air 20\nsurface inf 10 N-BK7 20\nsurface inf 5 air 20\n"));
+  for (double lambda : {300.0, 550.0}) {
+    TraceResult r = plate.TraceFromObject({{0, 0, -5}, {0, 0, 1}}, lambda);
+    ASSERT_TRUE(r.ray);
+    double n = plate.lens().surfaces[1].medium->Index(lambda), R = Sqr(float((n - 1) / (n + 1)));
+    EXPECT_NEAR(r.fresnel_transmittance, (1 - R) * (1 - R), 1e-6);
+    EXPECT_NEAR(r.internal_transmittance, plate.lens().surfaces[1].medium->InternalTransmittance(lambda, 10), 1e-12);
+  }
+  // The catalog row for N-BK7 at 300 nm over 10 mm.
+  TraceResult uv = plate.TraceFromObject({{0, 0, -5}, {0, 0, 1}}, 300);
+  EXPECT_NEAR(uv.internal_transmittance, 0.30171, 1e-5);
+  // Obliquely the path in glass is longer: more absorption, and Fresnel grows.
+  Vec3d d = Normalize(Vec3d(0, std::sin(0.6), std::cos(0.6)));
+  TraceResult oblique = plate.TraceFromObject({{0, 0, -5}, d}, 300);
+  EXPECT_LT(oblique.internal_transmittance, uv.internal_transmittance);
+  EXPECT_LT(oblique.fresnel_transmittance, uv.fresnel_transmittance);
+  EXPECT_NEAR(FresnelReflectance(1, 1.5, 1), 0.04, 1e-12);
+  EXPECT_EQ(FresnelReflectance(1.5, 1, 0.5), 1.0);  // beyond the critical angle
+}
+
+TEST(LensTracer, BladedStops) {
+  LensTracer t(LoadLens("dgauss.50mm"));
+  double r = t.StopSemiDiameter();
+  EXPECT_TRUE(t.InsideStop(0.99 * r, 0));
+  t.SetStopBlades(6, 0, 0);  // corners at 0, 60, 120 ... degrees
+  EXPECT_TRUE(t.InsideStop(0.99 * r, 0));  // toward a corner
+  double flat = r * std::cos(M_PI / 6);     // the edge's distance, between corners (30 degrees)
+  EXPECT_TRUE(t.InsideStop(0.99 * flat * std::cos(M_PI / 6), 0.99 * flat * std::sin(M_PI / 6)));
+  EXPECT_FALSE(t.InsideStop(1.01 * flat * std::cos(M_PI / 6), 1.01 * flat * std::sin(M_PI / 6)));
+  t.SetStopBlades(6, 0, 30);  // rotated: now an edge faces +x
+  EXPECT_FALSE(t.InsideStop(0.95 * r, 0));
+  t.SetStopBlades(6, 1, 0);  // fully curved blades: a circle
+  EXPECT_TRUE(t.InsideStop(0.99 * r * std::cos(M_PI / 6), 0.99 * r * std::sin(M_PI / 6)));
+  t.SetStopBlades(6, 0.5, 0);  // in between: outside the straight edge, inside the circle
+  Vec2d mid(r * std::cos(M_PI / 6), r * std::sin(M_PI / 6));
+  double m = flat + 0.5 * (r - flat);
+  EXPECT_TRUE(t.InsideStop(0.99 * m * mid.x / r, 0.99 * m * mid.y / r));
+  EXPECT_FALSE(t.InsideStop(1.01 * m * mid.x / r, 1.01 * m * mid.y / r));
+  // The opening's area: a regular hexagon is 3 sqrt(3) / (2 pi) of the circle.
+  t.SetStopBlades(6, 0, 0);
+  int in = 0, n = 400;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) in += t.InsideStop(r * (2.0 * (i + 0.5) / n - 1), r * (2.0 * (j + 0.5) / n - 1));
+  EXPECT_NEAR(in * 4.0 / (n * n), 3 * std::sqrt(3.0) / 2, 0.01);
 }
 
 }  // namespace

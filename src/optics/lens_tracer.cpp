@@ -25,6 +25,43 @@ void LensTracer::SetStopSemiDiameter(double r) {
 
 double LensTracer::StopSemiDiameter() const { return stop_semi_; }
 
+void LensTracer::SetStopBlades(int blades, double curvature, double rotation_deg) {
+  blades_ = blades >= 3 ? blades : 0;
+  blade_curvature_ = std::clamp(curvature, 0.0, 1.0);
+  blade_rotation_ = rotation_deg * M_PI / 180;
+}
+
+bool LensTracer::InsideStop(double x, double y) const {
+  double r2 = x * x + y * y;
+  if (r2 > stop_semi_ * stop_semi_) return false;
+  if (blades_ == 0) return true;
+  // Corners at rotation + k sector; rotate into the frame of the blade the point faces, whose
+  // midline (through the middle of its edge) becomes +x.
+  double sector = 2 * M_PI / blades_, half = sector / 2;
+  double phi = std::atan2(y, x) - blade_rotation_;
+  phi -= sector * std::floor(phi / sector);
+  double a = phi - half, r = std::sqrt(r2);
+  double px = r * std::cos(a), py = r * std::sin(a);
+  double inner = stop_semi_ * std::cos(half);  // the straight blade's distance from the centre
+  if (blade_curvature_ == 0) return px <= inner;
+  // A circular arc through the two corners and bulging out to m on the bisector.
+  double m = inner + blade_curvature_ * (stop_semi_ - inner);
+  if (m >= stop_semi_) return true;  // the circle itself
+  double xc = (stop_semi_ * stop_semi_ - m * m) / (2 * (inner - m));
+  double radius = m - xc;
+  return (px - xc) * (px - xc) + py * py <= radius * radius;
+}
+
+double FresnelReflectance(double n1, double n2, double cos_i) {
+  cos_i = std::clamp(cos_i, 0.0, 1.0);
+  double eta = n1 / n2, sin2_t = eta * eta * (1 - cos_i * cos_i);
+  if (sin2_t >= 1) return 1;
+  double cos_t = std::sqrt(1 - sin2_t);
+  double rs = (n1 * cos_i - n2 * cos_t) / (n1 * cos_i + n2 * cos_t);
+  double rp = (n2 * cos_i - n1 * cos_t) / (n2 * cos_i + n1 * cos_t);
+  return 0.5 * (rs * rs + rp * rp);
+}
+
 double LensTracer::Sag(int i, double r) const {
   const LensSurface& s = lens_.surfaces[i];
   double c = s.Curvature(), r2 = r * r;
@@ -140,11 +177,17 @@ TraceResult LensTracer::Trace(const LensRay& in, double lambda_nm, bool from_fil
     Vec3d p = ray.o + ray.d * *t;
     if (path) path->push_back(p);
     double r = std::sqrt(p.x * p.x + p.y * p.y);
-    double limit = s.is_stop ? stop_semi_ : s.semi_diameter;
-    if (r > limit) {
+    bool blocked = s.is_stop ? !InsideStop(p.x, p.y) : r > s.semi_diameter;
+    if (blocked) {
       result.failure = TraceFailure::kClipped;
       result.surface = i;
       return result;
+    }
+    // Absorption along the segment just travelled, inside the medium between the surfaces.
+    if (k > 0) {
+      int medium_row = from_film ? i : i - 1;  // the row whose medium the segment crossed
+      if (const Glass* g = lens_.surfaces[medium_row].medium.get())
+        result.internal_transmittance *= g->InternalTransmittance(lambda_nm, *t);
     }
     ray.o = p;
     if (s.is_stop) continue;
@@ -157,6 +200,7 @@ TraceResult LensTracer::Trace(const LensRay& in, double lambda_nm, bool from_fil
     Vec3d nrm = Normal(i, p);
     if (Dot(nrm, ray.d) > 0) nrm = -nrm;
     double eta = n1 / n2, cos_i = -Dot(nrm, ray.d);
+    result.fresnel_transmittance *= 1 - FresnelReflectance(n1, n2, cos_i);
     double k2 = 1 - eta * eta * (1 - cos_i * cos_i);
     if (k2 < 0) {
       result.failure = TraceFailure::kTotalInternalReflection;

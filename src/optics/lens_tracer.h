@@ -19,7 +19,15 @@ struct TraceResult {
   std::optional<LensRay> ray;  // the ray after the last surface traced, if it got through
   TraceFailure failure = TraceFailure::kNone;
   int surface = -1;            // where it failed
+  // Fraction of the light that gets through: the product of the Fresnel transmittances
+  // (1 - R, unpolarised, uncoated) at every refracting surface and of the glasses' internal
+  // transmittances along the path (Beer-Lambert, from the catalogs' IT data).
+  double fresnel_transmittance = 1, internal_transmittance = 1;
 };
+
+// Unpolarised Fresnel reflectance for light going from index n1 into n2 at cos(theta_i)
+// (1 beyond the critical angle).
+double FresnelReflectance(double n1, double n2, double cos_i);
 
 class LensTracer {
  public:
@@ -40,6 +48,12 @@ class LensTracer {
   const LensPrescription& lens() const { return lens_; }
   double VertexZ(int i) const { return vertex_z_[i]; }
   double FilmZ() const { return film_z_; }
+  // The stop's polygonal shape: `blades` straight or curved blades (0: circular), rotated by
+  // `rotation_deg`; `curvature` 0 gives straight blades, 1 a circle, in between circular
+  // arcs through the polygon's corners.
+  void SetStopBlades(int blades, double curvature, double rotation_deg);
+  // Whether (x, y) in the stop plane lies inside the opening.
+  bool InsideStop(double x, double y) const;
   // Sag z(r) of surface i relative to its vertex, and dz/dr.
   double Sag(int i, double r) const;
   double SagSlope(int i, double r) const;
@@ -54,6 +68,8 @@ class LensTracer {
   std::vector<double> vertex_z_;
   double film_z_ = 0;
   double stop_semi_ = 0;
+  int blades_ = 0;
+  double blade_curvature_ = 0, blade_rotation_ = 0;
 };
 
 }  // namespace objektiv
