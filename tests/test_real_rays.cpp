@@ -150,3 +150,37 @@ TEST(RealRays, FieldCurvatureOfAThinLensMatchesThirdOrderTheory) {
 
 }  // namespace
 }  // namespace objektiv
+
+namespace objektiv {
+namespace {
+
+TEST(RealRays, BallLensMatchesItsClosedForm) {
+  // A glass sphere of radius R: EFL = n R / (2 (n - 1)) from its centre, BFL = EFL - R.
+  const double R = 5, n = 1.5;
+  LensPrescription ball = ParseNativeLens("stop 0 air 3\nsurface 5 10 n=1.5 5\nsurface -5 5 air 5\n", "ball.lens");
+  ParaxialData d = ComputeParaxial(ball);
+  EXPECT_NEAR(d.efl, n * R / (2 * (n - 1)), 1e-12);
+  EXPECT_NEAR(d.bfl, n * R / (2 * (n - 1)) - R, 1e-12);
+}
+
+TEST(RealRays, RealBackFocusAndFieldOfView) {
+  // Spherical aberration of a plain singlet pulls the best focus in front of the paraxial one;
+  // an aberration-free surface keeps it there.
+  LensTracer sphere(ParseNativeLens("stop 0 air 10\nsurface inf 8 n=1.5 12\nsurface -50 100 air 12\n", "s.lens"));
+  ParaxialData p = ComputeParaxial(sphere.lens());
+  EXPECT_LT(RealBackFocus(sphere, 587.6), p.bfl - 0.1);
+  LensTracer hyperbola(ParseNativeLens("stop 0 air 10\nsurface inf 8 n=1.5 12\nsurface -50 100 air 12 k=-2.25\n", "h.lens"));
+  EXPECT_NEAR(RealBackFocus(hyperbola, 587.6), ComputeParaxial(hyperbola.lens()).bfl, 1e-4);
+  // Field of view of the double Gauss on full frame: close to 2 atan(21.63 / 50.36) = 46.5
+  // degrees diagonally, a little more with its slight barrel distortion.
+  LensTracer dg = Focused("dgauss.50mm");
+  FieldOfView fov = SensorFieldOfView(dg, 36, 24, 587.6);
+  double paraxial = 2 * std::atan(std::hypot(36.0, 24.0) / 2 / 50.358) * 180 / M_PI;
+  EXPECT_GT(fov.diagonal, paraxial);
+  EXPECT_LT(fov.diagonal, paraxial + 1.0);
+  EXPECT_NEAR(fov.horizontal, 2 * std::atan(18 / 50.358) * 180 / M_PI, 0.5);
+  EXPECT_LT(fov.vertical, fov.horizontal);
+}
+
+}  // namespace
+}  // namespace objektiv

@@ -8,6 +8,7 @@
 #include "optics/focusing.h"
 #include "optics/lens_file.h"
 #include "optics/paraxial.h"
+#include "optics/real_ray_analysis.h"
 
 namespace objektiv {
 namespace {
@@ -17,8 +18,18 @@ struct LensArgs {
   std::vector<double> fields;
   double wavelength = 587.5618;
   double focus_m = 0;  // 0: infinity
+  std::string sensor = "36x24";
   bool json = false;
 };
+
+// "36x24" -> (36, 24) mm.
+std::pair<double, double> ParseSensor(const std::string& s) {
+  double w = 0, h = 0;
+  char x = 0;
+  if (std::sscanf(s.c_str(), "%lf%c%lf", &w, &x, &h) != 3 || (x != 'x' && x != 'X') || !(w > 0) || !(h > 0))
+    throw CLI::ValidationError("--sensor", "expects WIDTHxHEIGHT in mm, e.g. 36x24");
+  return {w, h};
+}
 
 int RunList() {
   std::printf("%-24s %10s %8s  %s\n", "name", "EFL (mm)", "f/", "source");
@@ -43,6 +54,11 @@ int RunInfo(const LensArgs& a) {
                                    "with unit focusing)",
                                    a.lens, a.focus_m));
   }
+  auto [sw, sh] = ParseSensor(a.sensor);
+  LensTracer tracer(lens);
+  tracer.SetBackFocus(d.bfl);
+  FieldOfView fov = SensorFieldOfView(tracer, sw, sh, a.wavelength);
+  double real_bfl = RealBackFocus(tracer, a.wavelength);
   std::string focus_json;
   if (focus)
     focus_json = fmt::format(
@@ -56,10 +72,12 @@ int RunInfo(const LensArgs& a) {
         "  \"entrance_pupil_position_mm\": %.6f,\n  \"exit_pupil_diameter_mm\": %.6f,\n"
         "  \"exit_pupil_position_mm\": %.6f,\n  \"front_principal_plane_mm\": %.6f,\n"
         "  \"back_principal_plane_mm\": %.6f,\n  \"stop_diameter_mm\": %.6f,\n  \"total_track_mm\": %.6f,\n"
-        "  \"surfaces\": %zu%s\n}\n",
+        "  \"surfaces\": %zu,\n  \"real_bfl_mm\": %.6f,\n  \"sensor_mm\": [%g, %g],\n"
+        "  \"fov_horizontal_deg\": %.4f,\n  \"fov_vertical_deg\": %.4f,\n  \"fov_diagonal_deg\": %.4f%s\n}\n",
         lens.name.c_str(), a.wavelength, d.efl, d.bfl, d.ffl, d.fnumber, d.entrance_pupil_diameter,
         d.entrance_pupil_position, d.exit_pupil_diameter, d.exit_pupil_position, d.front_principal_plane,
-        d.back_principal_plane, stop_diameter, lens.TotalTrack(), lens.surfaces.size(), focus_json.c_str());
+        d.back_principal_plane, stop_diameter, lens.TotalTrack(), lens.surfaces.size(), real_bfl, sw, sh,
+        fov.horizontal, fov.vertical, fov.diagonal, focus_json.c_str());
     return 0;
   }
   std::printf("%s (%s)\n", lens.name.c_str(), lens.source.c_str());
@@ -73,6 +91,9 @@ int RunInfo(const LensArgs& a) {
               d.exit_pupil_position);
   std::printf("  principal planes: front %.4f mm from the first vertex, back %.4f mm from the last\n",
               d.front_principal_plane, d.back_principal_plane);
+  std::printf("  real back focus (smallest on-axis spot): %.4f mm\n", real_bfl);
+  std::printf("  field of view on %gx%g mm (real chief rays): %.2f x %.2f deg, %.2f deg diagonal\n", sw, sh,
+              fov.horizontal, fov.vertical, fov.diagonal);
   if (focus)
     std::printf("  focused at %.4g m from the film (unit focusing): back focus %.4f mm, object %.2f mm in front of the\n"
                 "  first vertex, magnification %.6f, working f-number %.3f\n",
@@ -112,6 +133,7 @@ std::function<int()> AddLensCommand(CLI::App& app) {
       ->check(CLI::Range(300.0, 2500.0));
   info->add_option("--focus", args->focus_m, "Also focus on an object this many metres from the film (unit focusing)")
       ->check(CLI::PositiveNumber);
+  info->add_option("--sensor", args->sensor, "Sensor size WIDTHxHEIGHT in mm for the field of view (default 36x24)");
   info->add_flag("--json", args->json, "Print the figures as a JSON object");
   CLI::App* plot = lens->add_subcommand("plot", "Draw the lens layout (elements, stop, ray fans) as SVG");
   plot->add_option("lens", args->lens, "Lens file or shipped lens name")->required();

@@ -190,6 +190,54 @@ Spot SpotDiagram(const LensTracer& tracer, double field_deg, double lambda_nm, i
   return spot;
 }
 
+namespace {
+// The field angle whose real image height is h (bisection; heights grow with the field).
+double FieldForHeight(const LensTracer& tracer, double h, double efl, double lambda_nm) {
+  double paraxial = std::atan(h / std::abs(efl)) * 180 / M_PI;
+  double lo = 0, hi = 89;
+  for (int it = 0; it < 80; ++it) {
+    double mid = 0.5 * (lo + hi);
+    std::optional<double> hm = RealImageHeight(tracer, mid, lambda_nm);
+    if (!hm) {
+      hi = mid;  // beyond what the lens can image: search lower
+      continue;
+    }
+    (std::abs(*hm) < h ? lo : hi) = mid;
+  }
+  std::optional<double> got = RealImageHeight(tracer, lo, lambda_nm);
+  return (got && std::abs(std::abs(*got) - h) < 1e-6 * h) ? lo : paraxial;
+}
+}  // namespace
+
+FieldOfView SensorFieldOfView(const LensTracer& tracer, double width, double height, double lambda_nm) {
+  double efl = ComputeParaxial(tracer.lens(), lambda_nm).efl;
+  return {2 * FieldForHeight(tracer, width / 2, efl, lambda_nm), 2 * FieldForHeight(tracer, height / 2, efl, lambda_nm),
+          2 * FieldForHeight(tracer, std::hypot(width, height) / 2, efl, lambda_nm)};
+}
+
+double RealBackFocus(const LensTracer& tracer, double lambda_nm) {
+  ParaxialData p = ComputeParaxial(tracer.lens(), lambda_nm, tracer.StopSemiDiameter());
+  LensTracer t = tracer;
+  auto rms = [&](double back_focus) {
+    t.SetBackFocus(back_focus);
+    return SpotDiagram(t, 0, lambda_nm, 41).rms_radius;
+  };
+  // Golden-section search within a few focal depths of the paraxial focus.
+  double a = p.bfl - 0.05 * std::abs(p.efl), b = p.bfl + 0.05 * std::abs(p.efl);
+  const double g = 0.5 * (std::sqrt(5.0) - 1);
+  double c = b - g * (b - a), d = a + g * (b - a), fc = rms(c), fd = rms(d);
+  for (int it = 0; it < 80 && b - a > 1e-7 * std::abs(p.efl); ++it) {
+    if (fc < fd) {
+      b = d, d = c, fd = fc;
+      c = b - g * (b - a), fc = rms(c);
+    } else {
+      a = c, c = d, fc = fd;
+      d = a + g * (b - a), fd = rms(d);
+    }
+  }
+  return 0.5 * (a + b);
+}
+
 std::optional<double> LongitudinalAberration(const LensTracer& tracer, double height, double lambda_nm) {
   ParaxialData p = ComputeParaxial(tracer.lens(), lambda_nm);
   TraceResult t = tracer.TraceFromObject({{0, height, kStartZ}, {0, 0, 1}}, lambda_nm);

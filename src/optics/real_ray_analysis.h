@@ -42,6 +42,18 @@ struct FieldCurvature {
 // Tangential and sagittal foci of the thin pencils around the chief ray at a field angle.
 std::optional<FieldCurvature> FieldCurvatureAt(const LensTracer& tracer, double field_deg, double lambda_nm);
 
+// Full field of view (degrees) of a sensor `width` x `height` mm: the field angles whose real
+// chief rays reach the edges and the corner (distortion included); paraxial (rectilinear)
+// where no chief ray reaches.
+struct FieldOfView {
+  double horizontal = 0, vertical = 0, diagonal = 0;
+};
+FieldOfView SensorFieldOfView(const LensTracer& tracer, double width, double height, double lambda_nm);
+
+// The real back focus: the film distance behind the last vertex that minimises the RMS
+// radius of the on-axis spot (in mm).
+double RealBackFocus(const LensTracer& tracer, double lambda_nm);
+
 // Longitudinal spherical aberration: where a ray parallel to the axis at `height` mm crosses
 // the axis, minus the paraxial focus (mm; negative = in front of it).
 std::optional<double> LongitudinalAberration(const LensTracer& tracer, double height, double lambda_nm);
