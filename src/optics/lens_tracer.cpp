@@ -117,29 +117,25 @@ std::optional<double> LensTracer::Intersect(int i, const LensRay& ray) const {
     if (d.z == 0) return std::nullopt;
     t = -o.z / d.z;
   } else {
-    // Conic through the vertex: c (x^2 + y^2) + (1 + k) c z^2 - 2 z = 0.
+    // Conic through the vertex: c (x^2 + y^2) + (1 + k) c z^2 - 2 z = 0. Its two sheets are
+    // told apart by (1 + k) c z <= 1 (the vertex's) or >= 1; the surface is the vertex's sheet,
+    // and the ray meets it first at the smaller positive root.
     double k1 = 1 + s.conic;
     double A = c * (d.x * d.x + d.y * d.y) + k1 * c * d.z * d.z;
     double B = 2 * (c * (o.x * d.x + o.y * d.y) + k1 * c * o.z * d.z - d.z);
     double C = c * (o.x * o.x + o.y * o.y) + k1 * c * o.z * o.z - 2 * o.z;
     double disc = B * B - 4 * A * C;
     if (disc < 0) return std::nullopt;
-    // Of the two roots, the one on the sheet through the vertex (sag continuous from 0).
-    double q = B < 0 ? -0.5 * (B - std::sqrt(disc)) : -0.5 * (B + std::sqrt(disc));
-    double roots[2] = {q != 0 ? C / q : -C / B, A != 0 ? q / A : std::numeric_limits<double>::infinity()};
-    double best = std::numeric_limits<double>::infinity(), best_err = best;
+    double q = -0.5 * (B + std::copysign(std::sqrt(disc), B));
+    double roots[2] = {q != 0 ? C / q : std::numeric_limits<double>::infinity(),
+                       A != 0 ? q / A : std::numeric_limits<double>::infinity()};
+    double best = std::numeric_limits<double>::infinity();
     for (double tr : roots) {
-      if (!std::isfinite(tr)) continue;
-      Vec3d p = o + d * tr;
-      double r = std::sqrt(p.x * p.x + p.y * p.y);
-      if (k1 * c * c * r * r > 1) continue;
-      double err = std::abs(p.z - Sag(i, r));
-      if (err < best_err) {
-        best_err = err;
-        best = tr;
-      }
+      if (!std::isfinite(tr) || tr <= -1e-9) continue;
+      if (k1 * c * (o.z + tr * d.z) > 1) continue;  // the other sheet
+      best = std::min(best, tr);
     }
-    if (!std::isfinite(best) || best_err > 1e-6 * (1 + std::abs(1 / c))) return std::nullopt;
+    if (!std::isfinite(best)) return std::nullopt;
     t = best;
   }
   if (aspheric) {

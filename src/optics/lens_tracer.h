@@ -42,6 +42,7 @@ class LensTracer {
   // The stop's semi-diameter may be narrowed (never widened) to set an f-number.
   void SetStopSemiDiameter(double r);
   double StopSemiDiameter() const;
+  bool StopIsBladed() const { return blades_ >= 3; }
 
   // Moves the film to `distance` mm behind the last vertex (the last thickness).
   void SetBackFocus(double distance) { film_z_ = vertex_z_.back() + distance; }

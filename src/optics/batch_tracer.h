@@ -1,0 +1,49 @@
+// The renderer's lens tracer: single precision, many rays at once in structure-of-arrays form
+// (surfaces in the outer loop, rays in the inner loop, so that the compiler vectorises it),
+// each ray with its own wavelength (each glass's index is tabulated at 1 nm). It follows the
+// double-precision LensTracer to well below 1e-4 mm at the film.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "optics/lens_tracer.h"
+
+namespace objektiv {
+
+struct RayBatch {
+  std::vector<float> ox, oy, oz, dx, dy, dz, lambda;
+  std::vector<float> transmittance;  // Fresnel and internal transmittance, multiplied along
+  std::vector<uint8_t> alive;
+  void Resize(size_t n);
+  size_t Size() const { return ox.size(); }
+};
+
+class BatchLensTracer {
+ public:
+  // Copies what it needs from `tracer` (surfaces, stop size and shape, film position).
+  explicit BatchLensTracer(const LensTracer& tracer);
+  // In place, film toward object; rays that are blocked get alive = 0. With `transmission`
+  // the Fresnel losses and glass absorption are multiplied into `transmittance`.
+  void TraceFromFilm(RayBatch& rays, bool transmission = true) const;
+  void TraceFromObject(RayBatch& rays, bool transmission = true) const;
+  float FilmZ() const { return film_z_; }
+
+ private:
+  struct Surface {
+    float z, c, k1, semi2;        // vertex z, curvature, 1 + conic, semi-diameter squared
+    bool plane, aspheric, is_stop;
+    float a2, a[7];
+    int medium_after;            // index into index_tables_ (-1: air)
+  };
+  void Trace(RayBatch& rays, bool from_film, bool transmission) const;
+  float Index(int medium, float lambda) const;
+  float Absorption(int medium, float lambda) const;  // per mm
+
+  std::vector<Surface> surfaces_;
+  std::vector<std::vector<float>> index_tables_, absorption_tables_;  // per medium, 360..830 nm at 1 nm
+  float film_z_;
+  LensTracer shape_;  // a copy, for bladed stops (the circle is tested inline)
+  bool bladed_;
+};
+
+}  // namespace objektiv
