@@ -5,6 +5,9 @@
 #include "base/rng.h"
 #include "base/sampling.h"
 #include "io/scene_loader.h"
+#include "optics/batch_tracer.h"
+#include "optics/lens_file.h"
+#include "optics/paraxial.h"
 #include "render/sampler.h"
 #include "scene/bsdf.h"
 #include "scene/fresnel.h"
@@ -119,6 +122,63 @@ void BM_Sampler2D(benchmark::State& state) {
   state.SetLabel(names[state.range(0)]);
 }
 BENCHMARK(BM_Sampler2D)->DenseRange(0, 2);
+
+// Rays from uniform points on a 36 x 24 mm film toward uniform points on the rear element of
+// the double Gauss at full aperture; every launched ray counts, blocked or not.
+struct LensBenchRays {
+  LensTracer tracer;
+  std::vector<LensRay> rays;
+  std::vector<float> lambdas;
+  LensBenchRays() : tracer(LoadLens("dgauss.50mm")) {
+    tracer.SetBackFocus(ComputeParaxial(tracer.lens()).bfl);
+    PCG32 rng(5, 5);
+    const LensSurface& rear = tracer.lens().surfaces.back();
+    double rear_z = tracer.VertexZ(int(tracer.lens().surfaces.size()) - 1);
+    for (int i = 0; i < 8192; ++i) {
+      Vec3d film((rng.UniformFloat() - 0.5) * 36, (rng.UniformFloat() - 0.5) * 24, tracer.FilmZ());
+      double a = 2 * M_PI * rng.UniformFloat(), r = rear.semi_diameter * std::sqrt(rng.UniformFloat());
+      Vec3d target(r * std::cos(a), r * std::sin(a), rear_z);
+      rays.push_back({film, Normalize(target - film)});
+      lambdas.push_back(400 + 300 * rng.UniformFloat());
+    }
+  }
+};
+
+void BM_LensDoubleFromFilm(benchmark::State& state) {
+  static LensBenchRays setup;
+  size_t i = 0, passed = 0;
+  for (auto _ : state) {
+    TraceResult r = setup.tracer.TraceFromFilm(setup.rays[i & 8191], setup.lambdas[i & 8191]);
+    passed += r.ray.has_value();
+    ++i;
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["pass_fraction"] = double(passed) / state.iterations();
+}
+BENCHMARK(BM_LensDoubleFromFilm);
+
+void BM_LensBatchFromFilm(benchmark::State& state) {
+  static LensBenchRays setup;
+  BatchLensTracer fast(setup.tracer);
+  RayBatch batch;
+  const size_t n = 8192;
+  for (auto _ : state) {
+    state.PauseTiming();
+    batch.Resize(n);
+    for (size_t i = 0; i < n; ++i) {
+      const LensRay& r = setup.rays[i];
+      batch.ox[i] = float(r.o.x), batch.oy[i] = float(r.o.y), batch.oz[i] = float(r.o.z);
+      batch.dx[i] = float(r.d.x), batch.dy[i] = float(r.d.y), batch.dz[i] = float(r.d.z);
+      batch.lambda[i] = setup.lambdas[i];
+    }
+    state.ResumeTiming();
+    fast.TraceFromFilm(batch, state.range(0) != 0);
+    benchmark::DoNotOptimize(batch.alive.data());
+  }
+  state.SetItemsProcessed(state.iterations() * n);
+  state.SetLabel(state.range(0) ? "with transmission" : "geometry only");
+}
+BENCHMARK(BM_LensBatchFromFilm)->Arg(0)->Arg(1);
 
 }  // namespace
 }  // namespace objektiv
