@@ -1,5 +1,7 @@
 #include "io/xml_document.h"
 
+#include "base/text_file.h"
+
 #include <pugixml.hpp>
 
 #include <algorithm>
@@ -32,13 +34,7 @@ class Parser {
     for (const auto& [k, v] : params_) overridden_.insert({k, true});
   }
 
-  SceneDocument ParseFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw MakeInputError(path, 0, "cannot open scene file");
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ParseString(ss.str(), path);
-  }
+  SceneDocument ParseFile(const std::string& path) { return ParseString(ReadTextFile(path, "scene file"), path); }
 
   SceneDocument ParseString(const std::string& text, const std::string& name) {
     auto root = std::make_shared<ObjectNode>();
@@ -106,15 +102,9 @@ class Parser {
   }
 
   static double ParseDouble(const std::string& s, const Location& loc) {
-    const char* begin = s.c_str();
-    while (std::isspace(static_cast<unsigned char>(*begin))) ++begin;
-    char* end = nullptr;
-    errno = 0;
-    double v = std::strtod(begin, &end);
-    while (end && std::isspace(static_cast<unsigned char>(*end))) ++end;
-    if (end == begin || *end != '\0' || errno == ERANGE || !std::isfinite(v))
-      throw ErrorAt(loc, "'{}' is not a finite number", s);
-    return v;
+    std::optional<double> v = ParseFiniteNumber(s);
+    if (!v) throw ErrorAt(loc, "'{}' is not a finite number", s);
+    return *v;
   }
 
   static int64_t ParseInt(const std::string& s, const Location& loc) {
@@ -282,12 +272,9 @@ class Parser {
         CheckAttributes(c, {"filename"}, loc);
         if (include_depth > 16) throw ErrorAt(loc, "includes nested too deeply (a cycle?)");
         fs::path inc = fs::path(ctx.path).parent_path() / Attr(c, "filename", loc);
-        std::ifstream in(inc, std::ios::binary);
-        if (!in) throw ErrorAt(loc, "cannot open included file '{}'", inc.string());
-        std::stringstream ss;
-        ss << in.rdbuf();
+        if (!fs::exists(inc)) throw ErrorAt(loc, "cannot open included file '{}'", inc.string());
         pugi::xml_document doc;
-        FileContext sub = Load(ss.str(), inc.string(), &doc);
+        FileContext sub = Load(ReadTextFile(inc.string(), "included file"), inc.string(), &doc);
         pugi::xml_node scene = doc.child("scene");
         if (!scene) throw MakeInputError(inc.string(), 1, "an included file must have a <scene> root");
         Walk(scene, sub, parent, include_depth + 1);

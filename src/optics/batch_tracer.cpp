@@ -47,22 +47,22 @@ BatchLensTracer::BatchLensTracer(const LensTracer& tracer)
   }
 }
 
-float BatchLensTracer::Index(int medium, float lambda) const {
-  if (medium < 0) return 1.f;
+namespace {
+// Linear interpolation in a table at 1 nm from kTableMin.
+float Lookup(const std::vector<float>& tab, float lambda) {
   float x = std::min(std::max(lambda - kTableMin, 0.f), kTableMax - kTableMin - 1e-3f);
   int i = int(x);
   float t = x - float(i);
-  const std::vector<float>& tab = index_tables_[medium];
   return tab[i] + t * (tab[i + 1] - tab[i]);
+}
+}  // namespace
+
+float BatchLensTracer::Index(int medium, float lambda) const {
+  return medium < 0 ? 1.f : Lookup(index_tables_[medium], lambda);
 }
 
 float BatchLensTracer::Absorption(int medium, float lambda) const {
-  if (medium < 0) return 0.f;
-  float x = std::min(std::max(lambda - kTableMin, 0.f), kTableMax - kTableMin - 1e-3f);
-  int i = int(x);
-  float t = x - float(i);
-  const std::vector<float>& tab = absorption_tables_[medium];
-  return tab[i] + t * (tab[i + 1] - tab[i]);
+  return medium < 0 ? 0.f : Lookup(absorption_tables_[medium], lambda);
 }
 
 void BatchLensTracer::TraceFromFilm(RayBatch& rays, bool transmission) const { Trace(rays, true, transmission); }

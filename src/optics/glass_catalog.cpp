@@ -10,6 +10,7 @@
 
 #include "base/error.h"
 #include "base/log.h"
+#include "base/text_file.h"
 
 namespace objektiv {
 namespace {
@@ -20,43 +21,20 @@ std::string Upper(std::string_view s) {
   return r;
 }
 
-// UTF-16 (with a byte-order mark) to ASCII; other text passes through.
-std::string DecodeText(const std::string& raw) {
-  if (raw.size() >= 2 && ((uint8_t(raw[0]) == 0xff && uint8_t(raw[1]) == 0xfe) ||
-                          (uint8_t(raw[0]) == 0xfe && uint8_t(raw[1]) == 0xff))) {
-    bool le = uint8_t(raw[0]) == 0xff;
-    std::string out;
-    for (size_t i = 2; i + 1 < raw.size(); i += 2) {
-      unsigned code = le ? (uint8_t(raw[i]) | (uint8_t(raw[i + 1]) << 8)) : ((uint8_t(raw[i]) << 8) | uint8_t(raw[i + 1]));
-      out += code < 128 ? char(code) : '?';
-    }
-    return out;
-  }
-  if (raw.size() >= 3 && uint8_t(raw[0]) == 0xef && uint8_t(raw[1]) == 0xbb && uint8_t(raw[2]) == 0xbf) return raw.substr(3);
-  return raw;
-}
-
 double Number(const std::string& s, const std::string& path, int line) {
-  char* end = nullptr;
-  errno = 0;
-  double v = std::strtod(s.c_str(), &end);
-  if (end == s.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
-    throw MakeInputError(path, line, "'{}' is not a finite number", s);
-  return v;
+  std::optional<double> v = ParseFiniteNumber(s);
+  if (!v) throw MakeInputError(path, line, "'{}' is not a finite number", s);
+  return *v;
 }
 
 }  // namespace
 
 void GlassCatalog::LoadAgf(const std::string& path, const std::string& name) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw MakeInputError(path, 0, "cannot open glass catalog");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  LoadAgfText(ss.str(), path, name);
+  LoadAgfText(ReadTextFile(path, "glass catalog"), path, name);
 }
 
 void GlassCatalog::LoadAgfText(const std::string& raw, const std::string& path, const std::string& catalog) {
-  std::string text = DecodeText(raw);
+  std::string text = DecodeToAscii(raw);
   auto& table = glasses_[catalog];
   if (std::find(order_.begin(), order_.end(), catalog) == order_.end()) order_.push_back(catalog);
   Glass* current = nullptr;

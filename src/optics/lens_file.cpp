@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "base/error.h"
+#include "base/text_file.h"
 #include "optics/glass_catalog.h"
 #include "optics/pbrt_lens.h"
 #include "optics/zemax_lens.h"
@@ -19,12 +20,9 @@ namespace {
 namespace fs = std::filesystem;
 
 double ParseNumber(const std::string& s, const std::string& path, int line) {
-  char* end = nullptr;
-  errno = 0;
-  double v = std::strtod(s.c_str(), &end);
-  if (end == s.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
-    throw MakeInputError(path, line, "'{}' is not a finite number", s);
-  return v;
+  std::optional<double> v = ParseFiniteNumber(s);
+  if (!v) throw MakeInputError(path, line, "'{}' is not a finite number", s);
+  return *v;
 }
 
 std::shared_ptr<const Glass> ParseMedium(const std::string& m, const std::string& path, int line) {
@@ -144,11 +142,7 @@ LensPrescription ReadLensFile(const std::string& path) {
   if (ext == ".dat") return ReadPbrtLens(path);
   if (ext == ".zmx" || ext == ".ZMX") return ReadZemaxLens(path);
   if (ext != ".lens") throw MakeInputError(path, 0, "unknown lens file type '{}' (.lens, .dat or .zmx)", ext);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw MakeInputError(path, 0, "cannot open lens file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ParseNativeLens(ss.str(), path);
+  return ParseNativeLens(ReadTextFile(path, "lens file"), path);
 }
 
 LensPrescription LoadLens(const std::string& name) {

@@ -9,16 +9,11 @@
 #include <sstream>
 
 #include "base/error.h"
+#include "base/text_file.h"
 
 namespace objektiv {
 
-LensPrescription ReadPbrtLens(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw MakeInputError(path, 0, "cannot open lens file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ParsePbrtLens(ss.str(), path);
-}
+LensPrescription ReadPbrtLens(const std::string& path) { return ParsePbrtLens(ReadTextFile(path, "lens file"), path); }
 
 LensPrescription ParsePbrtLens(const std::string& text, const std::string& path) {
   LensPrescription lens;
@@ -50,12 +45,9 @@ LensPrescription ParsePbrtLens(const std::string& text, const std::string& path)
     std::vector<double> v;
     std::string t;
     while (tok >> t) {
-      char* end = nullptr;
-      errno = 0;
-      double x = std::strtod(t.c_str(), &end);
-      if (end == t.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(x))
-        throw MakeInputError(path, number, "'{}' is not a finite number", t);
-      v.push_back(x);
+      std::optional<double> x = ParseFiniteNumber(t);
+      if (!x) throw MakeInputError(path, number, "'{}' is not a finite number", t);
+      v.push_back(*x);
     }
     if (v.empty()) continue;
     if (v.size() != 4)

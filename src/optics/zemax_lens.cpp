@@ -10,26 +10,11 @@
 
 #include "base/error.h"
 #include "base/log.h"
+#include "base/text_file.h"
 #include "optics/glass_catalog.h"
 
 namespace objektiv {
 namespace {
-
-// UTF-16 (either byte order, with a byte-order mark) or UTF-8/ASCII to plain ASCII.
-std::string DecodeText(const std::string& raw) {
-  if (raw.size() >= 2 && ((uint8_t(raw[0]) == 0xff && uint8_t(raw[1]) == 0xfe) ||
-                          (uint8_t(raw[0]) == 0xfe && uint8_t(raw[1]) == 0xff))) {
-    bool le = uint8_t(raw[0]) == 0xff;
-    std::string out;
-    for (size_t i = 2; i + 1 < raw.size(); i += 2) {
-      unsigned c = le ? (uint8_t(raw[i]) | (uint8_t(raw[i + 1]) << 8)) : ((uint8_t(raw[i]) << 8) | uint8_t(raw[i + 1]));
-      out += c < 128 ? char(c) : '?';
-    }
-    return out;
-  }
-  if (raw.size() >= 3 && uint8_t(raw[0]) == 0xef && uint8_t(raw[1]) == 0xbb && uint8_t(raw[2]) == 0xbf) return raw.substr(3);
-  return raw;
-}
 
 struct ZSurface {
   int line = 0;
@@ -43,26 +28,17 @@ struct ZSurface {
 
 double Number(const std::string& s, const std::string& path, int line) {
   if (s == "INFINITY" || s == "Infinity" || s == "inf") return INFINITY;
-  char* end = nullptr;
-  errno = 0;
-  double v = std::strtod(s.c_str(), &end);
-  if (end == s.c_str() || *end != '\0' || errno == ERANGE || std::isnan(v))
-    throw MakeInputError(path, line, "'{}' is not a number", s);
-  return v;
+  std::optional<double> v = ParseFiniteNumber(s);
+  if (!v) throw MakeInputError(path, line, "'{}' is not a number", s);
+  return *v;
 }
 
 }  // namespace
 
-LensPrescription ReadZemaxLens(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw MakeInputError(path, 0, "cannot open Zemax file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ParseZemaxLens(ss.str(), path);
-}
+LensPrescription ReadZemaxLens(const std::string& path) { return ParseZemaxLens(ReadTextFile(path, "Zemax file"), path); }
 
 LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path) {
-  std::string text = DecodeText(raw);
+  std::string text = DecodeToAscii(raw);
   std::istringstream lines(text);
   std::string line;
   int number = 0;

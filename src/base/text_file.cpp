@@ -1,0 +1,50 @@
+#include "base/text_file.h"
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "base/error.h"
+
+namespace objektiv {
+
+std::string ReadTextFile(const std::string& path, const char* what) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw MakeInputError(path, 0, "cannot open {}", what);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string DecodeToAscii(const std::string& raw) {
+  auto byte = [&](size_t i) { return uint8_t(raw[i]); };
+  if (raw.size() >= 2 && ((byte(0) == 0xff && byte(1) == 0xfe) || (byte(0) == 0xfe && byte(1) == 0xff))) {
+    bool le = byte(0) == 0xff;
+    std::string out;
+    for (size_t i = 2; i + 1 < raw.size(); i += 2) {
+      unsigned c = le ? (byte(i) | (byte(i + 1) << 8)) : ((byte(i) << 8) | byte(i + 1));
+      out += c < 128 ? char(c) : '?';
+    }
+    return out;
+  }
+  if (raw.size() >= 3 && byte(0) == 0xef && byte(1) == 0xbb && byte(2) == 0xbf) return raw.substr(3);
+  return raw;
+}
+
+std::optional<double> ParseFiniteNumber(const std::string& s) {
+  const char* begin = s.c_str();
+  while (std::isspace(static_cast<unsigned char>(*begin))) ++begin;
+  char* end = nullptr;
+  errno = 0;
+  double v = std::strtod(begin, &end);
+  if (end == begin) return std::nullopt;
+  while (std::isspace(static_cast<unsigned char>(*end))) ++end;
+  if (*end != '\0' || errno == ERANGE || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+}  // namespace objektiv

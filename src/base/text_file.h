@@ -1,0 +1,17 @@
+// Reading text input files: whole-file reads with clear errors, UTF-16 or UTF-8 byte-order
+// marks, and strict number parsing (the whole token, finite).
+#pragma once
+#include <optional>
+#include <string>
+
+namespace objektiv {
+
+// The file's bytes; throws InputError "PATH: cannot open WHAT" if it cannot be read.
+std::string ReadTextFile(const std::string& path, const char* what);
+// UTF-16 (either byte order, with a byte-order mark) to ASCII ('?' for other characters);
+// a UTF-8 byte-order mark is dropped; anything else is returned unchanged.
+std::string DecodeToAscii(const std::string& raw);
+// The number spelled by the whole of `s` (surrounding spaces allowed), if finite.
+std::optional<double> ParseFiniteNumber(const std::string& s);
+
+}  // namespace objektiv
