@@ -304,3 +304,31 @@ TEST(Focusing, ScalingKeepsTheFNumberAndHitsTheFocalLength) {
 
 }  // namespace
 }  // namespace objektiv
+
+namespace objektiv {
+namespace {
+TEST(Paraxial, SingleRefractingSphere) {
+  // Air into glass through one sphere of radius R: the rear focus lies n' R / (n' - 1) behind
+  // the vertex, the focal length (EFL = f' / n') is R / (n' - 1).
+  const double R = 20, n = 1.6;
+  LensPrescription l;
+  LensSurface stop, s;
+  stop.is_stop = true;
+  stop.semi_diameter = 2;
+  s.radius = R;
+  s.semi_diameter = 10;
+  s.thickness = n * R / (n - 1);
+  s.medium = std::make_shared<const Glass>(Glass::Constant(n));
+  l.surfaces = {stop, s};
+  ParaxialData d = ComputeParaxial(l);
+  EXPECT_NEAR(d.efl, R / (n - 1), 1e-12);
+  EXPECT_NEAR(d.bfl, n * R / (n - 1), 1e-12);
+  // Real rays near the axis meet there too.
+  LensTracer t(l);
+  TraceResult r = t.TraceFromObject({{1e-4, 0, -5}, {0, 0, 1}}, 550);
+  ASSERT_TRUE(r.ray);
+  double z = r.ray->o.z - r.ray->o.x * r.ray->d.z / r.ray->d.x;
+  EXPECT_NEAR(z, n * R / (n - 1), 1e-6);
+}
+}  // namespace
+}  // namespace objektiv

@@ -103,9 +103,10 @@ void WriteLensAnalysis(const LensTracer& tracer, const std::string& directory) {
     cos4.points.push_back({f, c * c * c * c});
     auto num = [](std::optional<double> v, double scale = 1) { return v ? fmt::format("{:.6g}", *v * scale) : std::string("null"); };
     json += fmt::format(
-        "    {{\"field_deg\": {:.4f}, \"distortion_percent\": {}, \"tangential_focus_mm\": {}, \"sagittal_focus_mm\": {}, "
+        "    {{\"field_deg\": {:.4f}, \"image_height_mm\": {}, \"paraxial_image_height_mm\": {:.6g}, "
+        "\"distortion_percent\": {}, \"tangential_focus_mm\": {}, \"sagittal_focus_mm\": {}, "
         "\"relative_illumination\": {}, \"lateral_colour_um\": {}}}{}\n",
-        f, num(d, 100), fc ? fmt::format("{:.6g}", fc->tangential) : "null", fc ? fmt::format("{:.6g}", fc->sagittal) : "null",
+        f, num(RealImageHeight(tracer, f, kD)), p.efl * std::tan(f * M_PI / 180), num(d, 100), fc ? fmt::format("{:.6g}", fc->tangential) : "null", fc ? fmt::format("{:.6g}", fc->sagittal) : "null",
         num(r), (hf && hc) ? fmt::format("{:.6g}", (*hf - *hc) * 1000) : "null", i + 1 == fields.size() ? "" : ",");
   }
   json += "  ],\n";

@@ -40,11 +40,12 @@ ParaxialData ComputeParaxial(const LensPrescription& lens, double lambda_nm, dou
   ParaxialData d;
   const int n = int(lens.surfaces.size());
   YNu f = TraceRange(lens, lambda_nm, {1, 0}, 0, n - 1, false);
-  d.efl = -1 / f.nu;    // EFL = -y1 / (n' u') with y1 = 1
-  d.bfl = -f.y / f.nu;  // where the ray crosses the axis behind the last vertex
+  const double n_image = lens.surfaces[n - 1].IndexAfter(lambda_nm);  // 1 for a lens in air
+  d.efl = -1 / f.nu;              // EFL = -y1 / (n' u') with y1 = 1
+  d.bfl = -f.y * n_image / f.nu;  // where the ray (slope u' = nu / n') crosses the axis
   YNu b = TraceRange(lens, lambda_nm, {1, 0}, n - 1, 0, true);
   d.ffl = b.y / b.nu;   // the front focus, in front of the first vertex (negative)
-  d.back_principal_plane = d.bfl - d.efl;
+  d.back_principal_plane = d.bfl - n_image * d.efl;  // the rear focal length in the image medium is n' EFL
   d.front_principal_plane = d.ffl + d.efl;
 
   int stop = lens.StopIndex();
