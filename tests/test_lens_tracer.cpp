@@ -141,6 +141,14 @@ TEST(LensTracer, FresnelAndAbsorptionThroughAPlate) {
   EXPECT_LT(oblique.internal_transmittance, uv.internal_transmittance);
   EXPECT_LT(oblique.fresnel_transmittance, uv.fresnel_transmittance);
   EXPECT_NEAR(FresnelReflectance(1, 1.5, 1), 0.04, 1e-12);
+  // Per surface: the two faces, each with its own reflectance, multiplying to the total.
+  std::vector<SurfaceEvent> events;
+  TraceResult again = plate.TraceFromObject({{0, 0, -5}, d}, 300, nullptr, &events);
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[0].surface, 1);
+  EXPECT_EQ(events[1].surface, 2);
+  EXPECT_NEAR((1 - events[0].reflectance) * (1 - events[1].reflectance), again.fresnel_transmittance, 1e-15);
+  EXPECT_NEAR(events[0].cos_incidence, d.z, 1e-12);
   EXPECT_EQ(FresnelReflectance(1.5, 1, 0.5), 1.0);  // beyond the critical angle
 }
 

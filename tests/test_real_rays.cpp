@@ -184,3 +184,21 @@ TEST(RealRays, RealBackFocusAndFieldOfView) {
 
 }  // namespace
 }  // namespace objektiv
+
+namespace objektiv {
+namespace {
+TEST(RealRays, FisheyeFieldIsLimitedByItsImageCircle) {
+  // The Muller fisheye is a 155.9 degree design: on a full-frame sensor its image circle, not
+  // the sensor, bounds the field; the vertical field never exceeds the horizontal one.
+  LensTracer f = Focused("fisheye.10mm");
+  FieldOfView fov = SensorFieldOfView(f, 36, 24, 587.6);
+  EXPECT_LE(fov.vertical, fov.horizontal);
+  EXPECT_LE(fov.horizontal, fov.diagonal);
+  EXPECT_GT(fov.diagonal, 150);
+  EXPECT_LT(fov.diagonal, 180);
+  // Chief rays exist far off axis: strong barrel distortion at 60 degrees.
+  ParaxialData p = ComputeParaxial(f.lens());
+  EXPECT_LT(*Distortion(f, p.efl, 60, 587.6), -0.3);
+}
+}  // namespace
+}  // namespace objektiv

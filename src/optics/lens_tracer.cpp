@@ -157,7 +157,8 @@ std::optional<double> LensTracer::Intersect(int i, const LensRay& ray) const {
   return t;
 }
 
-TraceResult LensTracer::Trace(const LensRay& in, double lambda_nm, bool from_film, std::vector<Vec3d>* path) const {
+TraceResult LensTracer::Trace(const LensRay& in, double lambda_nm, bool from_film, std::vector<Vec3d>* path,
+                              std::vector<SurfaceEvent>* events) const {
   const int n = int(lens_.surfaces.size());
   LensRay ray = in;
   TraceResult result;
@@ -196,7 +197,9 @@ TraceResult LensTracer::Trace(const LensRay& in, double lambda_nm, bool from_fil
     Vec3d nrm = Normal(i, p);
     if (Dot(nrm, ray.d) > 0) nrm = -nrm;
     double eta = n1 / n2, cos_i = -Dot(nrm, ray.d);
-    result.fresnel_transmittance *= 1 - FresnelReflectance(n1, n2, cos_i);
+    double reflectance = FresnelReflectance(n1, n2, cos_i);
+    result.fresnel_transmittance *= 1 - reflectance;
+    if (events) events->push_back({i, reflectance, cos_i});
     double k2 = 1 - eta * eta * (1 - cos_i * cos_i);
     if (k2 < 0) {
       result.failure = TraceFailure::kTotalInternalReflection;
@@ -210,11 +213,13 @@ TraceResult LensTracer::Trace(const LensRay& in, double lambda_nm, bool from_fil
   return result;
 }
 
-TraceResult LensTracer::TraceFromObject(const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path) const {
-  return Trace(ray, lambda_nm, false, path);
+TraceResult LensTracer::TraceFromObject(const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path,
+                                        std::vector<SurfaceEvent>* events) const {
+  return Trace(ray, lambda_nm, false, path, events);
 }
-TraceResult LensTracer::TraceFromFilm(const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path) const {
-  return Trace(ray, lambda_nm, true, path);
+TraceResult LensTracer::TraceFromFilm(const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path,
+                                      std::vector<SurfaceEvent>* events) const {
+  return Trace(ray, lambda_nm, true, path, events);
 }
 
 }  // namespace objektiv

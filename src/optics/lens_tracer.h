@@ -25,6 +25,13 @@ struct TraceResult {
   double fresnel_transmittance = 1, internal_transmittance = 1;
 };
 
+// What happened at each refracting surface a ray crossed (for ghosts and diagnostics).
+struct SurfaceEvent {
+  int surface;
+  double reflectance;  // unpolarised Fresnel reflectance there (uncoated)
+  double cos_incidence;
+};
+
 // Unpolarised Fresnel reflectance for light going from index n1 into n2 at cos(theta_i)
 // (1 beyond the critical angle).
 double FresnelReflectance(double n1, double n2, double cos_i);
@@ -34,10 +41,13 @@ class LensTracer {
   explicit LensTracer(LensPrescription lens);
 
   // From the object side through every surface toward the film. `path`, if given, receives
-  // the point where the ray meets each surface it reaches (for plots).
-  TraceResult TraceFromObject(const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path = nullptr) const;
+  // the point where the ray meets each surface it reaches (for plots); `events` the Fresnel
+  // reflectance at each refracting surface crossed.
+  TraceResult TraceFromObject(const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path = nullptr,
+                              std::vector<SurfaceEvent>* events = nullptr) const;
   // From the film through every surface toward the object.
-  TraceResult TraceFromFilm(const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path = nullptr) const;
+  TraceResult TraceFromFilm(const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path = nullptr,
+                            std::vector<SurfaceEvent>* events = nullptr) const;
 
   // The stop's semi-diameter may be narrowed (never widened) to set an f-number.
   void SetStopSemiDiameter(double r);
@@ -63,7 +73,8 @@ class LensTracer {
   // Intersect with surface i (ray in lens space); returns the parameter t or nothing.
   std::optional<double> Intersect(int i, const LensRay& ray) const;
   Vec3d Normal(int i, const Vec3d& p) const;  // unit, pointing toward +z
-  TraceResult Trace(const LensRay& ray, double lambda_nm, bool from_film, std::vector<Vec3d>* path) const;
+  TraceResult Trace(const LensRay& ray, double lambda_nm, bool from_film, std::vector<Vec3d>* path,
+                    std::vector<SurfaceEvent>* events) const;
 
   LensPrescription lens_;
   std::vector<double> vertex_z_;

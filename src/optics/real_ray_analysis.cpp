@@ -9,16 +9,22 @@ namespace objektiv {
 namespace {
 constexpr double kStartZ = -50;  // rays start this far in front of the first vertex (mm)
 
+// The same lens with every aperture opened (semi-diameters and stop unbounded): chief rays and
+// image heights are geometric, whatever the rims do to the rest of the beam.
+LensTracer Unclipped(const LensTracer& tracer, int last_surface) {
+  LensPrescription open = tracer.lens();
+  open.surfaces.resize(size_t(last_surface) + 1);
+  for (LensSurface& s : open.surfaces) s.semi_diameter = 1e30;
+  LensTracer t(open);
+  t.SetStopSemiDiameter(1e30);
+  return t;
+}
+
 // Height at which a ray from direction theta, entering at height y0 (at kStartZ), crosses the
 // stop plane; nothing if it does not get there.
-std::optional<double> HeightAtStop(const LensTracer& tracer, double theta, double y0, double lambda_nm) {
-  int stop = tracer.lens().StopIndex();
-  LensPrescription front = tracer.lens();
-  front.surfaces.resize(size_t(stop) + 1);
-  LensTracer partial(front);
-  partial.SetStopSemiDiameter(1e30);  // only find where it crosses; do not clip at the stop
+std::optional<double> HeightAtStop(const LensTracer& front, double theta, double y0, double lambda_nm) {
   LensRay r{{0, y0, kStartZ}, {0, std::sin(theta), std::cos(theta)}};
-  TraceResult t = partial.TraceFromObject(r, lambda_nm);
+  TraceResult t = front.TraceFromObject(r, lambda_nm);
   if (!t.ray) return std::nullopt;
   return t.ray->o.y;
 }
@@ -26,30 +32,51 @@ std::optional<double> HeightAtStop(const LensTracer& tracer, double theta, doubl
 
 std::optional<LensRay> ChiefRay(const LensTracer& tracer, double field_deg, double lambda_nm) {
   double theta = field_deg * M_PI / 180;
-  // Start from the paraxial entrance pupil; refine by the secant method on the stop height.
+  LensTracer front = Unclipped(tracer, tracer.lens().StopIndex());
+  auto make = [&](double y) { return LensRay{{0, y, kStartZ}, {0, std::sin(theta), std::cos(theta)}}; };
+  // Secant iteration from the paraxial entrance pupil.
   ParaxialData p = ComputeParaxial(tracer.lens(), lambda_nm);
   double y_a = -std::tan(theta) * (p.entrance_pupil_position - kStartZ), y_b = y_a + 1e-3;
-  std::optional<double> h_a = HeightAtStop(tracer, theta, y_a, lambda_nm);
-  std::optional<double> h_b = HeightAtStop(tracer, theta, y_b, lambda_nm);
-  for (int it = 0; it < 60 && h_a && h_b; ++it) {
-    if (std::abs(*h_b) < 1e-12) break;
-    double denom = *h_b - *h_a;
-    if (denom == 0) return std::nullopt;
-    double y_c = y_b - *h_b * (y_b - y_a) / denom;
-    y_a = y_b;
-    h_a = h_b;
-    y_b = y_c;
-    h_b = HeightAtStop(tracer, theta, y_b, lambda_nm);
+  std::optional<double> h_a = HeightAtStop(front, theta, y_a, lambda_nm), h_b = HeightAtStop(front, theta, y_b, lambda_nm);
+  for (int it = 0; it < 60 && h_a && h_b && *h_b != *h_a; ++it) {
+    if (std::abs(*h_b) < 1e-12) return make(y_b);
+    double y_c = y_b - *h_b * (y_b - y_a) / (*h_b - *h_a);
+    y_a = y_b, h_a = h_b, y_b = y_c;
+    h_b = HeightAtStop(front, theta, y_b, lambda_nm);
   }
-  if (!h_b || std::abs(*h_b) > 1e-9) return std::nullopt;
-  return LensRay{{0, y_b, kStartZ}, {0, std::sin(theta), std::cos(theta)}};
+  if (h_b && std::abs(*h_b) < 1e-9) return make(y_b);
+  // Far off axis the pupil moves and the secant can leave the lens: bracket a sign change by
+  // scanning entrance heights, then bisect.
+  double guess = -std::tan(theta) * (p.entrance_pupil_position - kStartZ);
+  double span = 4 * tracer.lens().surfaces.front().semi_diameter / std::max(std::cos(theta), 0.05) + 1;
+  const int steps = 400;
+  std::optional<double> prev_h;
+  double prev_y = 0;
+  for (int i = 0; i <= steps; ++i) {
+    double y = guess - span + 2 * span * i / steps;
+    std::optional<double> h = HeightAtStop(front, theta, y, lambda_nm);
+    if (h && prev_h && (*h > 0) != (*prev_h > 0)) {
+      double lo = prev_y, hi = y, h_lo = *prev_h;
+      for (int it = 0; it < 100; ++it) {
+        double mid = 0.5 * (lo + hi);
+        std::optional<double> hm = HeightAtStop(front, theta, mid, lambda_nm);
+        if (!hm) break;
+        if ((*hm > 0) == (h_lo > 0)) lo = mid, h_lo = *hm;
+        else hi = mid;
+      }
+      std::optional<double> hf = HeightAtStop(front, theta, 0.5 * (lo + hi), lambda_nm);
+      if (hf && std::abs(*hf) < 1e-9) return make(0.5 * (lo + hi));
+    }
+    prev_h = h, prev_y = y;
+  }
+  return std::nullopt;
 }
 
 std::optional<double> RealImageHeight(const LensTracer& tracer, double field_deg, double lambda_nm) {
   std::optional<LensRay> chief = ChiefRay(tracer, field_deg, lambda_nm);
   if (!chief) return std::nullopt;
-  LensTracer open = tracer;
-  open.SetStopSemiDiameter(1e30);  // the chief ray passes the stop centre anyway
+  const int last = int(tracer.lens().surfaces.size()) - 1;
+  LensTracer open = Unclipped(tracer, last);
   TraceResult t = open.TraceFromObject(*chief, lambda_nm);
   if (!t.ray || t.ray->d.z <= 0) return std::nullopt;
   return t.ray->o.y + t.ray->d.y * (tracer.FilmZ() - t.ray->o.z) / t.ray->d.z;
@@ -191,28 +218,46 @@ Spot SpotDiagram(const LensTracer& tracer, double field_deg, double lambda_nm, i
 }
 
 namespace {
-// The field angle whose real image height is h (bisection; heights grow with the field).
-double FieldForHeight(const LensTracer& tracer, double h, double efl, double lambda_nm) {
-  double paraxial = std::atan(h / std::abs(efl)) * 180 / M_PI;
-  double lo = 0, hi = 89;
-  for (int it = 0; it < 80; ++it) {
+// The largest field angle (degrees) the lens forms an image of: light from it still gets
+// through the real apertures (the edge of the image circle), and its chief ray exists.
+double MaxImagedField(const LensTracer& tracer, double lambda_nm) {
+  auto images = [&](double field) {
+    return RealImageHeight(tracer, field, lambda_nm) && SpotDiagram(tracer, field, lambda_nm, 15).transmitted > 0;
+  };
+  double lo = 0, hi = 89.9;
+  if (images(hi)) return hi;
+  for (double f = 89; f > 0; f -= 1)
+    if (images(f)) {
+      lo = f, hi = f + 1;
+      break;
+    }
+  for (int it = 0; it < 30; ++it) {
+    double mid = 0.5 * (lo + hi);
+    (images(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+// The field angle whose real image height is h; the edge of the image circle when h lies
+// beyond it (as for a fisheye's corners).
+double FieldForHeight(const LensTracer& tracer, double h, double max_field, double lambda_nm) {
+  std::optional<double> h_max = RealImageHeight(tracer, max_field, lambda_nm);
+  if (!h_max || std::abs(*h_max) <= h) return max_field;
+  double lo = 0, hi = max_field;
+  for (int it = 0; it < 60; ++it) {
     double mid = 0.5 * (lo + hi);
     std::optional<double> hm = RealImageHeight(tracer, mid, lambda_nm);
-    if (!hm) {
-      hi = mid;  // beyond what the lens can image: search lower
-      continue;
-    }
-    (std::abs(*hm) < h ? lo : hi) = mid;
+    (hm && std::abs(*hm) < h ? lo : hi) = mid;
   }
-  std::optional<double> got = RealImageHeight(tracer, lo, lambda_nm);
-  return (got && std::abs(std::abs(*got) - h) < 1e-6 * h) ? lo : paraxial;
+  return 0.5 * (lo + hi);
 }
 }  // namespace
 
 FieldOfView SensorFieldOfView(const LensTracer& tracer, double width, double height, double lambda_nm) {
-  double efl = ComputeParaxial(tracer.lens(), lambda_nm).efl;
-  return {2 * FieldForHeight(tracer, width / 2, efl, lambda_nm), 2 * FieldForHeight(tracer, height / 2, efl, lambda_nm),
-          2 * FieldForHeight(tracer, std::hypot(width, height) / 2, efl, lambda_nm)};
+  double max_field = MaxImagedField(tracer, lambda_nm);
+  return {2 * FieldForHeight(tracer, width / 2, max_field, lambda_nm),
+          2 * FieldForHeight(tracer, height / 2, max_field, lambda_nm),
+          2 * FieldForHeight(tracer, std::hypot(width, height) / 2, max_field, lambda_nm)};
 }
 
 double RealBackFocus(const LensTracer& tracer, double lambda_nm) {

@@ -43,8 +43,8 @@ struct FieldCurvature {
 std::optional<FieldCurvature> FieldCurvatureAt(const LensTracer& tracer, double field_deg, double lambda_nm);
 
 // Full field of view (degrees) of a sensor `width` x `height` mm: the field angles whose real
-// chief rays reach the edges and the corner (distortion included); paraxial (rectilinear)
-// where no chief ray reaches.
+// chief rays reach the edges and the corner (distortion included); where the sensor extends
+// beyond the image circle (fisheyes), the image circle's field.
 struct FieldOfView {
   double horizontal = 0, vertical = 0, diagonal = 0;
 };
