@@ -58,6 +58,10 @@ TEST(Parser, BadInputNamesFileAndLine) {
        "</sampler></sensor></scene>",
        3, "outside"},
       {"<scene>\n<sensor type=\"fisheye\"/></scene>", 2, "unknown sensor type"},
+      {Wrap("<shape type=\"sphere\">\n<float name=\"radius\" value=\"1e39\"/></shape>"), 5, "too large"},
+      {Wrap("<emitter type=\"point\">\n<rgb name=\"intensity\" value=\"-5\"/></emitter>"), 5, "not negative"},
+      {Wrap("<emitter type=\"constant\">\n<spectrum name=\"radiance\" value=\"400:1, 500:-2\"/></emitter>"), 5,
+       "not negative"},
   };
   for (const BadCase& c : cases) {
     try {

@@ -31,6 +31,15 @@ std::pair<double, double> ParseSensor(const std::string& s) {
   return {w, h};
 }
 
+// The lens commands describe imaging lenses: an afocal system has no finite first-order data.
+LensPrescription LoadImagingLens(const std::string& name, double lambda_nm) {
+  LensPrescription lens = LoadLens(name);
+  double efl = ComputeParaxial(lens, lambda_nm).efl;
+  if (!std::isfinite(efl) || std::abs(efl) > 1e12)
+    throw InputError(fmt::format("{}: the lens has no optical power (afocal): it forms no image", name));
+  return lens;
+}
+
 int RunList() {
   std::printf("%-24s %10s %8s  %s\n", "name", "EFL (mm)", "f/", "source");
   for (const std::string& name : ShippedLensNames()) {
@@ -42,7 +51,7 @@ int RunList() {
 }
 
 int RunInfo(const LensArgs& a) {
-  LensPrescription lens = LoadLens(a.lens);
+  LensPrescription lens = LoadImagingLens(a.lens, a.wavelength);
   ParaxialData d = ComputeParaxial(lens, a.wavelength);
   int stop = lens.StopIndex();
   double stop_diameter = 2 * lens.surfaces[stop].semi_diameter;
@@ -102,7 +111,7 @@ int RunInfo(const LensArgs& a) {
 }
 
 int RunAnalyze(const LensArgs& a) {
-  LensPrescription lens = LoadLens(a.lens);
+  LensPrescription lens = LoadImagingLens(a.lens, 587.5618);
   LensTracer tracer(lens);
   tracer.SetBackFocus(ComputeParaxial(lens).bfl);  // the paraxial focus for an object at infinity
   WriteLensAnalysis(tracer, a.output);
@@ -110,7 +119,7 @@ int RunAnalyze(const LensArgs& a) {
 }
 
 int RunPlot(const LensArgs& a) {
-  LensPrescription lens = LoadLens(a.lens);
+  LensPrescription lens = LoadImagingLens(a.lens, a.wavelength);
   LensTracer tracer(lens);
   ParaxialData p = ComputeParaxial(lens, a.wavelength);
   // pbrt files leave the film at the last vertex: put it at the paraxial focus.

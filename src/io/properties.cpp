@@ -2,6 +2,9 @@
 
 #include "base/log.h"
 
+#include <cmath>
+#include <limits>
+
 namespace objektiv {
 
 const Property* Properties::Find(const std::string& name) const {
@@ -26,9 +29,14 @@ void Properties::WrongType(const Property& p, const char* expected) const {
 double Properties::Float(const std::string& name) const {
   const Property* p = Find(name);
   if (!p) throw ErrorAt(node_.loc, "{} '{}' needs the property '{}'", node_.tag, node_.type, name);
-  if (auto* d = std::get_if<double>(&p->data)) return *d;
-  if (auto* i = std::get_if<int64_t>(&p->data)) return double(*i);
-  WrongType(*p, "a <float>");
+  double v;
+  if (auto* d = std::get_if<double>(&p->data)) v = *d;
+  else if (auto* i = std::get_if<int64_t>(&p->data)) v = double(*i);
+  else WrongType(*p, "a <float>");
+  // The renderer computes in single precision: a value beyond its range would become infinite.
+  if (std::abs(v) > std::numeric_limits<float>::max())
+    throw ErrorAt(p->loc, "{} '{}': '{}' = {} is too large (beyond single precision)", node_.tag, node_.type, name, v);
+  return v;
 }
 
 double Properties::Float(const std::string& name, double fallback) const { return Has(name) ? Float(name) : fallback; }
@@ -100,14 +108,21 @@ Transform Properties::GetTransform(const std::string& name) const {
 std::optional<SpectrumValue> Properties::SpectrumProp(const std::string& name) const {
   const Property* p = Find(name);
   if (!p) return std::nullopt;
-  if (auto* s = std::get_if<SpectrumValue>(&p->data)) return *s;
-  if (auto* d = std::get_if<double>(&p->data)) {
-    SpectrumValue s;
+  SpectrumValue s;
+  if (auto* sv = std::get_if<SpectrumValue>(&p->data)) {
+    s = *sv;
+  } else if (std::holds_alternative<double>(p->data)) {
     s.kind = SpectrumValue::Kind::kConstant;
-    s.value = float(*d);
-    return s;
+    s.value = float(Float(name));
+  } else {
+    WrongType(*p, "a <float>, <rgb> or <spectrum>");
   }
-  WrongType(*p, "a <float>, <rgb> or <spectrum>");
+  // Reflectances, radiances, indices and absorption coefficients are never negative, and
+  // must stay within single precision.
+  bool bad = s.value < 0 || MinComponent(s.rgb) < 0 || !std::isfinite(s.value) || !std::isfinite(MaxComponent(s.rgb));
+  for (float v : s.values) bad |= v < 0 || !std::isfinite(v);
+  if (bad) throw ErrorAt(p->loc, "{} '{}': '{}' must be finite and not negative", node_.tag, node_.type, name);
+  return s;
 }
 
 std::shared_ptr<ObjectNode> Properties::Object(const std::string& name) const {
