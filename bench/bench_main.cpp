@@ -59,25 +59,25 @@ BSDF MakeBsdf(int kind) {
   SampledSpectrum s(0.5f);
   switch (kind) {
     case 0:
-      return BSDF(Frame(), Vec3f(0, 0, 1), DiffuseBxDF{s}, false);
+      return BSDF(Frame(), DiffuseBxDF{s}, false);
     case 1: {
       DielectricBxDF d;
       d.eta = 1.5f;
-      return BSDF(Frame(), Vec3f(0, 0, 1), d, true);
+      return BSDF(Frame(), d, true);
     }
     case 2: {
       DielectricBxDF d;
       d.eta = 1.5f;
       d.distrib = TrowbridgeReitz(0.2f, 0.2f);
-      return BSDF(Frame(), Vec3f(0, 0, 1), d, true);
+      return BSDF(Frame(), d, true);
     }
     case 3:
-      return BSDF(Frame(), Vec3f(0, 0, 1), ConductorBxDF{SampledSpectrum(0.2f), SampledSpectrum(3.f), SampledSpectrum(1.f), TrowbridgeReitz(0.3f, 0.3f)}, false);
+      return BSDF(Frame(), ConductorBxDF{SampledSpectrum(0.2f), SampledSpectrum(3.f), SampledSpectrum(1.f), TrowbridgeReitz(0.3f, 0.3f)}, false);
     default: {
       PlasticBxDF p;
       p.diffuse = s;
       p.fdr_int = FresnelDiffuseReflectance(1 / 1.49f);
-      return BSDF(Frame(), Vec3f(0, 0, 1), p, false);
+      return BSDF(Frame(), p, false);
     }
   }
 }

@@ -21,27 +21,26 @@ SampledSpectrum S(float v) { return SampledSpectrum(v); }
 
 std::vector<Case> NonSpecularCases() {
   Frame f;
-  Vec3f n(0, 0, 1);
   std::vector<Case> c;
-  c.push_back({"diffuse", BSDF(f, n, DiffuseBxDF{S(0.7f)}, false)});
-  c.push_back({"diffuse two-sided", BSDF(f, n, DiffuseBxDF{S(0.7f)}, true)});
+  c.push_back({"diffuse", BSDF(f, DiffuseBxDF{S(0.7f)}, false)});
+  c.push_back({"diffuse two-sided", BSDF(f, DiffuseBxDF{S(0.7f)}, true)});
   ConductorBxDF rc{S(0.2f), S(3.f), S(1.f), TrowbridgeReitz(0.3f, 0.3f)};
-  c.push_back({"rough conductor", BSDF(f, n, rc, false)});
+  c.push_back({"rough conductor", BSDF(f, rc, false)});
   ConductorBxDF ac{S(1.2f), S(2.f), S(1.f), TrowbridgeReitz(0.1f, 0.5f)};
-  c.push_back({"anisotropic rough conductor", BSDF(f, n, ac, false)});
+  c.push_back({"anisotropic rough conductor", BSDF(f, ac, false)});
   DielectricBxDF rd;
   rd.eta = 1.5f;
   rd.distrib = TrowbridgeReitz(0.25f, 0.25f);
-  c.push_back({"rough dielectric", BSDF(f, n, rd, true)});
+  c.push_back({"rough dielectric", BSDF(f, rd, true)});
   rd.distrib = TrowbridgeReitz(0.6f, 0.6f);
-  c.push_back({"very rough dielectric", BSDF(f, n, rd, true)});
+  c.push_back({"very rough dielectric", BSDF(f, rd, true)});
   PlasticBxDF pl;
   pl.eta = 1.49f;
   pl.fdr_int = FresnelDiffuseReflectance(1 / 1.49f);
   pl.diffuse = S(0.5f);
   pl.specular = S(1.f);
   pl.specular_sampling_weight = 0.5f;
-  c.push_back({"plastic (diffuse lobe)", BSDF(f, n, pl, false)});
+  c.push_back({"plastic (diffuse lobe)", BSDF(f, pl, false)});
   return c;
 }
 
@@ -101,12 +100,11 @@ TEST(Bsdf, ReflectionIsReciprocal) {
 TEST(Bsdf, NoBsdfCreatesEnergy) {
   // Directional albedo by sampling (including specular parts) is at most one.
   Frame f;
-  Vec3f n(0, 0, 1);
   std::vector<Case> cases = NonSpecularCases();
   DielectricBxDF smooth;
   smooth.eta = 1.5f;
-  cases.push_back({"smooth dielectric", BSDF(f, n, smooth, true)});
-  cases.push_back({"smooth conductor", BSDF(f, n, ConductorBxDF{S(0.2f), S(3.f), S(1.f), TrowbridgeReitz(0, 0)}, false)});
+  cases.push_back({"smooth dielectric", BSDF(f, smooth, true)});
+  cases.push_back({"smooth conductor", BSDF(f, ConductorBxDF{S(0.2f), S(3.f), S(1.f), TrowbridgeReitz(0, 0)}, false)});
   PCG32 g(2, 3);
   for (const Case& c : cases)
     for (const Vec3f& wo : Outgoing(false)) {
@@ -126,7 +124,7 @@ TEST(Bsdf, NoBsdfCreatesEnergy) {
 TEST(Bsdf, SmoothDielectricSplitsByFresnel) {
   DielectricBxDF d;
   d.eta = 1.5f;
-  BSDF b(Frame(), Vec3f(0, 0, 1), d, true);
+  BSDF b(Frame(), d, true);
   Vec3f wo = Normalize(Vec3f(0.5f, 0, 1));
   float F = FresnelDielectric(wo.z, 1.5f);
   auto r = b.Sample(wo, 0.5f * F, {0.5f, 0.5f});
@@ -142,8 +140,8 @@ TEST(Bsdf, SmoothDielectricSplitsByFresnel) {
 }
 
 TEST(Bsdf, OneSidedOpaqueBsdfsAreBlackFromBehind) {
-  BSDF one(Frame(), Vec3f(0, 0, 1), DiffuseBxDF{S(0.5f)}, false);
-  BSDF two(Frame(), Vec3f(0, 0, 1), DiffuseBxDF{S(0.5f)}, true);
+  BSDF one(Frame(), DiffuseBxDF{S(0.5f)}, false);
+  BSDF two(Frame(), DiffuseBxDF{S(0.5f)}, true);
   Vec3f below(0.1f, 0, -1), below2(0, 0.2f, -1);
   EXPECT_TRUE(one.f(Normalize(below), Normalize(below2)).IsBlack());
   EXPECT_NEAR(two.f(Normalize(below), Normalize(below2))[0], 0.5f / kPi, 1e-6);

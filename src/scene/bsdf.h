@@ -14,8 +14,8 @@ class BSDF {
   BSDF() = default;
   // two_sided: opaque BxDFs, which scatter on their front side only (as in Mitsuba), act the
   // same on both sides. Dielectrics are always two-sided.
-  BSDF(const Frame& shading, const Vec3f& ng, BxDF bxdf, bool two_sided)
-      : frame_(shading), ng_(ng), bxdf_(std::move(bxdf)), two_sided_(two_sided) {}
+  BSDF(const Frame& shading, BxDF bxdf, bool two_sided)
+      : frame_(shading), bxdf_(std::move(bxdf)), two_sided_(two_sided) {}
 
   SampledSpectrum f(const Vec3f& wo_world, const Vec3f& wi_world, TransportMode mode = TransportMode::kRadiance) const;
   std::optional<BSDFSample> Sample(const Vec3f& wo_world, float uc, Vec2f u,
@@ -35,7 +35,6 @@ class BSDF {
  private:
   bool IsOpaque() const { return !std::holds_alternative<DielectricBxDF>(bxdf_); }
   Frame frame_;
-  Vec3f ng_;
   BxDF bxdf_;
   bool two_sided_ = false;
 };

@@ -7,7 +7,7 @@ namespace objektiv {
 BSDF DiffuseMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const {
   SampledSpectrum r = reflectance_->Evaluate(si.uv, lambda);
   for (int i = 0; i < kSpectrumSamples; ++i) r[i] = Clamp(r[i], 0, 1);
-  return BSDF(si.shading, si.n, DiffuseBxDF{r}, two_sided_);
+  return BSDF(si.shading, DiffuseBxDF{r}, two_sided_);
 }
 
 DielectricMaterial::DielectricMaterial(IorModel int_ior, double ext_ior, float alpha_u, float alpha_v,
@@ -24,7 +24,7 @@ BSDF DielectricMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelength
   b.distrib = TrowbridgeReitz(alpha_u_, alpha_v_);
   b.reflect_scale = specular_reflectance_->Evaluate(si.uv, lambda);
   b.transmit_scale = specular_transmittance_->Evaluate(si.uv, lambda);
-  return BSDF(si.shading, si.n, b, true);
+  return BSDF(si.shading, b, true);
 }
 
 ConductorMaterial::ConductorMaterial(Spectrum eta, Spectrum k, float alpha_u, float alpha_v,
@@ -38,7 +38,7 @@ BSDF ConductorMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths
   b.k = k_.Sample(lambda);
   b.scale = specular_reflectance_->Evaluate(si.uv, lambda);
   b.distrib = TrowbridgeReitz(alpha_u_, alpha_v_);
-  return BSDF(si.shading, si.n, b, two_sided_);
+  return BSDF(si.shading, b, two_sided_);
 }
 
 PlasticMaterial::PlasticMaterial(float int_ior, float ext_ior, std::shared_ptr<const SpectrumTexture> diffuse,
@@ -60,7 +60,7 @@ BSDF PlasticMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& 
   for (int i = 0; i < kSpectrumSamples; ++i) b.diffuse[i] = Clamp(b.diffuse[i], 0, 1);
   b.specular = specular_->Evaluate(si.uv, lambda);
   b.nonlinear = nonlinear_;
-  return BSDF(si.shading, si.n, b, two_sided_);
+  return BSDF(si.shading, b, two_sided_);
 }
 
 }  // namespace objektiv
