@@ -179,3 +179,23 @@ TEST(Samplers, StratifiedFillsEveryStratum) {
 
 }  // namespace
 }  // namespace objektiv
+
+namespace objektiv {
+namespace {
+TEST(Distribution1D, SmallAndLargeDistributionsPickTheSameCells) {
+  // The linear scan used for short tables must agree with the binary search.
+  for (int n : {2, 5, 8, 9, 40}) {
+    std::vector<float> f(n);
+    for (int i = 0; i < n; ++i) f[i] = float((i * 7) % 5);  // includes zero cells
+    Distribution1D d(f);
+    for (int k = 0; k < 1000; ++k) {
+      float u = (k + 0.5f) / 1000;
+      int i = d.SampleDiscrete(u);
+      EXPECT_LE(d.CdfAt(i), u);
+      EXPECT_GT(d.CdfAt(i + 1), u);
+      EXPECT_GT(f[i], 0);
+    }
+  }
+}
+}  // namespace
+}  // namespace objektiv

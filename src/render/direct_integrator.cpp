@@ -20,12 +20,12 @@ SampledSpectrum DirectIntegrator::Li(const Ray& ray, SampledWavelengths& lambda,
   float ne = float(emitter_samples_), nb = float(bsdf_samples_);
 
   for (int i = 0; i < emitter_samples_; ++i) {
-    float ul = sampler.Get1D();
+    float ul = scene_.lights().size() > 1 ? sampler.Get1D() : 0.5f;
     Vec2f u = sampler.Get2D();
     if (bsdf.Flags() & (kDiffuse | kGlossy)) L += SampleLightMIS(scene_, *si, bsdf, lambda, ul, u, counts, ne, nb);
   }
   for (int i = 0; i < bsdf_samples_; ++i) {
-    float uc = sampler.Get1D();
+    float uc = bsdf.UsesLobeChoice() ? sampler.Get1D() : 0.5f;
     Vec2f u = sampler.Get2D();
     std::optional<BSDFSample> bs = bsdf.Sample(si->wo, uc, u);
     if (!bs) continue;

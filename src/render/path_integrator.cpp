@@ -46,12 +46,13 @@ SampledSpectrum PathIntegrator::Li(const Ray& camera_ray, SampledWavelengths& la
 
     // Next-event estimation adds one segment: only if the path may grow.
     if ((bsdf.Flags() & (kDiffuse | kGlossy)) && (max_depth_ < 0 || depth + 1 <= max_depth_)) {
-      float ul = sampler.Get1D();
+      // Dimensions nobody uses are not drawn (one light: no choice to make).
+      float ul = scene_.lights().size() > 1 ? sampler.Get1D() : 0.5f;
       Vec2f u = sampler.Get2D();
       L += beta * SampleLightMIS(scene_, *si, bsdf, lambda, ul, u, counts);
     }
 
-    float uc = sampler.Get1D();
+    float uc = bsdf.UsesLobeChoice() ? sampler.Get1D() : 0.5f;
     Vec2f u = sampler.Get2D();
     std::optional<BSDFSample> bs = bsdf.Sample(si->wo, uc, u);
     if (!bs) break;

@@ -30,6 +30,11 @@ class BSDF {
                          TransportMode mode = TransportMode::kRadiance) const;
   int Flags() const;
   bool IsSpecular() const { return (Flags() & (kDiffuse | kGlossy)) == 0; }
+  // Whether Sample uses its 1D number (to choose between lobes); single-lobe BxDFs do not,
+  // so integrators need not draw it.
+  bool UsesLobeChoice() const {
+    return std::holds_alternative<DielectricBxDF>(bxdf_) || std::holds_alternative<PlasticBxDF>(bxdf_);
+  }
   const Frame& frame() const { return frame_; }
 
  private:
