@@ -38,12 +38,10 @@ inline uint32_t Sobol0(uint32_t index) { return ReverseBits32(index); }
 
 // Sobol1 by bytes: the XOR of the generator columns selected by each byte of the index is
 // tabulated (4 x 256 entries), so a point costs four lookups instead of a 32-step loop.
-struct Sobol1Tables {
+struct ByteTables {
   uint32_t t[4][256];
-  constexpr Sobol1Tables() : t{} {
-    uint32_t columns[32] = {};
-    uint32_t v = 1u << 31;
-    for (int i = 0; i < 32; ++i, v ^= v >> 1) columns[i] = v;
+  // Tables for the linear map (over GF(2)) whose column for input bit i is columns[i].
+  constexpr explicit ByteTables(const uint32_t (&columns)[32]) : t{} {
     for (int b = 0; b < 4; ++b)
       for (int x = 0; x < 256; ++x) {
         uint32_t r = 0;
@@ -52,43 +50,33 @@ struct Sobol1Tables {
         t[b][x] = r;
       }
   }
+  constexpr uint32_t operator()(uint32_t v) const {
+    return t[0][v & 0xff] ^ t[1][(v >> 8) & 0xff] ^ t[2][(v >> 16) & 0xff] ^ t[3][v >> 24];
+  }
 };
-inline constexpr Sobol1Tables kSobol1Tables{};
 
-inline uint32_t Sobol1(uint32_t index) {
-  const auto& t = kSobol1Tables.t;
-  return t[0][index & 0xff] ^ t[1][(index >> 8) & 0xff] ^ t[2][(index >> 16) & 0xff] ^ t[3][index >> 24];
-}
-
-// The same map seen through bit reversal on both sides: Sobol1Rev(Reverse(i)) = Reverse(Sobol1(i)).
-// Tabulated directly, it lets the scrambled sampler below skip two reversals per point.
-struct Sobol1ReversedTables {
-  uint32_t t[4][256];
-  constexpr Sobol1ReversedTables() : t{} {
-    uint32_t columns[32] = {};
-    uint32_t v = 1u << 31;
-    for (int i = 0; i < 32; ++i, v ^= v >> 1) {
-      uint32_t r = 0;  // reverse the column
-      for (int b = 0; b < 32; ++b)
-        if (v & (1u << b)) r |= 1u << (31 - b);
-      columns[31 - i] = r;  // input bit i of the index is bit 31 - i of the reversed index
+// The generator columns of dimension 1 (polynomial x + 1): v_1 = 2^31, v_k = v_(k-1) ^ v_(k-1) / 2.
+// `reversed`: the same map seen through bit reversal on both sides, Sobol1Reversed(Reverse(i)) =
+// Reverse(Sobol1(i)), which lets the scrambled sampler below skip two reversals per point.
+constexpr ByteTables Sobol1Map(bool reversed) {
+  uint32_t columns[32] = {};
+  uint32_t v = 1u << 31;
+  for (int i = 0; i < 32; ++i, v ^= v >> 1) {
+    if (!reversed) {
+      columns[i] = v;
+      continue;
     }
-    for (int b = 0; b < 4; ++b)
-      for (int x = 0; x < 256; ++x) {
-        uint32_t r = 0;
-        for (int bit = 0; bit < 8; ++bit)
-          if (x & (1 << bit)) r ^= columns[8 * b + bit];
-        t[b][x] = r;
-      }
+    uint32_t r = 0;
+    for (int b = 0; b < 32; ++b)
+      if (v & (1u << b)) r |= 1u << (31 - b);
+    columns[31 - i] = r;  // input bit i of the index is bit 31 - i of the reversed index
   }
-};
-inline constexpr Sobol1ReversedTables kSobol1ReversedTables{};
-
-inline uint32_t Sobol1Reversed(uint32_t index_reversed) {
-  const auto& t = kSobol1ReversedTables.t;
-  return t[0][index_reversed & 0xff] ^ t[1][(index_reversed >> 8) & 0xff] ^ t[2][(index_reversed >> 16) & 0xff] ^
-         t[3][index_reversed >> 24];
+  return ByteTables(columns);
 }
+inline constexpr ByteTables kSobol1 = Sobol1Map(false), kSobol1Reversed = Sobol1Map(true);
+
+inline uint32_t Sobol1(uint32_t index) { return kSobol1(index); }
+inline uint32_t Sobol1Reversed(uint32_t index_reversed) { return kSobol1Reversed(index_reversed); }
 
 // Point `index` of the shuffled, Owen-scrambled 2D Sobol' net for a 64-bit seed. The
 // index shuffle is itself a nested uniform scramble (Burley 2020), which keeps every
