@@ -64,6 +64,31 @@ Vec3d Column(const Transform& t, int c) {
   return {a[0][c], a[1][c], a[2][c]};
 }
 
+// Where a world-space ray meets the object-space plane z = 0 of `to_world`, with 0 < t < tmax:
+// the parameter and the object-space (x, y).
+bool ObjectPlaneHit(const Transform& to_world, const Vec3d& o, const Vec3d& d, double tmax, double* t, Vec2d* xy) {
+  Vec3d oo = ToObject(to_world.InverseMatrix(), o, true), dd = ToObject(to_world.InverseMatrix(), d, false);
+  if (dd.z == 0) return false;
+  double th = -oo.z / dd.z;
+  if (!(th > 0) || th >= tmax) return false;
+  *t = th;
+  *xy = {oo.x + th * dd.x, oo.y + th * dd.y};
+  return true;
+}
+
+// The interaction at object-space point (x, y, 0) of a flat shape with world normal n.
+SurfaceInteraction FlatInteraction(const Transform& to_world, const Vec3f& n, double x, double y, const Ray& ray,
+                                   float t, Vec2f uv) {
+  SurfaceInteraction si;
+  TransformPointWithError(to_world, Vec3d(x, y, 0), &si.p, &si.p_error);
+  si.n = n;
+  si.uv = uv;
+  si.shading = Frame::FromNormalTangent(n, to_world.Vector(Vec3f(1, 0, 0)));
+  si.t = t;
+  si.wo = -Normalize(ray.d);
+  return si;
+}
+
 }  // namespace
 
 RTCGeometry AnalyticShape::CreateGeometry(RTCDevice device) const {
@@ -216,29 +241,17 @@ Disk::Disk(const Transform& to_world, bool flip_normals) : to_world_(to_world), 
 }
 
 bool Disk::Intersect(const Vec3d& o, const Vec3d& d, double tmax, double* t, Vec2f* param) const {
-  Vec3d oo = ToObject(to_world_.InverseMatrix(), o, true), dd = ToObject(to_world_.InverseMatrix(), d, false);
-  if (dd.z == 0) return false;
-  double th = -oo.z / dd.z;
-  if (!(th > 0) || th >= tmax) return false;
-  double x = oo.x + th * dd.x, y = oo.y + th * dd.y;
-  if (x * x + y * y > 1) return false;
-  *t = th;
-  *param = {float(x), float(y)};
+  Vec2d xy;
+  if (!ObjectPlaneHit(to_world_, o, d, tmax, t, &xy) || xy.x * xy.x + xy.y * xy.y > 1) return false;
+  *param = {float(xy.x), float(xy.y)};
   return true;
 }
 
 SurfaceInteraction Disk::ComputeInteraction(const Ray& ray, const RTCHit& hit, float t) const {
-  SurfaceInteraction si;
-  TransformPointWithError(to_world_, Vec3d(hit.u, hit.v, 0), &si.p, &si.p_error);
-  si.n = normal_;
-  float r = std::sqrt(hit.u * hit.u + hit.v * hit.v);
   float phi = std::atan2(hit.v, hit.u);
   if (phi < 0) phi += 2 * kPi;
-  si.uv = {r, phi * kInv2Pi};
-  si.shading = Frame::FromNormalTangent(normal_, to_world_.Vector(Vec3f(1, 0, 0)));
-  si.t = t;
-  si.wo = -Normalize(ray.d);
-  return si;
+  Vec2f uv(std::sqrt(hit.u * hit.u + hit.v * hit.v), phi * kInv2Pi);  // (r, phi / 2 pi)
+  return FlatInteraction(to_world_, normal_, hit.u, hit.v, ray, t, uv);
 }
 
 Bounds3f Disk::WorldBounds() const {
@@ -345,24 +358,14 @@ InfinitePlane::InfinitePlane(const Transform& to_world, bool flip_normals) : to_
 }
 
 bool InfinitePlane::Intersect(const Vec3d& o, const Vec3d& d, double tmax, double* t, Vec2f* param) const {
-  Vec3d oo = ToObject(to_world_.InverseMatrix(), o, true), dd = ToObject(to_world_.InverseMatrix(), d, false);
-  if (dd.z == 0) return false;
-  double th = -oo.z / dd.z;
-  if (!(th > 0) || th >= tmax) return false;
-  *t = th;
-  *param = {float(oo.x + th * dd.x), float(oo.y + th * dd.y)};
+  Vec2d xy;
+  if (!ObjectPlaneHit(to_world_, o, d, tmax, t, &xy)) return false;
+  *param = {float(xy.x), float(xy.y)};
   return true;
 }
 
 SurfaceInteraction InfinitePlane::ComputeInteraction(const Ray& ray, const RTCHit& hit, float t) const {
-  SurfaceInteraction si;
-  TransformPointWithError(to_world_, Vec3d(hit.u, hit.v, 0), &si.p, &si.p_error);
-  si.n = normal_;
-  si.uv = {hit.u, hit.v};
-  si.shading = Frame::FromNormalTangent(normal_, to_world_.Vector(Vec3f(1, 0, 0)));
-  si.t = t;
-  si.wo = -Normalize(ray.d);
-  return si;
+  return FlatInteraction(to_world_, normal_, hit.u, hit.v, ray, t, {hit.u, hit.v});
 }
 
 Bounds3f InfinitePlane::EmbreeBounds() const {

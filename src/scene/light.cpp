@@ -5,17 +5,27 @@
 
 namespace objektiv {
 
-std::optional<LightSample> PointLight::SampleLi(const Vec3f& ref, Vec2f, const SampledWavelengths& lambda) const {
-  Vec3f d = p_ - ref;
-  float dist2 = LengthSquared(d);
-  if (dist2 == 0) return std::nullopt;
+namespace {
+// The geometry of a sample of a light at the point p seen from ref (a delta in position):
+// direction, pdf 1, exact position; the caller fills in L. *dist2 gets the squared distance.
+std::optional<LightSample> PointSourceSample(const Vec3f& p, const Vec3f& ref, float* dist2) {
+  Vec3f d = p - ref;
+  *dist2 = LengthSquared(d);
+  if (*dist2 == 0) return std::nullopt;
   LightSample s;
-  s.wi = d / std::sqrt(dist2);
-  s.L = intensity_.Sample(lambda) / dist2;
+  s.wi = d / std::sqrt(*dist2);
   s.pdf = 1;
-  s.p = p_;
+  s.p = p;
   s.p_error = Vec3f(0.f);
   s.n = Vec3f(0.f);
+  return s;
+}
+}  // namespace
+
+std::optional<LightSample> PointLight::SampleLi(const Vec3f& ref, Vec2f, const SampledWavelengths& lambda) const {
+  float dist2;
+  std::optional<LightSample> s = PointSourceSample(p_, ref, &dist2);
+  if (s) s->L = intensity_.Sample(lambda) / dist2;
   return s;
 }
 
@@ -40,18 +50,12 @@ float SpotLight::Falloff(const Vec3f& w) const {
 }
 
 std::optional<LightSample> SpotLight::SampleLi(const Vec3f& ref, Vec2f, const SampledWavelengths& lambda) const {
-  Vec3f d = p_ - ref;
-  float dist2 = LengthSquared(d);
-  if (dist2 == 0) return std::nullopt;
-  LightSample s;
-  s.wi = d / std::sqrt(dist2);
-  float fall = Falloff(-s.wi);
+  float dist2;
+  std::optional<LightSample> s = PointSourceSample(p_, ref, &dist2);
+  if (!s) return s;
+  float fall = Falloff(-s->wi);
   if (fall == 0) return std::nullopt;
-  s.L = intensity_.Sample(lambda) * (fall / dist2);
-  s.pdf = 1;
-  s.p = p_;
-  s.p_error = Vec3f(0.f);
-  s.n = Vec3f(0.f);
+  s->L = intensity_.Sample(lambda) * (fall / dist2);
   return s;
 }
 
