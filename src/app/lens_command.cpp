@@ -5,6 +5,7 @@
 #include "base/error.h"
 #include "io/lens_analysis.h"
 #include "io/lens_plot.h"
+#include "optics/dispersion.h"
 #include "optics/focusing.h"
 #include "optics/lens_file.h"
 #include "optics/paraxial.h"
@@ -50,6 +51,14 @@ int RunList() {
   return 0;
 }
 
+// The tracer every lens command analyses: film at the paraxial focus for an object at infinity at
+// `wavelength`, whatever back focus the file carries (pbrt files leave it at the last vertex).
+LensTracer TracerFocusedAtInfinity(const LensPrescription& lens, double wavelength) {
+  LensTracer tracer(lens);
+  tracer.SetBackFocus(ComputeParaxial(lens, wavelength).bfl);
+  return tracer;
+}
+
 int RunInfo(const LensArgs& a) {
   LensPrescription lens = LoadImagingLens(a.lens, a.wavelength);
   ParaxialData d = ComputeParaxial(lens, a.wavelength);
@@ -64,8 +73,7 @@ int RunInfo(const LensArgs& a) {
                                    a.lens, a.focus_m));
   }
   auto [sw, sh] = ParseSensor(a.sensor);
-  LensTracer tracer(lens);
-  tracer.SetBackFocus(d.bfl);
+  LensTracer tracer = TracerFocusedAtInfinity(lens, a.wavelength);
   FieldOfView fov = SensorFieldOfView(tracer, sw, sh, a.wavelength);
   double real_bfl = RealBackFocus(tracer, a.wavelength);
   std::string focus_json;
@@ -111,19 +119,14 @@ int RunInfo(const LensArgs& a) {
 }
 
 int RunAnalyze(const LensArgs& a) {
-  LensPrescription lens = LoadImagingLens(a.lens, 587.5618);
-  LensTracer tracer(lens);
-  tracer.SetBackFocus(ComputeParaxial(lens).bfl);  // the paraxial focus for an object at infinity
-  WriteLensAnalysis(tracer, a.output);
+  LensPrescription lens = LoadImagingLens(a.lens, kLambdad);
+  WriteLensAnalysis(TracerFocusedAtInfinity(lens, kLambdad), a.output);
   return 0;
 }
 
 int RunPlot(const LensArgs& a) {
   LensPrescription lens = LoadImagingLens(a.lens, a.wavelength);
-  LensTracer tracer(lens);
-  ParaxialData p = ComputeParaxial(lens, a.wavelength);
-  // pbrt files leave the film at the last vertex: put it at the paraxial focus.
-  if (lens.surfaces.back().thickness == 0) tracer.SetBackFocus(p.bfl);
+  LensTracer tracer = TracerFocusedAtInfinity(lens, a.wavelength);
   std::vector<double> fields = a.fields.empty() ? DefaultFields(tracer, a.wavelength) : a.fields;
   PlotLensLayout(tracer, fields, a.wavelength).Write(a.output);
   return 0;
