@@ -28,9 +28,9 @@ void WriteStatsJson(const std::string& path, const RenderStats& s, int threads) 
   out << fmt::format(
       "{{\n  \"seconds\": {:.6f},\n  \"spp\": {},\n  \"width\": {},\n  \"height\": {},\n  \"threads\": {},\n"
       "  \"samples\": {},\n  \"rays\": {},\n  \"samples_per_second\": {:.3f},\n  \"mrays_per_second\": {:.6f},\n"
-      "  \"nan_count\": {},\n  \"inf_count\": {}\n}}\n",
+      "  \"nan_count\": {},\n  \"inf_count\": {},\n  \"camera_rays_traced\": {},\n  \"camera_pass_rate\": {:.6f}\n}}\n",
       s.seconds, s.spp, s.width, s.height, threads, s.samples, s.rays, s.SamplesPerSecond(), s.MraysPerSecond(),
-      s.nan_count, s.inf_count);
+      s.nan_count, s.inf_count, s.camera_rays_traced, s.CameraPassRate());
 }
 
 CropWindow ParseCrop(const std::string& text, int width, int height) {
@@ -91,10 +91,10 @@ int RunRender(const RenderArgs& a) {
   WritePng(png.string(), ApplyToneMap(linear, fs_.tonemap));
   if (!a.stats_json.empty()) WriteStatsJson(a.stats_json, stats, threads);
   if (!a.quiet)
-    std::printf("%s: %dx%d, %d spp, %.2f s, %.3g samples/s, %.2f Mrays/s, NaN %llu, Inf %llu -> %s, %s\n",
+    std::printf("%s: %dx%d, %d spp, %.2f s, %.3g samples/s, %.2f Mrays/s, camera pass rate %.1f%%, NaN %llu, Inf %llu -> %s, %s\n",
                 a.scene.c_str(), stats.width, stats.height, stats.spp, stats.seconds, stats.SamplesPerSecond(),
-                stats.MraysPerSecond(), (unsigned long long)stats.nan_count, (unsigned long long)stats.inf_count,
-                exr.string().c_str(), png.string().c_str());
+                stats.MraysPerSecond(), 100 * stats.CameraPassRate(), (unsigned long long)stats.nan_count,
+                (unsigned long long)stats.inf_count, exr.string().c_str(), png.string().c_str());
   if (stats.nan_count || stats.inf_count)
     spdlog::warn("{} NaN and {} Inf radiance samples were dropped", stats.nan_count, stats.inf_count);
   return 0;

@@ -6,6 +6,15 @@
 
 namespace objektiv {
 
+void Camera::GenerateRays(std::span<const CameraSample> samples, std::span<SampledWavelengths> lambdas,
+                          std::span<std::optional<CameraRay>> out, CameraRayCount& count) const {
+  for (size_t i = 0; i < samples.size(); ++i) {
+    out[i] = GenerateRay(samples[i], lambdas[i]);
+    ++count.traced;
+    count.passed += out[i].has_value();
+  }
+}
+
 Vec2f ScreenTangents(float fov_deg, FovAxis axis, int width, int height) {
   float t = std::tan(Radians(fov_deg) / 2);
   float w = float(width), h = float(height);

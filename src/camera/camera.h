@@ -2,7 +2,9 @@
 // Camera space follows Mitsuba: +z looks forward, +y is up, +x is to the left, so that
 // image x grows to the right.
 #pragma once
+#include <cstdint>
 #include <optional>
+#include <span>
 
 #include "base/sampled_spectrum.h"
 #include "base/transform.h"
@@ -20,11 +22,21 @@ struct CameraRay {
   SampledSpectrum weight{1.f};
 };
 
+// Camera rays traced through a lens, and those of them that came out of its front (film
+// points that no light reaches, such as outside a fisheye's image circle, trace nothing).
+struct CameraRayCount {
+  uint64_t traced = 0, passed = 0;
+};
+
 class Camera {
  public:
   Camera(const Transform& to_world, int width, int height) : to_world_(to_world), width_(width), height_(height) {}
   virtual ~Camera() = default;
   virtual std::optional<CameraRay> GenerateRay(const CameraSample& s, SampledWavelengths& lambda) const = 0;
+  // Many rays at once (a lens camera traces them together, which is faster); out[i] is empty
+  // where no light gets through.
+  virtual void GenerateRays(std::span<const CameraSample> samples, std::span<SampledWavelengths> lambdas,
+                            std::span<std::optional<CameraRay>> out, CameraRayCount& count) const;
   int width() const { return width_; }
   int height() const { return height_; }
 

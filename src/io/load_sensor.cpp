@@ -103,7 +103,9 @@ void BuildSensor(const ObjectNode& node, RenderSetup& setup) {
   float far_clip = float(p.FloatIn("far_clip", 1e4, 0, 1e30));
   if (!(far_clip > near_clip)) throw ErrorAt(p.LocOf("far_clip"), "far_clip must exceed near_clip");
 
-  if (node.type == "orthographic") {
+  if (node.type == "realistic") {
+    setup.camera = BuildLensCamera(p, to_world, w, h, far_clip);
+  } else if (node.type == "orthographic") {
     setup.camera = std::make_unique<OrthographicCamera>(to_world, w, h, near_clip, far_clip);
   } else if (node.type == "perspective" || node.type == "thinlens") {
     static const std::map<std::string, FovAxis> axes = {{"x", FovAxis::kX},
@@ -151,7 +153,7 @@ void BuildSensor(const ObjectNode& node, RenderSetup& setup) {
                                                       float(p.Float("blade_rotation", 0)));
     }
   } else {
-    throw ErrorAt(node.loc, "unknown sensor type '{}' (known: perspective, thinlens, orthographic)", node.type);
+    throw ErrorAt(node.loc, "unknown sensor type '{}' (known: perspective, thinlens, orthographic, realistic)", node.type);
   }
   p.WarnUnused();
 }

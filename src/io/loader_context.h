@@ -30,6 +30,9 @@ void BuildShape(const ObjectNode& node, LoaderContext& ctx, int group = -1);
 std::unique_ptr<Light> BuildEmitter(const ObjectNode& node, LoaderContext& ctx);
 // The camera, film settings and sampler settings from a <sensor>.
 void BuildSensor(const ObjectNode& node, RenderSetup& setup);
+// <sensor type="realistic"> (a lens prescription), called by BuildSensor.
+std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const Transform& to_world, int width, int height,
+                                        float far_clip);
 std::unique_ptr<Integrator> BuildIntegrator(const ObjectNode* node, const Scene& scene);
 
 // "unknown <tag> type 'x' (known: a, b, c)"

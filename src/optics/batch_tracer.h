@@ -10,12 +10,21 @@
 
 namespace objektiv {
 
+// One ray in single precision, lens space (mm), with its wavelength and the transmittance
+// gathered so far.
+struct FloatRay {
+  float ox, oy, oz, dx, dy, dz, lambda;
+  float transmittance = 1;
+};
+
 struct RayBatch {
   std::vector<float> ox, oy, oz, dx, dy, dz, lambda;
   std::vector<float> transmittance;  // Fresnel and internal transmittance, multiplied along
   std::vector<uint8_t> alive;
   void Resize(size_t n);
   size_t Size() const { return ox.size(); }
+  void Push(const FloatRay& r);  // appended alive
+  FloatRay Get(size_t i) const;
 };
 
 class BatchLensTracer {
@@ -26,6 +35,10 @@ class BatchLensTracer {
   // the Fresnel losses and glass absorption are multiplied into `transmittance`.
   void TraceFromFilm(RayBatch& rays, bool transmission = true) const;
   void TraceFromObject(RayBatch& rays, bool transmission = true) const;
+  // One ray, in place; false if it is blocked (the ray is then left where it stopped).
+  bool TraceRay(FloatRay& ray, bool from_film, bool transmission = true) const;
+  // Without the rims: only the stop clips (to show a lens without optical vignetting).
+  void IgnoreRims();
   float FilmZ() const { return film_z_; }
 
  private:
@@ -36,6 +49,7 @@ class BatchLensTracer {
     int medium_after;            // index into index_tables_ (-1: air)
   };
   void Trace(RayBatch& rays, bool from_film, bool transmission) const;
+  bool Refract(const Surface& s, int m_in, int m_out, bool absorb, bool transmission, FloatRay& ray) const;
   float Index(int medium, float lambda) const;
   float Absorption(int medium, float lambda) const;  // per mm
 

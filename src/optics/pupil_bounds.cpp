@@ -53,13 +53,14 @@ bool ConvexPolygon::Contains(Vec2d p) const {
 }
 
 namespace {
-// Traces, from film points (r, 0) for each radius, rays aimed at the given points of the
-// sampling plane; returns for each point whether any of them got through.
+// Traces, from film points (r, 0) for each radius and wavelength, rays aimed at the given
+// points of the sampling plane; returns for each point whether any of them got through.
 std::vector<uint8_t> Passes(const BatchLensTracer& fast, const std::vector<double>& radii, double film_z,
-                            double plane_z, const std::vector<Vec2d>& points, double lambda_nm) {
+                            double plane_z, const std::vector<Vec2d>& points, const std::vector<double>& wavelengths) {
   std::vector<uint8_t> any(points.size(), 0);
   RayBatch b;
-  for (double r : radii) {
+  for (size_t c = 0; c < radii.size() * wavelengths.size(); ++c) {
+    const double r = radii[c % radii.size()], lambda_nm = wavelengths[c / radii.size()];
     b.Resize(points.size());
     for (size_t n = 0; n < points.size(); ++n) {
       Vec3d d = Normalize(Vec3d(points[n].x - r, points[n].y, plane_z - film_z));
@@ -83,8 +84,11 @@ std::vector<Vec2d> GridCentres(Vec2d lo, Vec2d hi, int grid, Vec2d* cell) {
 }
 }  // namespace
 
-PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, double lambda_nm, int bins, int grid)
+PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, const PupilBoundsOptions& options)
     : film_radius_(film_radius) {
+  const int bins = options.bins, grid = options.grid;
+  const std::vector<double>& lambdas = options.wavelengths;
+  const double lambda_nm = lambdas.front();
   const LensPrescription& lens = tracer.lens();
   const int last = int(lens.surfaces.size()) - 1;
   // Sample on the exit pupil's plane: light from every film point passes the same image of the
@@ -95,6 +99,7 @@ PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, double la
   const double rear = std::max(lens.surfaces[last].semi_diameter, 1.5 * p.exit_pupil_diameter);
   const double film_z = tracer.FilmZ();
   BatchLensTracer fast(tracer);
+  if (!options.rims) fast.IgnoreRims();
   bounds_.resize(bins);
   triangle_cdf_.resize(bins);
   // Bins are independent: build them in parallel.
@@ -106,7 +111,7 @@ PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, double la
     // Coarse pass over the whole plane to find where light gets through.
     Vec2d coarse_cell;
     std::vector<Vec2d> coarse = GridCentres({-rear, -rear}, {rear, rear}, grid / 2, &coarse_cell);
-    std::vector<uint8_t> coarse_ok = Passes(fast, radii, film_z, rear_z_, coarse, lambda_nm);
+    std::vector<uint8_t> coarse_ok = Passes(fast, radii, film_z, rear_z_, coarse, lambdas);
     Vec2d lo(-rear, -rear), hi(rear, rear);
     bool found = false;
     for (size_t n = 0; n < coarse.size(); ++n)
@@ -127,7 +132,7 @@ PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, double la
     // the square one spacing around it; the bound is the convex hull of those squares.
     Vec2d cell;
     std::vector<Vec2d> fine = GridCentres(lo, hi, grid, &cell);
-    std::vector<uint8_t> ok = Passes(fast, radii, film_z, rear_z_, fine, lambda_nm);
+    std::vector<uint8_t> ok = Passes(fast, radii, film_z, rear_z_, fine, lambdas);
     auto at = [&](int i, int j) { return i >= 0 && j >= 0 && i < grid && j < grid && ok[size_t(i) * grid + j]; };
     std::vector<Vec2d> sub;
     const int k = 4;
@@ -142,7 +147,7 @@ PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, double la
         for (int a = 0; a < k; ++a)
           for (int bb = 0; bb < k; ++bb) sub.push_back({c0.x + (a + 0.5) * cell.x / k, c0.y + (bb + 0.5) * cell.y / k});
       }
-    std::vector<uint8_t> sub_ok = Passes(fast, radii, film_z, rear_z_, sub, lambda_nm);
+    std::vector<uint8_t> sub_ok = Passes(fast, radii, film_z, rear_z_, sub, lambdas);
     std::vector<Vec2d> corners;
     for (size_t n = 0; n < sub.size(); ++n)
       if (sub_ok[n])

@@ -17,11 +17,19 @@ struct ConvexPolygon {
   bool Contains(Vec2d p) const;
 };
 
+struct PupilBoundsOptions {
+  int bins = 128;  // radial film bins
+  int grid = 64;   // grid x grid probe rays over the region per film radius probed
+  // A probe passes if it passes at any of these wavelengths: a dispersive lens's pupil
+  // changes a little with wavelength, and the bound must hold the light of every one.
+  std::vector<double> wavelengths = {587.5618};
+  bool rims = true;  // false: only the stop clips (a lens without optical vignetting)
+};
+
 class PupilBounds {
  public:
-  // `film_radius`: largest radial film distance needed (e.g. the half-diagonal, mm); `bins`
-  // radial bins; `grid` x `grid` probe rays over the rear element per film radius probed.
-  PupilBounds(const LensTracer& tracer, double film_radius, double lambda_nm = 587.5618, int bins = 128, int grid = 64);
+  // `film_radius`: largest radial film distance needed (e.g. the half-diagonal, mm).
+  PupilBounds(const LensTracer& tracer, double film_radius, const PupilBoundsOptions& options = {});
 
   struct Sample {
     Vec3d point;  // on the sampling (exit pupil) plane, lens space (mm)

@@ -11,6 +11,10 @@
 
 namespace objektiv {
 
+namespace {
+constexpr int kCameraBatch = 64;  // samples of one pixel whose camera rays are made together
+}  // namespace
+
 RenderStats Render(const Camera& camera, const Integrator& integrator, const Sampler& sampler_prototype, Film& film,
                    const RenderOptions& options) {
   const CropWindow crop = film.crop();
@@ -23,45 +27,64 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
     limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, options.threads);
 
   struct ThreadState {
-    std::unique_ptr<Sampler> sampler;
+    std::vector<Sampler> samplers;
+    std::vector<FilterSample> filter_samples;
+    std::vector<SampledWavelengths> lambdas;
+    std::vector<CameraSample> camera_samples;
+    std::vector<std::optional<CameraRay>> rays_out;
     RayCounts rays;
-    uint64_t camera_rays = 0, camera_failed = 0, nan = 0, inf = 0;
+    CameraRayCount camera;
+    uint64_t nan = 0, inf = 0;
   };
-  tbb::enumerable_thread_specific<ThreadState> states([&] { return ThreadState{sampler_prototype.Clone()}; });
+  tbb::enumerable_thread_specific<ThreadState> states([&] {
+    ThreadState st;
+    st.samplers.assign(kCameraBatch, sampler_prototype);
+    st.filter_samples.resize(kCameraBatch);
+    st.lambdas.resize(kCameraBatch);
+    st.camera_samples.resize(kCameraBatch);
+    st.rays_out.resize(kCameraBatch);
+    return st;
+  });
   Progress progress("Rendering", int64_t(tiles_x) * tiles_y, options.progress);
   auto start = std::chrono::steady_clock::now();
 
   tbb::parallel_for(0, tiles_x * tiles_y, [&](int tile) {
     ThreadState& st = states.local();
-    Sampler& sampler = *st.sampler;
     int tx0 = crop.x0 + (tile % tiles_x) * ts, ty0 = crop.y0 + (tile / tiles_x) * ts;
     int tx1 = std::min(tx0 + ts, crop.x1), ty1 = std::min(ty0 + ts, crop.y1);
     for (int y = ty0; y < ty1; ++y)
       for (int x = tx0; x < tx1; ++x) {
         Vec2i pixel(x, y);
-        for (int s = options.spp_begin; s < options.spp_end; ++s) {
-          sampler.StartPixelSample(pixel, s);
-          FilterSample fs = film.filter().Sample(sampler.GetPixel2D());
-          SampledWavelengths lambda = SampledWavelengths::SampleVisible(sampler.Get1D());
-          CameraSample cs{Vec2f(x + 0.5f + fs.offset.x, y + 0.5f + fs.offset.y), sampler.Get2D()};
-          ++st.camera_rays;
-          std::optional<CameraRay> cr = camera.GenerateRay(cs, lambda);
-          SampledSpectrum L(0.f);
-          if (cr) {
-            L = cr->weight * integrator.Li(cr->ray, lambda, sampler, st.rays);
-          } else {
-            ++st.camera_failed;
+        // Camera rays for a group of samples at once (a lens traces them faster together);
+        // each sample's sampler state is kept so that its path goes on where it left off.
+        for (int s0 = options.spp_begin; s0 < options.spp_end; s0 += kCameraBatch) {
+          const int n = std::min(kCameraBatch, options.spp_end - s0);
+          for (int k = 0; k < n; ++k) {
+            Sampler& sk = st.samplers[k];
+            sk.StartPixelSample(pixel, s0 + k);
+            st.filter_samples[k] = film.filter().Sample(sk.GetPixel2D());
+            st.lambdas[k] = SampledWavelengths::SampleVisible(sk.Get1D());
+            Vec2f offset = st.filter_samples[k].offset;
+            st.camera_samples[k] = {Vec2f(x + 0.5f + offset.x, y + 0.5f + offset.y), sk.Get2D()};
           }
-          // Non-finite radiance is counted and dropped, never written to the film.
-          if (L.HasNaN()) {
-            ++st.nan;
-            continue;
+          camera.GenerateRays(std::span(st.camera_samples.data(), n), std::span(st.lambdas.data(), n),
+                              std::span(st.rays_out.data(), n), st.camera);
+          for (int k = 0; k < n; ++k) {
+            SampledWavelengths& lambda = st.lambdas[k];
+            const std::optional<CameraRay>& cr = st.rays_out[k];
+            SampledSpectrum L(0.f);
+            if (cr) L = cr->weight * integrator.Li(cr->ray, lambda, st.samplers[k], st.rays);
+            // Non-finite radiance is counted and dropped, never written to the film.
+            if (L.HasNaN()) {
+              ++st.nan;
+              continue;
+            }
+            if (L.HasInf()) {
+              ++st.inf;
+              continue;
+            }
+            film.AddSample(pixel, L, lambda, st.filter_samples[k].weight);
           }
-          if (L.HasInf()) {
-            ++st.inf;
-            continue;
-          }
-          film.AddSample(pixel, L, lambda, fs.weight);
         }
       }
     progress.Update(1);
@@ -76,8 +99,8 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
   stats.samples = uint64_t(spp) * crop.Width() * crop.Height();
   for (const ThreadState& st : states) {
     stats.rays += st.rays.closest + st.rays.shadow;
-    stats.camera_rays += st.camera_rays;
-    stats.camera_rays_failed += st.camera_failed;
+    stats.camera_rays_traced += st.camera.traced;
+    stats.camera_rays_passed += st.camera.passed;
     stats.nan_count += st.nan;
     stats.inf_count += st.inf;
   }

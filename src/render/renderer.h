@@ -13,10 +13,13 @@ struct RenderStats {
   double seconds = 0;
   int spp = 0;
   int width = 0, height = 0;
-  uint64_t samples = 0, rays = 0, camera_rays = 0, camera_rays_failed = 0;
+  uint64_t samples = 0, rays = 0;
+  uint64_t camera_rays_traced = 0, camera_rays_passed = 0;  // through a lens (see CameraRayCount)
   uint64_t nan_count = 0, inf_count = 0;
   double SamplesPerSecond() const { return seconds > 0 ? samples / seconds : 0; }
   double MraysPerSecond() const { return seconds > 0 ? rays / seconds * 1e-6 : 0; }
+  // Camera rays that came out of the lens per camera ray traced (1 for ideal cameras).
+  double CameraPassRate() const { return camera_rays_traced ? double(camera_rays_passed) / camera_rays_traced : 1; }
 };
 
 struct RenderOptions {

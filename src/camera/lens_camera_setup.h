@@ -1,0 +1,33 @@
+// Setting up a camera from a lens prescription: the stop (f-number or diameter, blades), the
+// focus (the lens moved as a whole, real rays, logged) and the model (the real lens, or the
+// thick- or thin-lens camera from its paraxial data).
+#pragma once
+#include <memory>
+#include <optional>
+
+#include "camera/lens_camera.h"
+#include "optics/lens_prescription.h"
+
+namespace objektiv {
+
+enum class LensModel { kReal, kThick, kThin };
+
+struct LensCameraSpec {
+  LensPrescription lens;
+  LensModel model = LensModel::kReal;
+  double fnumber = 0;        // 0: wide open (or stop_diameter)
+  double stop_diameter = 0;  // mm; 0: from the f-number
+  int blades = 0;            // 0: circular
+  double blade_curvature = 0, blade_rotation = 0;  // 0..1, degrees
+  double focus_distance = INFINITY;  // metres from the film
+  std::optional<Vec3f> focus_point;  // world space: focus on the plane through it instead
+  LensCameraSettings settings;
+};
+
+// The wide-open paraxial f-number (d line, object at infinity).
+double WideOpenFNumber(const LensPrescription& lens);
+
+// Throws InputError (without a location) when the stop cannot be set as asked.
+std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int height, const LensCameraSpec& spec);
+
+}  // namespace objektiv

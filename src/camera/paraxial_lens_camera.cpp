@@ -1,0 +1,87 @@
+#include "camera/paraxial_lens_camera.h"
+
+#include <cmath>
+
+#include "base/sampling.h"
+#include "optics/dispersion.h"
+#include "optics/focusing.h"
+#include "optics/paraxial.h"
+
+namespace objektiv {
+
+ParaxialLensModel MakeParaxialModel(const LensTracer& tracer, double distance_from_film, bool thin) {
+  const LensPrescription& lens = tracer.lens();
+  const int last = int(lens.surfaces.size()) - 1;
+  ParaxialData p = ComputeParaxial(lens, kLambdad, tracer.StopSemiDiameter());
+  const bool infinite = !(distance_from_film < 1e12);
+  ParaxialLensModel m;
+  m.efl = p.efl;
+  if (thin) {
+    // Lens-to-film distance v with 1/v + 1/(D - v) = 1/f (the root near f); the lens sits
+    // where the real lens's rear principal plane is at infinity focus, the film behind it.
+    double v = p.efl;
+    if (!infinite) {
+      double disc = distance_from_film * distance_from_film - 4 * p.efl * distance_from_film;
+      v = disc >= 0 ? 0.5 * (distance_from_film - std::sqrt(disc)) : 2 * p.efl;  // too close: closest focus
+    }
+    double z = tracer.VertexZ(last) + p.back_principal_plane;
+    m.front_principal_z = m.back_principal_z = m.entrance_pupil_z = m.exit_pupil_z = z;
+    m.entrance_pupil_radius = m.exit_pupil_radius = p.efl / (2 * p.fnumber);
+    m.film_z = z + v;
+    return m;
+  }
+  LensTracer t = tracer;
+  if (infinite) {
+    t.SetBackFocus(p.bfl);
+  } else if (auto f = FocusAtDistance(lens, distance_from_film)) {
+    t.SetBackFocus(f->back_focus);
+  } else {
+    t.SetBackFocus(p.back_principal_plane + 2 * p.efl);  // closest focus
+  }
+  m.front_principal_z = t.VertexZ(0) + p.front_principal_plane;
+  m.back_principal_z = t.VertexZ(last) + p.back_principal_plane;
+  m.entrance_pupil_z = t.VertexZ(0) + p.entrance_pupil_position;
+  m.entrance_pupil_radius = p.entrance_pupil_diameter / 2;
+  m.exit_pupil_z = t.VertexZ(last) + p.exit_pupil_position;
+  m.exit_pupil_radius = p.exit_pupil_diameter / 2;
+  m.film_z = t.FilmZ();
+  return m;
+}
+
+ParaxialLensCamera::ParaxialLensCamera(const Transform& to_world, int width, int height, const ParaxialLensModel& model,
+                                       int blades, double blade_rotation_deg, const LensCameraSettings& settings)
+    : LensCamera(to_world, width, height, settings), m_(model), blades_(blades),
+      blade_rotation_(float(blade_rotation_deg * M_PI / 180)) {
+  SetOriginZ(m_.entrance_pupil_z);
+}
+
+std::optional<CameraRay> ParaxialLensCamera::GenerateRay(const CameraSample& s, SampledWavelengths&) const {
+  Vec2d film = FilmPoint(s.p_film);
+  // A point of the exit pupil (circle or regular polygon inscribed in it).
+  Vec2f u = blades_ >= 3 ? SampleRegularPolygon(blades_, blade_rotation_, s.p_lens) : SampleUniformDiskConcentric(s.p_lens);
+  double area = (blades_ >= 3 ? RegularPolygonArea(blades_) : M_PI) * m_.exit_pupil_radius * m_.exit_pupil_radius;
+  Vec3d f(film.x, film.y, m_.film_z), xp(u.x * m_.exit_pupil_radius, u.y * m_.exit_pupil_radius, m_.exit_pupil_z);
+  double dz = m_.film_z - m_.exit_pupil_z;
+  Vec3d to_pupil = Normalize(xp - f);
+  // The pupils are conjugate: the matching entrance-pupil point, scaled by their sizes.
+  double pupil_scale = m_.entrance_pupil_radius / m_.exit_pupil_radius;
+  Vec3d ep(xp.x * pupil_scale, xp.y * pupil_scale, m_.entrance_pupil_z);
+  // The film point's conjugate: Gaussian imaging about the principal planes.
+  double image = m_.film_z - m_.back_principal_z;  // from H', toward the film
+  double inv_object = 1 / m_.efl - 1 / image;
+  Vec3d d;
+  if (std::abs(inv_object) * m_.efl < 1e-9) {
+    // Object at infinity: every ray parallel to the one through the nodal points.
+    d = Normalize(Vec3d(-f.x, -f.y, -image));
+  } else {
+    double object = 1 / inv_object;  // in front of H; negative: a virtual object behind it
+    Vec3d o(-f.x * object / image, -f.y * object / image, m_.front_principal_z - object);
+    d = object > 0 ? Normalize(o - ep) : Normalize(ep - o);
+  }
+  CameraRay cr;
+  cr.ray = WorldRay(ep, d);
+  cr.weight = SampledSpectrum(Weight(film, -to_pupil.z, dz, 1 / area));
+  return cr;
+}
+
+}  // namespace objektiv

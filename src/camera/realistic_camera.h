@@ -1,0 +1,35 @@
+// The realistic camera: rays start on the sensor and are traced exactly through every surface
+// of a lens prescription (per wavelength, with each glass's dispersion, Fresnel losses and
+// absorption), aimed only where light can pass (the pupil bounds), and weighted with the
+// sensor's irradiance geometry, so that all vignetting and aberrations appear by themselves.
+#pragma once
+#include "camera/lens_camera.h"
+#include "optics/batch_tracer.h"
+#include "optics/pupil_bounds.h"
+
+namespace objektiv {
+
+class RealisticCamera final : public LensCamera {
+ public:
+  // `tracer`: the lens with its stop set and focused (the film at its place).
+  RealisticCamera(const Transform& to_world, int width, int height, const LensTracer& tracer,
+                  const LensCameraSettings& settings);
+  std::optional<CameraRay> GenerateRay(const CameraSample& s, SampledWavelengths& lambda) const override;
+  void GenerateRays(std::span<const CameraSample> samples, std::span<SampledWavelengths> lambdas,
+                    std::span<std::optional<CameraRay>> out, CameraRayCount& count) const override;
+  const PupilBounds& bounds() const { return bounds_; }
+  bool dispersive() const { return dispersive_; }
+
+ private:
+  // The ray from the sample's film point toward its pupil sample (weight in `weight`);
+  // false where no light reaches that film point.
+  bool StartRay(const CameraSample& s, SampledWavelengths& lambda, FloatRay& ray, float& weight) const;
+  CameraRay Finish(const FloatRay& ray, float weight) const;
+
+  BatchLensTracer fast_;
+  PupilBounds bounds_;
+  double film_z_;
+  bool dispersive_;
+};
+
+}  // namespace objektiv

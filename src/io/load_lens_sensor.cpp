@@ -1,0 +1,105 @@
+// Builder for <sensor type="realistic">: a camera with a real lens prescription.
+#include <algorithm>
+#include <cmath>
+
+#include "camera/lens_camera_setup.h"
+#include "io/loader_context.h"
+#include "optics/lens_file.h"
+
+namespace objektiv {
+
+namespace {
+
+struct SensorFormat {
+  const char* name;
+  double width, height;  // mm
+};
+// Named sensor formats (the usual nominal sizes).
+constexpr SensorFormat kSensorFormats[] = {
+    {"full_frame", 36, 24},  {"aps-h", 28.7, 19.0},    {"aps-c", 23.6, 15.7},
+    {"super35", 24.89, 18.66}, {"micro_four_thirds", 17.3, 13.0}, {"medium_format", 43.8, 32.9},
+};
+
+// A shipped lens by name ("dgauss.50mm"), or else a lens file relative to the scene.
+LensPrescription LoadSceneLens(const Properties& p) {
+  std::string name = p.String("lens");
+  try {
+    const auto shipped = ShippedLensNames();
+    if (std::find(shipped.begin(), shipped.end(), name) != shipped.end()) return LoadLens(name);
+    return LoadLens(ResolvePath(p.LocOf("lens"), name));
+  } catch (const InputError& e) {
+    throw ErrorAt(p.LocOf("lens"), "lens '{}': {}", name, e.what());
+  }
+}
+
+// The sensor's size; the image (its pixel aspect) takes the largest centred rectangle of it.
+Vec2d SensorSize(const Properties& p, int width, int height) {
+  double w = 36, h = 24;
+  if (p.Has("sensor")) {
+    if (p.Has("sensor_width") || p.Has("sensor_height"))
+      throw ErrorAt(p.LocOf("sensor"), "give either sensor or sensor_width/sensor_height, not both");
+    std::string name = p.String("sensor"), key;
+    for (char c : name) key += (c == ' ' || c == '-') ? '_' : char(std::tolower(c));
+    if (key == "aps_c") key = "aps-c";
+    if (key == "aps_h") key = "aps-h";
+    if (key == "super_35") key = "super35";
+    if (key == "35mm" || key == "fullframe") key = "full_frame";
+    bool found = false;
+    std::string known;
+    for (const SensorFormat& f : kSensorFormats) {
+      known += (known.empty() ? "" : ", ") + std::string(f.name);
+      if (key == f.name) w = f.width, h = f.height, found = true;
+    }
+    if (!found) throw ErrorAt(p.LocOf("sensor"), "unknown sensor '{}' (known: {})", name, known);
+  } else {
+    w = p.FloatIn("sensor_width", 36, 1e-3, 1e4);
+    h = p.Has("sensor_height") ? p.FloatIn("sensor_height", 24, 1e-3, 1e4) : w * height / width;
+  }
+  double aspect = double(width) / height;
+  return w / h > aspect ? Vec2d(h * aspect, h) : Vec2d(w, w / aspect);
+}
+
+}  // namespace
+
+std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const Transform& to_world, int width, int height,
+                                        float far_clip) {
+  LensCameraSpec spec;
+  spec.lens = LoadSceneLens(p);
+  static const std::map<std::string, LensModel> models = {
+      {"real", LensModel::kReal}, {"thick", LensModel::kThick}, {"thin", LensModel::kThin}};
+  spec.model = models.at(p.Choice("lens_model", "real", {"real", "thick", "thin"}));
+  if (p.Has("fnumber") && p.Has("aperture_diameter"))
+    throw ErrorAt(p.LocOf("aperture_diameter"), "give either fnumber or aperture_diameter, not both");
+  if (p.Has("fnumber")) spec.fnumber = p.FloatIn("fnumber", 0, 0.1, 1e4);
+  if (p.Has("aperture_diameter")) spec.stop_diameter = p.FloatIn("aperture_diameter", 0, 1e-6, 1e6);
+  spec.blades = int(p.IntIn("blades", 0, 0, 64));
+  if (spec.blades == 1 || spec.blades == 2) throw ErrorAt(p.LocOf("blades"), "blades must be 0 (circular) or at least 3");
+  spec.blade_curvature = p.FloatIn("blade_curvature", 0, 0, 1);
+  spec.blade_rotation = p.Float("blade_rotation", 0);
+  if (p.Has("focus_point")) {
+    if (p.Has("focus_distance")) throw ErrorAt(p.LocOf("focus_point"), "give either focus_distance or focus_point");
+    Vec3d f = p.Point("focus_point", Vec3d(0, 0, 0));
+    spec.focus_point = Vec3f(float(f.x), float(f.y), float(f.z));
+  }
+  spec.focus_distance = p.FloatIn("focus_distance", INFINITY, 1e-6, INFINITY);
+  LensCameraSettings& s = spec.settings;
+  Vec2d sensor = SensorSize(p, width, height);
+  s.sensor_width = sensor.x, s.sensor_height = sensor.y;
+  s.shift = Vec2d(p.FloatIn("shift_x", 0, -1e4, 1e4), p.FloatIn("shift_y", 0, -1e4, 1e4));
+  s.metres_per_unit = p.FloatIn("metres_per_unit", 1, 1e-12, 1e12);
+  s.exposure_scale = p.FloatIn("exposure_scale", 1, 0, 1e30);
+  static const std::map<std::string, Vignetting> modes = {{"full", Vignetting::kFull},
+                                                          {"cos4", Vignetting::kNatural},
+                                                          {"aperture", Vignetting::kOptical},
+                                                          {"none", Vignetting::kNone}};
+  s.vignetting = modes.at(p.Choice("vignetting", "full", {"full", "cos4", "aperture", "none"}));
+  s.transmission = p.Bool("transmission", true);
+  s.far_clip = far_clip;
+  try {
+    return MakeLensCamera(to_world, width, height, spec);
+  } catch (const InputError& e) {
+    throw ErrorAt(p.loc(), "{}", e.what());
+  }
+}
+
+}  // namespace objektiv
