@@ -9,11 +9,12 @@
 #include "camera/realistic_camera.h"
 #include "optics/dispersion.h"
 #include "optics/paraxial.h"
+#include "optics/real_fnumber.h"
 #include "optics/real_focus.h"
 
 namespace objektiv {
 
-double WideOpenFNumber(const LensPrescription& lens) { return ComputeParaxial(lens, kLambdad).fnumber; }
+double WideOpenFNumber(const LensPrescription& lens) { return RealFNumber(LensTracer(lens)); }
 
 namespace {
 
@@ -26,11 +27,11 @@ LensTracer StoppedDown(const LensCameraSpec& spec) {
                                    spec.lens.name, 2 * full));
     tracer.SetStopSemiDiameter(spec.stop_diameter / 2);
   } else if (spec.fnumber > 0) {
-    const double wide_open = WideOpenFNumber(spec.lens);
-    if (spec.fnumber < wide_open * (1 - 1e-6))
-      throw InputError(fmt::format("f/{} is faster than {} opens (f/{:.3g})", spec.fnumber, spec.lens.name, wide_open));
-    // The entrance pupil scales with the stop (paraxially exact).
-    tracer.SetStopSemiDiameter(full * wide_open / spec.fnumber);
+    std::optional<double> semi = StopSemiDiameterForFNumber(tracer, spec.fnumber);
+    if (!semi)
+      throw InputError(fmt::format("f/{} is faster than {} opens (f/{:.3g})", spec.fnumber, spec.lens.name,
+                                   WideOpenFNumber(spec.lens)));
+    tracer.SetStopSemiDiameter(*semi);
   }
   if (spec.blades >= 3) tracer.SetStopBlades(spec.blades, spec.blade_curvature, spec.blade_rotation);
   return tracer;
@@ -66,7 +67,8 @@ std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int
                         : spec.focus_distance * 1e3;
   LensFocus focus = FocusLens(tracer, distance);
   tracer.SetBackFocus(focus.back_focus);
-  spdlog::info("lens {}: EFL {:.2f} mm, f/{:.3g}; {}", spec.lens.name, p.efl, p.fnumber, DescribeFocus(focus, p.bfl));
+  spdlog::info("lens {}: EFL {:.2f} mm, f/{:.3g} (paraxial f/{:.3g}); {}", spec.lens.name, p.efl, RealFNumber(tracer),
+               p.fnumber, DescribeFocus(focus, p.bfl));
   std::unique_ptr<Camera> camera;
   if (spec.model == LensModel::kReal) {
     auto real = std::make_unique<RealisticCamera>(to_world, width, height, tracer, spec.settings);

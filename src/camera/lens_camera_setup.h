@@ -15,7 +15,7 @@ enum class LensModel { kReal, kThick, kThin };
 struct LensCameraSpec {
   LensPrescription lens;
   LensModel model = LensModel::kReal;
-  double fnumber = 0;        // 0: wide open (or stop_diameter)
+  double fnumber = 0;        // radiometric (see optics/real_fnumber.h); 0: wide open (or stop_diameter)
   double stop_diameter = 0;  // mm; 0: from the f-number
   int blades = 0;            // 0: circular
   double blade_curvature = 0, blade_rotation = 0;  // 0..1, degrees
@@ -24,7 +24,7 @@ struct LensCameraSpec {
   LensCameraSettings settings;
 };
 
-// The wide-open paraxial f-number (d line, object at infinity).
+// The wide-open radiometric f-number (d line, object at infinity).
 double WideOpenFNumber(const LensPrescription& lens);
 
 // Throws InputError (without a location) when the stop cannot be set as asked.

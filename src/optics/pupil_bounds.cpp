@@ -53,50 +53,173 @@ bool ConvexPolygon::Contains(Vec2d p) const {
 }
 
 namespace {
-// Traces, from film points (r, 0) for each radius and wavelength, rays aimed at the given
-// points of the sampling plane; returns for each point whether any of them got through.
-std::vector<uint8_t> Passes(const BatchLensTracer& fast, const std::vector<double>& radii, double film_z,
-                            double plane_z, const std::vector<Vec2d>& points, const std::vector<double>& wavelengths) {
-  std::vector<uint8_t> any(points.size(), 0);
-  RayBatch b;
-  for (size_t c = 0; c < radii.size() * wavelengths.size(); ++c) {
-    const double r = radii[c % radii.size()], lambda_nm = wavelengths[c / radii.size()];
-    b.Resize(points.size());
+
+// Probing the region of the sampling plane through which light from one film point (r, 0)
+// at one wavelength leaves the lens.
+class RegionProbe {
+ public:
+  RegionProbe(const BatchLensTracer& fast, const LensTracer& exact, double r, double film_z, double plane_z,
+              double lambda_nm)
+      : fast_(fast), exact_(exact), r_(r), film_z_(film_z), plane_z_(plane_z), lambda_(lambda_nm) {}
+
+  // Whether the rays aimed at each point get through.
+  std::vector<uint8_t> Passes(const std::vector<Vec2d>& points) const {
+    batch_.Resize(points.size());
     for (size_t n = 0; n < points.size(); ++n) {
-      Vec3d d = Normalize(Vec3d(points[n].x - r, points[n].y, plane_z - film_z));
-      b.ox[n] = float(r), b.oy[n] = 0, b.oz[n] = float(film_z);
-      b.dx[n] = float(d.x), b.dy[n] = float(d.y), b.dz[n] = float(d.z);
-      b.lambda[n] = float(lambda_nm);
+      Vec3d d = Normalize(Vec3d(points[n].x - r_, points[n].y, plane_z_ - film_z_));
+      batch_.ox[n] = float(r_), batch_.oy[n] = 0, batch_.oz[n] = float(film_z_);
+      batch_.dx[n] = float(d.x), batch_.dy[n] = float(d.y), batch_.dz[n] = float(d.z);
+      batch_.lambda[n] = float(lambda_);
     }
-    fast.TraceFromFilm(b, false);
-    for (size_t n = 0; n < points.size(); ++n) any[n] |= b.alive[n];
+    fast_.TraceFromFilm(batch_, false);
+    return batch_.alive;
   }
-  return any;
+
+  // The aim point whose ray crosses the stop's centre (the real chief ray), by the secant
+  // method from the axis; nothing if the ray does not reach the stop.
+  std::optional<Vec2d> ChiefAim() const {
+    const int stop = exact_.lens().StopIndex(), n = int(exact_.lens().surfaces.size());
+    if (stop < 0) return std::nullopt;
+    auto stop_x = [&](double a) -> std::optional<double> {
+      std::vector<Vec3d> path;
+      Vec3d o(r_, 0, film_z_);
+      exact_.TraceFromFilm({o, Normalize(Vec3d(a, 0, plane_z_) - o)}, lambda_, &path);
+      size_t k = size_t(n - 1 - stop);
+      if (path.size() <= k) return std::nullopt;
+      return path[k].x;
+    };
+    double a0 = 0, a1 = 1e-3 * (1 + std::abs(r_));
+    std::optional<double> f0 = stop_x(a0), f1 = stop_x(a1);
+    for (int it = 0; it < 30 && f0 && f1; ++it) {
+      if (std::abs(*f1) < 1e-9 || *f1 == *f0) return Vec2d(a1, 0);
+      double a2 = a1 - *f1 * (a1 - a0) / (*f1 - *f0);
+      a0 = a1, f0 = f1, a1 = a2, f1 = stop_x(a1);
+    }
+    if (f1 && std::abs(*f1) < 1e-6) return Vec2d(a1, 0);
+    return std::nullopt;
+  }
+
+  // A point inside the region: the chief ray's aim if it passes, else the centroid of the
+  // passing probes of a grid over the window |x|, |y| <= half; nothing if none passes.
+  std::optional<Vec2d> Inside(double half) const {
+    if (std::optional<Vec2d> c = ChiefAim(); c && Passes({*c})[0]) return c;
+    const int g = 32;
+    std::vector<Vec2d> grid;
+    for (int i = 0; i < g; ++i)
+      for (int j = 0; j < g; ++j) grid.push_back({half * (2 * (i + 0.5) / g - 1), half * (2 * (j + 0.5) / g - 1)});
+    std::vector<uint8_t> ok = Passes(grid);
+    Vec2d sum(0, 0);
+    int count = 0;
+    for (size_t n = 0; n < grid.size(); ++n)
+      if (ok[n]) sum = sum + grid[n], ++count;
+    if (count == 0) return std::nullopt;
+    Vec2d c = sum * (1.0 / count);
+    if (Passes({c})[0]) return c;
+    for (size_t n = 0; n < grid.size(); ++n)
+      if (ok[n]) return grid[n];
+    return std::nullopt;
+  }
+
+  // Distance from c to the region's edge along each direction, at most `limit`, to a relative
+  // precision of 1e-4 (bisection, all directions in one batch per step; tiny regions, such as
+  // a pinhole's, take a few more steps).
+  std::vector<double> EdgeDistances(Vec2d c, const std::vector<Vec2d>& dirs, double limit) const {
+    std::vector<double> lo(dirs.size(), 0), hi(dirs.size(), limit);
+    std::vector<Vec2d> pts(dirs.size());
+    for (int step = 0; step < 60; ++step) {
+      bool done = true;
+      for (size_t k = 0; k < dirs.size(); ++k) {
+        pts[k] = c + dirs[k] * (0.5 * (lo[k] + hi[k]));
+        done &= hi[k] - lo[k] <= 1e-4 * hi[k];
+      }
+      if (done) break;
+      std::vector<uint8_t> ok = Passes(pts);
+      for (size_t k = 0; k < dirs.size(); ++k) (ok[k] ? lo[k] : hi[k]) = 0.5 * (lo[k] + hi[k]);
+    }
+    return hi;  // the blocked side: just outside
+  }
+
+ private:
+  const BatchLensTracer& fast_;
+  const LensTracer& exact_;
+  double r_, film_z_, plane_z_, lambda_;
+  mutable RayBatch batch_;
+};
+
+// The region's edge around a point inside it: directions at even angles first, then, where
+// the edge between two neighbouring points bulges out of their chord by more than `tol`
+// (corners of the blades, tips of a cat's eye), the angle between them is halved, a few
+// levels deep. The edge points are returned.
+std::vector<Vec2d> TraceEdge(const RegionProbe& probe, Vec2d c, double limit, double tol) {
+  struct EdgePoint {
+    double angle;
+    Vec2d p;
+  };
+  auto probe_angles = [&](const std::vector<double>& angles) {
+    std::vector<Vec2d> dirs;
+    for (double a : angles) dirs.push_back({std::cos(a), std::sin(a)});
+    std::vector<double> t = probe.EdgeDistances(c, dirs, limit);
+    std::vector<EdgePoint> out;
+    for (size_t k = 0; k < angles.size(); ++k) out.push_back({angles[k], c + dirs[k] * t[k]});
+    return out;
+  };
+  const int initial = 32;
+  std::vector<double> angles;
+  for (int k = 0; k < initial; ++k) angles.push_back(2 * M_PI * k / initial);
+  std::vector<EdgePoint> edge = probe_angles(angles);
+  std::vector<uint8_t> pending(edge.size(), 1);  // gap k: between edge[k] and edge[k + 1]
+  for (int level = 0; level < 6; ++level) {
+    std::vector<double> mids;
+    for (size_t k = 0; k < edge.size(); ++k)
+      if (pending[k]) {
+        double a = edge[k].angle, b = k + 1 < edge.size() ? edge[k + 1].angle : edge[0].angle + 2 * M_PI;
+        mids.push_back(0.5 * (a + b));
+      }
+    if (mids.empty()) break;
+    std::vector<EdgePoint> found = probe_angles(mids);
+    std::vector<EdgePoint> merged;
+    std::vector<uint8_t> next;
+    size_t m = 0;
+    for (size_t k = 0; k < edge.size(); ++k) {
+      merged.push_back(edge[k]);
+      if (!pending[k]) {
+        next.push_back(0);
+        continue;
+      }
+      const EdgePoint &a = edge[k], &b = edge[(k + 1) % edge.size()], &mid = found[m++];
+      Vec2d ab = b.p - a.p;
+      double len = std::hypot(ab.x, ab.y);
+      double out = len > 0 ? std::abs((mid.p.x - a.p.x) * ab.y - (mid.p.y - a.p.y) * ab.x) / len
+                           : std::hypot(mid.p.x - a.p.x, mid.p.y - a.p.y);
+      merged.push_back(mid);
+      uint8_t again = out > tol;
+      next.push_back(again);
+      next.push_back(again);
+    }
+    edge = std::move(merged);
+    pending = std::move(next);
+  }
+  std::vector<Vec2d> pts;
+  for (const EdgePoint& e : edge) pts.push_back(e.p);
+  return pts;
 }
 
-// Grid x grid cell centres over [lo, hi].
-std::vector<Vec2d> GridCentres(Vec2d lo, Vec2d hi, int grid, Vec2d* cell) {
-  *cell = Vec2d((hi.x - lo.x) / grid, (hi.y - lo.y) / grid);
-  std::vector<Vec2d> c;
-  for (int i = 0; i < grid; ++i)
-    for (int j = 0; j < grid; ++j) c.push_back({lo.x + (i + 0.5) * cell->x, lo.y + (j + 0.5) * cell->y});
-  return c;
-}
 }  // namespace
 
 PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, const PupilBoundsOptions& options)
     : film_radius_(film_radius) {
-  const int bins = options.bins, grid = options.grid;
+  const int bins = options.bins;
   const std::vector<double>& lambdas = options.wavelengths;
-  const double lambda_nm = lambdas.front();
   const LensPrescription& lens = tracer.lens();
   const int last = int(lens.surfaces.size()) - 1;
   // Sample on the exit pupil's plane: light from every film point passes the same image of the
   // stop there, trimmed slowly by vignetting, so the region changes little across an annulus
   // (on the rear vertex plane it slides with the film position).
-  ParaxialData p = ComputeParaxial(lens, lambda_nm, tracer.StopSemiDiameter());
+  ParaxialData p = ComputeParaxial(lens, lambdas.front(), tracer.StopSemiDiameter());
   rear_z_ = tracer.VertexZ(last) + p.exit_pupil_position;
-  const double rear = std::max(lens.surfaces[last].semi_diameter, 1.5 * p.exit_pupil_diameter);
+  // The window searched: wide enough for the rear element and the exit pupil.
+  const double half = std::max(lens.surfaces[last].semi_diameter, 1.5 * p.exit_pupil_diameter) +
+                      std::abs(rear_z_ - tracer.VertexZ(last));
   const double film_z = tracer.FilmZ();
   BatchLensTracer fast(tracer);
   if (!options.rims) fast.IgnoreRims();
@@ -104,57 +227,28 @@ PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, const Pup
   triangle_cdf_.resize(bins);
   // Bins are independent: build them in parallel.
   tbb::parallel_for(0, bins, [&](int bin) {
-    // Film radii across the annulus, its ends included, so the bound covers every film point
-    // the bin will serve.
-    std::vector<double> radii;
-    for (int k = 0; k < 4; ++k) radii.push_back(film_radius * (bin + k / 3.0) / bins);
-    // Coarse pass over the whole plane to find where light gets through.
-    Vec2d coarse_cell;
-    std::vector<Vec2d> coarse = GridCentres({-rear, -rear}, {rear, rear}, grid / 2, &coarse_cell);
-    std::vector<uint8_t> coarse_ok = Passes(fast, radii, film_z, rear_z_, coarse, lambdas);
-    Vec2d lo(-rear, -rear), hi(rear, rear);
-    bool found = false;
-    for (size_t n = 0; n < coarse.size(); ++n)
-      if (coarse_ok[n]) {
-        lo = found ? Vec2d(std::min(lo.x, coarse[n].x), std::min(lo.y, coarse[n].y)) : coarse[n];
-        hi = found ? Vec2d(std::max(hi.x, coarse[n].x), std::max(hi.y, coarse[n].y)) : coarse[n];
-        found = true;
+    // The edge for the film radii at both ends of the annulus and every wavelength; the
+    // regions move little across a bin, and the hull of all their edges holds them all.
+    std::vector<Vec2d> edge;
+    double size = 0;
+    for (double lambda : lambdas)
+      for (double r : {film_radius * bin / bins, film_radius * (bin + 1) / bins}) {
+        RegionProbe probe(fast, tracer, r, film_z, rear_z_, lambda);
+        std::optional<Vec2d> c = probe.Inside(half);
+        if (!c) continue;
+        // Tolerance: a thousandth of the region's size (its first estimate: the exit pupil).
+        double tol = 1e-3 * std::max(p.exit_pupil_diameter, 1e-9);
+        std::vector<Vec2d> e = TraceEdge(probe, *c, 2 * half, tol);
+        for (const Vec2d& q : e) size = std::max(size, std::hypot(q.x - c->x, q.y - c->y));
+        edge.insert(edge.end(), e.begin(), e.end());
       }
-    if (found) {
-      lo = lo - coarse_cell * 1.5;
-      hi = hi + coarse_cell * 1.5;
-    } else {
-      lo = {-rear, -rear}, hi = {rear, rear};
-    }
-    // Fine pass over that box, then cells on the region's edge (a passing cell next to a
-    // blocked one, or the reverse) are probed again at 4 x 4 finer resolution. The region's
-    // edge lies within one probe spacing of a passing probe, so each passing probe contributes
-    // the square one spacing around it; the bound is the convex hull of those squares.
-    Vec2d cell;
-    std::vector<Vec2d> fine = GridCentres(lo, hi, grid, &cell);
-    std::vector<uint8_t> ok = Passes(fast, radii, film_z, rear_z_, fine, lambdas);
-    auto at = [&](int i, int j) { return i >= 0 && j >= 0 && i < grid && j < grid && ok[size_t(i) * grid + j]; };
-    std::vector<Vec2d> sub;
-    const int k = 4;
-    for (int i = 0; i < grid; ++i)
-      for (int j = 0; j < grid; ++j) {
-        bool self = at(i, j);
-        bool edge = false;
-        for (int di = -1; di <= 1; ++di)
-          for (int dj = -1; dj <= 1; ++dj) edge |= at(i + di, j + dj) != self;
-        if (!edge) continue;
-        Vec2d c0 = fine[size_t(i) * grid + j] - cell * 0.5;
-        for (int a = 0; a < k; ++a)
-          for (int bb = 0; bb < k; ++bb) sub.push_back({c0.x + (a + 0.5) * cell.x / k, c0.y + (bb + 0.5) * cell.y / k});
-      }
-    std::vector<uint8_t> sub_ok = Passes(fast, radii, film_z, rear_z_, sub, lambdas);
+    // Grow the hull by the edge tolerance and the bisection's step, so that no light is
+    // left outside: each edge point becomes a small square.
     std::vector<Vec2d> corners;
-    for (size_t n = 0; n < sub.size(); ++n)
-      if (sub_ok[n])
-        for (double dx : {-1.0, 1.0})
-          for (double dy : {-1.0, 1.0}) corners.push_back({sub[n].x + dx * cell.x / k, sub[n].y + dy * cell.y / k});
-    // Interior cells (all neighbours passing) lie inside the hull of the edge cells; a region
-    // too small to have interior cells still has its passing coarse cells among the edges.
+    double grow = 2e-3 * size;
+    for (const Vec2d& q : edge)
+      for (double dx : {-grow, grow})
+        for (double dy : {-grow, grow}) corners.push_back({q.x + dx, q.y + dy});
     ConvexPolygon poly;
     poly.vertices = ConvexHull(corners);
     poly.area = poly.vertices.size() >= 3 ? PolygonArea(poly.vertices) : 0;

@@ -19,7 +19,6 @@ struct ConvexPolygon {
 
 struct PupilBoundsOptions {
   int bins = 128;  // radial film bins
-  int grid = 64;   // grid x grid probe rays over the region per film radius probed
   // A probe passes if it passes at any of these wavelengths: a dispersive lens's pupil
   // changes a little with wavelength, and the bound must hold the light of every one.
   std::vector<double> wavelengths = {587.5618};

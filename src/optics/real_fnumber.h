@@ -1,0 +1,20 @@
+// The radiometric f-number of a real lens: N = 1 / (2 sin u'), with u' the half-angle of the
+// on-axis image cone for an object at infinity. The image irradiance on the axis is
+// proportional to sin^2 u', so closing the stop by one stop of this N halves the exposure
+// exactly; for an aplanatic lens it equals the paraxial EFL / EPD.
+#pragma once
+#include <optional>
+
+#include "optics/lens_tracer.h"
+
+namespace objektiv {
+
+// With the tracer's stop as it is (film at the paraxial infinity focus).
+double RealFNumber(const LensTracer& tracer, double lambda_nm = 587.5618);
+
+// The stop semi-diameter that gives f-number `fnumber`; nothing if the cone cannot reach the
+// stop (a rim behind it cuts it first) or needs a stop larger than the lens's.
+std::optional<double> StopSemiDiameterForFNumber(const LensTracer& tracer, double fnumber,
+                                                 double lambda_nm = 587.5618);
+
+}  // namespace objektiv
