@@ -5,7 +5,22 @@
 namespace objektiv {
 
 LensCamera::LensCamera(const Transform& to_world, int width, int height, const LensCameraSettings& settings)
-    : Camera(to_world, width, height), settings_(settings), mm_to_units_(1e-3 / settings.metres_per_unit) {}
+    : Camera(to_world, width, height), settings_(settings), mm_to_units_(1e-3 / settings.metres_per_unit),
+      weight_scale_(float(4 / M_PI * settings.exposure_scale)) {
+  SetOriginZ(0);
+}
+
+void LensCamera::SetOriginZ(double z) {
+  const auto& m = to_world_.Matrix().m;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) {
+      dir_[3 * r + c] = float(m[r][c]);
+      point_[3 * r + c] = float(m[r][c] * mm_to_units_);
+    }
+  // Camera-space origin at lens z: (x, y, z) -> (x, y, z_origin - z) mm.
+  Vec3d o = to_world_.Point(Vec3d(0, 0, z * mm_to_units_));
+  offset_ = Vec3f(float(o.x), float(o.y), float(o.z));
+}
 
 double LensCamera::FilmRadius() const {
   return std::hypot(settings_.sensor_width / 2, settings_.sensor_height / 2) +
@@ -20,21 +35,22 @@ Vec2d LensCamera::FilmPoint(Vec2f p) const {
 }
 
 float LensCamera::Weight(Vec2d film, double cos_theta, double dz, double pdf) const {
-  double c2 = cos_theta * cos_theta;
-  double w = (4 / M_PI) * settings_.exposure_scale * c2 * c2 / (dz * dz * pdf);
+  float c2 = float(cos_theta * cos_theta), z2 = float(dz * dz);
+  float w = weight_scale_ * c2 * c2 / (z2 * float(pdf));
   if (settings_.vignetting == Vignetting::kOptical || settings_.vignetting == Vignetting::kNone) {
-    double chief2 = dz * dz / (dz * dz + film.x * film.x + film.y * film.y);  // cos^2 of the chief ray
+    float chief2 = z2 / (z2 + float(film.x * film.x + film.y * film.y));  // cos^2 of the chief ray
     w /= chief2 * chief2;
   }
-  return float(w);
+  return w;
 }
 
 Ray LensCamera::WorldRay(Vec3d o, Vec3d d) const {
-  Vec3f oc(float(o.x * mm_to_units_), float(o.y * mm_to_units_), float((origin_z_ - o.z) * mm_to_units_));
-  Vec3f dc(float(d.x), float(d.y), float(-d.z));
+  auto apply = [](const std::array<float, 9>& a, float x, float y, float z) {
+    return Vec3f(a[0] * x + a[1] * y + a[2] * z, a[3] * x + a[4] * y + a[5] * z, a[6] * x + a[7] * y + a[8] * z);
+  };
   Ray r;
-  r.o = to_world_.Point(oc);
-  Vec3f dw = to_world_.Vector(dc);
+  r.o = apply(point_, float(o.x), float(o.y), float(-o.z)) + offset_;
+  Vec3f dw = apply(dir_, float(d.x), float(d.y), float(-d.z));
   float scale = Length(dw);
   r.d = dw / scale;
   r.tmax = settings_.far_clip * scale;

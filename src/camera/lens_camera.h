@@ -6,6 +6,8 @@
 // space: the origin at the lens's entrance pupil, +z looking out of the lens, +y up, +x left
 // (as the other cameras); one scene unit is `metres_per_unit` metres.
 #pragma once
+#include <array>
+
 #include "camera/camera.h"
 
 namespace objektiv {
@@ -48,12 +50,17 @@ class LensCamera : public Camera {
   // The world ray for a ray leaving the lens at lens-space `o` in direction `d` (d.z < 0).
   Ray WorldRay(Vec3d o, Vec3d d) const;
   // Lens-space z of the camera-space origin (the entrance pupil).
-  void SetOriginZ(double z) { origin_z_ = z; }
+  void SetOriginZ(double z);
 
   LensCameraSettings settings_;
 
  private:
-  double origin_z_ = 0, mm_to_units_;
+  // Lens space to world, affine, in single precision: p = point_ (x, y, -z) + offset_,
+  // d = dir_ (dx, dy, -dz) (the to_world matrix, scaled by mm_to_units_ for points).
+  std::array<float, 9> point_{}, dir_{};
+  Vec3f offset_;
+  double mm_to_units_;
+  float weight_scale_;  // (4 / pi) exposure_scale
 };
 
 }  // namespace objektiv

@@ -45,12 +45,14 @@ bool RealisticCamera::StartRay(const CameraSample& s, SampledWavelengths& lambda
   Vec2d film = FilmPoint(s.p_film);
   PupilBounds::Sample ps = bounds_.SampleRear(film, Vec2d(s.p_lens.x, s.p_lens.y));
   if (ps.pdf == 0) return false;
-  Vec3d o(film.x, film.y, film_z_);
-  Vec3d d = Normalize(ps.point - o);
-  weight = Weight(film, -d.z, film_z_ - bounds_.rear_z(), ps.pdf);
+  // Single precision from here: the direction toward the pupil point.
+  float fx = float(film.x), fy = float(film.y), dz = float(bounds_.rear_z() - film_z_);
+  float dx = float(ps.point.x) - fx, dy = float(ps.point.y) - fy;
+  float inv = 1 / std::sqrt(dx * dx + dy * dy + dz * dz);
+  weight = Weight(film, -dz * inv, -dz, ps.pdf);
   // Each wavelength takes its own path through dispersive glass: only the hero goes on.
   if (dispersive_) lambda.TerminateSecondary();
-  ray = {float(o.x), float(o.y), float(o.z), float(d.x), float(d.y), float(d.z), lambda[0], 1.f};
+  ray = {fx, fy, float(film_z_), dx * inv, dy * inv, dz * inv, lambda[0], 1.f};
   return true;
 }
 

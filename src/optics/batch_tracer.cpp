@@ -30,6 +30,8 @@ constexpr int kTableSize = 471;  // 1 nm steps
 BatchLensTracer::BatchLensTracer(const LensTracer& tracer)
     : film_z_(float(tracer.FilmZ())), shape_(tracer), bladed_(tracer.StopIsBladed()) {
   const LensPrescription& lens = tracer.lens();
+  index_tables_.push_back(std::vector<float>(kTableSize, 1.f));  // air
+  absorption_tables_.push_back(std::vector<float>(kTableSize, 0.f));
   for (size_t i = 0; i < lens.surfaces.size(); ++i) {
     const LensSurface& s = lens.surfaces[i];
     Surface f;
@@ -51,30 +53,12 @@ BatchLensTracer::BatchLensTracer(const LensTracer& tracer)
         // Absorption coefficient per mm from the transmittance over 1 mm.
         alpha[l] = float(-std::log(std::max(s.medium->InternalTransmittance(kTableMin + l, 1.0), 1e-30)));
       }
-      f.medium_after = int(index_tables_.size());
+      f.medium_after = int(index_tables_.size()) - 1;  // tables[0] is air
       index_tables_.push_back(std::move(n));
       absorption_tables_.push_back(std::move(alpha));
     }
     surfaces_.push_back(f);
   }
-}
-
-namespace {
-// Linear interpolation in a table at 1 nm from kTableMin.
-float Lookup(const std::vector<float>& tab, float lambda) {
-  float x = std::min(std::max(lambda - kTableMin, 0.f), kTableMax - kTableMin - 1e-3f);
-  int i = int(x);
-  float t = x - float(i);
-  return tab[i] + t * (tab[i + 1] - tab[i]);
-}
-}  // namespace
-
-float BatchLensTracer::Index(int medium, float lambda) const {
-  return medium < 0 ? 1.f : Lookup(index_tables_[medium], lambda);
-}
-
-float BatchLensTracer::Absorption(int medium, float lambda) const {
-  return medium < 0 ? 0.f : Lookup(absorption_tables_[medium], lambda);
 }
 
 void BatchLensTracer::IgnoreRims() {
@@ -85,124 +69,187 @@ void BatchLensTracer::IgnoreRims() {
 void BatchLensTracer::TraceFromFilm(RayBatch& rays, bool transmission) const { Trace(rays, true, transmission); }
 void BatchLensTracer::TraceFromObject(RayBatch& rays, bool transmission) const { Trace(rays, false, transmission); }
 
-// Moves the ray to surface s and refracts it there (media m_in -> m_out in the direction of
-// travel); false if it misses, is clipped or is totally reflected. Absorption in m_in is
-// counted from the ray's origin unless this is the first surface (the ray starts on the film
-// or in front of the lens, in air).
-__attribute__((always_inline)) inline bool BatchLensTracer::Refract(const Surface& s, int m_in, int m_out, bool absorb, bool transmission,
-                              FloatRay& ray) const {
-  float ox = ray.ox, oy = ray.oy, oz = ray.oz - s.z;
-  float dx = ray.dx, dy = ray.dy, dz = ray.dz;
-  float t;
-  if (s.plane) {
-    t = -oz / dz;
-  } else {
-    // The conic through the vertex; C / q is the root on the vertex's sheet.
-    float A = s.c * (dx * dx + dy * dy) + s.k1 * s.c * dz * dz;
-    float B = 2 * (s.c * (ox * dx + oy * dy) + s.k1 * s.c * oz * dz - dz);
-    float C = s.c * (ox * ox + oy * oy) + s.k1 * s.c * oz * oz - 2 * oz;
-    float disc = B * B - 4 * A * C;
-    if (disc < 0) return false;
-    // As the double tracer: the first positive root on the vertex's sheet ((1 + k) c z <= 1).
-    float q = -0.5f * (B + std::copysign(std::sqrt(disc), B));
-    float t1 = q != 0 ? C / q : INFINITY, t2 = A != 0 ? q / A : INFINITY;
-    bool ok1 = t1 > -1e-6f && s.k1 * s.c * (oz + t1 * dz) <= 1;
-    bool ok2 = t2 > -1e-6f && s.k1 * s.c * (oz + t2 * dz) <= 1;
-    if (!ok1 && !ok2) return false;
-    t = ok1 && ok2 ? std::min(t1, t2) : (ok1 ? t1 : t2);
-  }
-  if (s.aspheric) {
-    // Newton on z(t) - sag(r(t)) from the conic's intersection.
-    for (int it = 0; it < 8; ++it) {
-      float px = ox + t * dx, py = oy + t * dy, pz = oz + t * dz;
-      float r2 = px * px + py * py, r = std::sqrt(r2);
-      float arg = std::max(1 - s.k1 * s.c * s.c * r2, 1e-12f);
-      float root = std::sqrt(arg);
-      float sag = s.c * r2 / (1 + root) + s.a2 * r2, slope = s.c * r / root + 2 * s.a2 * r;
-      float rp = r2 * r2, rd = r2 * r;
-      for (int a = 0; a < 7; ++a) {
-        sag += s.a[a] * rp;
-        slope += float(4 + 2 * a) * s.a[a] * rd;
-        rp *= r2;
-        rd *= r2;
-      }
-      float drdt = r > 0 ? (px * dx + py * dy) / r : 0.f;
-      float step = (pz - sag) / (dz - slope * drdt);
-      t -= step;
-      if (std::abs(step) < 1e-7f) break;
+namespace {
+
+// Per-surface constants of the kernel, and the tables of the media on both sides.
+struct Step {
+  float z, c, k1, semi2, a2, a[7];
+  // Per ray (contiguous, one value per ray of the batch): the media's indices on both sides
+  // and the absorption coefficient of the medium just crossed (air: ones and zeros).
+  const float *n_in, *n_out, *alpha_in;
+};
+
+// One surface for every ray of the batch: intersect, clip, refract. Written without
+// branches that depend on the ray (dead rays compute garbage that is never used), with the
+// surface's kind as template parameters, so that the compiler vectorises the loop.
+template <bool kPlane, bool kAspheric, bool kRefract, bool kTransmission>
+void StepAll(const Step& s, RayBatch& b) {
+  const size_t n = b.Size();
+  float* __restrict ox = b.ox.data();
+  float* __restrict oy = b.oy.data();
+  float* __restrict oz = b.oz.data();
+  float* __restrict dxs = b.dx.data();
+  float* __restrict dys = b.dy.data();
+  float* __restrict dzs = b.dz.data();
+  float* __restrict trans = b.transmittance.data();
+  float* __restrict depth = b.depth.data();
+  uint8_t* __restrict alive = b.alive.data();
+  const float* __restrict n_in = s.n_in;
+  const float* __restrict n_out = s.n_out;
+  const float* __restrict alpha_in = s.alpha_in;
+#pragma omp simd
+  for (size_t j = 0; j < n; ++j) {
+    const float x0 = ox[j], y0 = oy[j], z0 = oz[j] - s.z;
+    const float dx = dxs[j], dy = dys[j], dz = dzs[j];
+    bool ok = alive[j] != 0;
+    float t;
+    if constexpr (kPlane) {
+      t = -z0 / dz;
+    } else {
+      // The conic through the vertex; C / q is the root on the vertex's sheet.
+      float A = s.c * (dx * dx + dy * dy) + s.k1 * s.c * dz * dz;
+      float B = 2 * (s.c * (x0 * dx + y0 * dy) + s.k1 * s.c * z0 * dz - dz);
+      float C = s.c * (x0 * x0 + y0 * y0) + s.k1 * s.c * z0 * z0 - 2 * z0;
+      float disc = B * B - 4 * A * C;
+      ok &= disc >= 0;
+      float root = std::sqrt(std::max(disc, 0.f));
+      // As the double tracer: the first positive root on the vertex's sheet ((1 + k) c z <= 1).
+      float q = -0.5f * (B + (B >= 0 ? root : -root));
+      float t1 = C / q, t2 = q / A;  // q or A zero: an infinity or NaN, rejected below
+      bool ok1 = (t1 > -1e-6f) & (s.k1 * s.c * (z0 + t1 * dz) <= 1);
+      bool ok2 = (t2 > -1e-6f) & (s.k1 * s.c * (z0 + t2 * dz) <= 1);
+      ok &= ok1 | ok2;
+      t = ok1 & ok2 ? std::min(t1, t2) : (ok1 ? t1 : t2);
     }
-  }
-  if (!(t >= -1e-6f)) return false;
-  float px = ox + t * dx, py = oy + t * dy, pz = oz + t * dz;
-  float r2 = px * px + py * py;
-  if (r2 > s.semi2 || (s.is_stop && bladed_ && !shape_.InsideStop(px, py))) return false;
-  if (transmission && absorb) ray.transmittance *= std::exp(-Absorption(m_in, ray.lambda) * t);
-  ray.ox = px;
-  ray.oy = py;
-  ray.oz = pz + s.z;
-  if (s.is_stop || m_in == m_out) return true;
-  // Normal from the sag's slope (unit, toward +z), turned to face the incoming ray.
-  float r = std::sqrt(r2);
-  float slope = 0;
-  if (r > 0) {
-    slope = s.c * r / std::sqrt(std::max(1 - s.k1 * s.c * s.c * r2, 1e-12f)) + 2 * s.a2 * r;
-    if (s.aspheric) {
-      float rd = r2 * r;
-      for (int a = 0; a < 7; ++a) {
-        slope += float(4 + 2 * a) * s.a[a] * rd;
-        rd *= r2;
+    if constexpr (kAspheric) {
+      // Newton on z(t) - sag(r(t)) from the conic's intersection (a fixed count of steps).
+#pragma GCC unroll 6
+      for (int it = 0; it < 6; ++it) {
+        float px = x0 + t * dx, py = y0 + t * dy, pz = z0 + t * dz;
+        float r2 = px * px + py * py, r = std::sqrt(r2);
+        float root = std::sqrt(std::max(1 - s.k1 * s.c * s.c * r2, 1e-12f));
+        float sag = s.c * r2 / (1 + root) + s.a2 * r2, slope = s.c * r / root + 2 * s.a2 * r;
+        float rp = r2 * r2, rd = r2 * r;
+#pragma GCC unroll 7
+        for (int a = 0; a < 7; ++a) {
+          sag += s.a[a] * rp;
+          slope += float(4 + 2 * a) * s.a[a] * rd;
+          rp *= r2;
+          rd *= r2;
+        }
+        float drdt = (px * dx + py * dy) / std::max(r, 1e-30f);
+        t -= (pz - sag) / (dz - slope * drdt);
       }
     }
+    ok &= t >= -1e-6f;
+    const float px = x0 + t * dx, py = y0 + t * dy, pz = z0 + t * dz;
+    const float r2 = px * px + py * py;
+    ok &= r2 <= s.semi2;
+    // Absorption in the medium just crossed: its optical depth, summed (one exp at the end).
+    if constexpr (kTransmission) depth[j] += alpha_in[j] * t;
+    ox[j] = px, oy[j] = py, oz[j] = pz + s.z;
+    if constexpr (kRefract) {
+      // Normal from the sag's slope (unit, toward +z), turned to face the incoming ray.
+      float r = std::sqrt(r2);
+      float slope = s.c * r / std::sqrt(std::max(1 - s.k1 * s.c * s.c * r2, 1e-12f)) + 2 * s.a2 * r;
+      if constexpr (kAspheric) {
+        float rd = r2 * r;
+#pragma GCC unroll 7
+        for (int a = 0; a < 7; ++a) {
+          slope += float(4 + 2 * a) * s.a[a] * rd;
+          rd *= r2;
+        }
+      }
+      float inv_r = 1 / std::max(r, 1e-30f);
+      float nx = -slope * px * inv_r, ny = -slope * py * inv_r, nz = 1;
+      float inv = 1 / std::sqrt(nx * nx + ny * ny + 1);
+      nx *= inv, ny *= inv, nz *= inv;
+      float cos_i = -(nx * dx + ny * dy + nz * dz);
+      float flip = cos_i < 0 ? -1.f : 1.f;
+      nx *= flip, ny *= flip, nz *= flip, cos_i *= flip;
+      const float n1 = n_in[j], n2 = n_out[j];
+      float eta = n1 / n2, k2 = 1 - eta * eta * (1 - cos_i * cos_i);
+      ok &= k2 >= 0;
+      float cos_t = std::sqrt(std::max(k2, 0.f)), g = eta * cos_i - cos_t;
+      float ex = eta * dx + g * nx, ey = eta * dy + g * ny, ez = eta * dz + g * nz;
+      float dl = 1 / std::sqrt(ex * ex + ey * ey + ez * ez);
+      dxs[j] = ex * dl, dys[j] = ey * dl, dzs[j] = ez * dl;
+      if constexpr (kTransmission) {
+        float rs = (n1 * cos_i - n2 * cos_t) / (n1 * cos_i + n2 * cos_t);
+        float rp = (n2 * cos_i - n1 * cos_t) / (n2 * cos_i + n1 * cos_t);
+        trans[j] *= 1 - 0.5f * (rs * rs + rp * rp);
+      }
+    }
+    alive[j] = ok;
   }
-  float nx = r > 0 ? -slope * px / r : 0.f, ny = r > 0 ? -slope * py / r : 0.f, nz = 1;
-  float inv = 1 / std::sqrt(nx * nx + ny * ny + nz * nz);
-  nx *= inv, ny *= inv, nz *= inv;
-  float cos_i = -(nx * dx + ny * dy + nz * dz);
-  if (cos_i < 0) nx = -nx, ny = -ny, nz = -nz, cos_i = -cos_i;
-  float n1 = Index(m_in, ray.lambda), n2 = Index(m_out, ray.lambda);
-  float eta = n1 / n2, k2 = 1 - eta * eta * (1 - cos_i * cos_i);
-  if (k2 < 0) return false;
-  float cos_t = std::sqrt(k2), g = eta * cos_i - cos_t;
-  dx = eta * dx + g * nx, dy = eta * dy + g * ny, dz = eta * dz + g * nz;
-  float dl = 1 / std::sqrt(dx * dx + dy * dy + dz * dz);
-  ray.dx = dx * dl, ray.dy = dy * dl, ray.dz = dz * dl;
-  if (transmission) {
-    float rs = (n1 * cos_i - n2 * cos_t) / (n1 * cos_i + n2 * cos_t);
-    float rp = (n2 * cos_i - n1 * cos_t) / (n2 * cos_i + n1 * cos_t);
-    ray.transmittance *= 1 - 0.5f * (rs * rs + rp * rp);
-  }
-  return true;
 }
 
+template <bool kPlane, bool kAspheric, bool kRefract>
+void StepAll(const Step& s, bool transmission, RayBatch& b) {
+  if (transmission) StepAll<kPlane, kAspheric, kRefract, true>(s, b);
+  else StepAll<kPlane, kAspheric, kRefract, false>(s, b);
+}
+
+}  // namespace
+
 void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) const {
-  // Surfaces in the outer loop: every ray takes the same branches in turn, which runs about
-  // twice as fast as tracing each ray through the whole lens.
+  const size_t count = rays.Size();
+  // Each medium's index and absorption at each ray's wavelength, once for all surfaces (the
+  // kernel then reads them as contiguous arrays, which vectorises better than table lookups).
+  const size_t media = index_tables_.size();
+  rays.media_index.resize(media * count);
+  rays.media_alpha.resize(media * count);
+  rays.depth.assign(count, 0.f);
+  for (size_t j = 0; j < count; ++j) {
+    float x = std::min(std::max(rays.lambda[j] - kTableMin, 0.f), kTableMax - kTableMin - 1e-3f);
+    int i0 = int(x);
+    float f = x - float(i0);
+    for (size_t m = 0; m < media; ++m) {
+      const std::vector<float>&n = index_tables_[m], &a = absorption_tables_[m];
+      rays.media_index[m * count + j] = n[i0] + f * (n[i0 + 1] - n[i0]);
+      rays.media_alpha[m * count + j] = a[i0] + f * (a[i0 + 1] - a[i0]);
+    }
+  }
   const int n = int(surfaces_.size());
   for (int k = 0; k < n; ++k) {
     const int i = from_film ? n - 1 - k : k;
-    const int object_side = i > 0 ? surfaces_[i - 1].medium_after : -1, film_side = surfaces_[i].medium_after;
+    const Surface& sf = surfaces_[i];
+    // Media on the incoming and outgoing sides of surface i, in the direction of travel.
+    const int object_side = i > 0 ? surfaces_[i - 1].medium_after : -1, film_side = sf.medium_after;
     const int m_in = from_film ? film_side : object_side, m_out = from_film ? object_side : film_side;
-    for (size_t j = 0; j < rays.Size(); ++j) {
-      if (!rays.alive[j]) continue;
-      FloatRay r = rays.Get(j);
-      rays.alive[j] = Refract(surfaces_[i], m_in, m_out, k > 0, transmission, r);
-      rays.ox[j] = r.ox, rays.oy[j] = r.oy, rays.oz[j] = r.oz;
-      rays.dx[j] = r.dx, rays.dy[j] = r.dy, rays.dz[j] = r.dz;
-      rays.transmittance[j] = r.transmittance;
+    // Air is medium 0 (index one, no absorption); the ray starts in air (no absorption before
+    // the first surface).
+    const bool absorb = k > 0;
+    Step st{sf.z, sf.c, sf.k1, sf.semi2, sf.a2, {}, &rays.media_index[(m_in + 1) * count],
+            &rays.media_index[(m_out + 1) * count], &rays.media_alpha[(absorb ? m_in + 1 : 0) * count]};
+    std::copy(sf.a, sf.a + 7, st.a);
+    const bool refract = !sf.is_stop && m_in != m_out;
+    if (sf.plane) {
+      if (refract) StepAll<true, false, true>(st, transmission, rays);
+      else StepAll<true, false, false>(st, transmission, rays);
+    } else if (sf.aspheric) {
+      if (refract) StepAll<false, true, true>(st, transmission, rays);
+      else StepAll<false, true, false>(st, transmission, rays);
+    } else {
+      if (refract) StepAll<false, false, true>(st, transmission, rays);
+      else StepAll<false, false, false>(st, transmission, rays);
     }
+    // A bladed stop: the circle was tested above, the blades here.
+    if (sf.is_stop && bladed_)
+      for (size_t j = 0; j < count; ++j)
+        if (rays.alive[j] && !shape_.InsideStop(rays.ox[j], rays.oy[j])) rays.alive[j] = 0;
   }
+  if (transmission)
+    for (size_t j = 0; j < count; ++j) rays.transmittance[j] *= std::exp(-rays.depth[j]);
 }
 
 bool BatchLensTracer::TraceRay(FloatRay& ray, bool from_film, bool transmission) const {
-  const int n = int(surfaces_.size());
-  for (int k = 0; k < n; ++k) {
-    const int i = from_film ? n - 1 - k : k;
-    const int object_side = i > 0 ? surfaces_[i - 1].medium_after : -1, film_side = surfaces_[i].medium_after;
-    if (!Refract(surfaces_[i], from_film ? film_side : object_side, from_film ? object_side : film_side, k > 0,
-                 transmission, ray))
-      return false;
-  }
-  return true;
+  thread_local RayBatch one;
+  one.Resize(0);
+  one.Push(ray);
+  Trace(one, from_film, transmission);
+  ray = one.Get(0);
+  return one.alive[0] != 0;
 }
 
 }  // namespace objektiv

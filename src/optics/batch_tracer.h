@@ -1,5 +1,6 @@
 // The renderer's lens tracer: single precision, many rays at once in structure-of-arrays form
-// (surfaces in the outer loop, rays in the inner loop, so that the compiler vectorises it),
+// (surfaces in the outer loop, rays in the inner loop, branch-free, so that the compiler
+// vectorises it),
 // each ray with its own wavelength (each glass's index is tabulated at 1 nm). It follows the
 // double-precision LensTracer to well below 1e-4 mm at the film.
 #pragma once
@@ -21,6 +22,9 @@ struct RayBatch {
   std::vector<float> ox, oy, oz, dx, dy, dz, lambda;
   std::vector<float> transmittance;  // Fresnel and internal transmittance, multiplied along
   std::vector<uint8_t> alive;
+  // Scratch for the tracer: per medium and ray, the index and absorption coefficient at the
+  // ray's wavelength; per ray, the optical depth crossed.
+  std::vector<float> media_index, media_alpha, depth;
   void Resize(size_t n);
   size_t Size() const { return ox.size(); }
   void Push(const FloatRay& r);  // appended alive
@@ -46,15 +50,13 @@ class BatchLensTracer {
     float z, c, k1, semi2;        // vertex z, curvature, 1 + conic, semi-diameter squared
     bool plane, aspheric, is_stop;
     float a2, a[7];
-    int medium_after;            // index into index_tables_ (-1: air)
+    int medium_after;            // glass index (-1: air); its tables are at medium_after + 1
   };
   void Trace(RayBatch& rays, bool from_film, bool transmission) const;
-  bool Refract(const Surface& s, int m_in, int m_out, bool absorb, bool transmission, FloatRay& ray) const;
-  float Index(int medium, float lambda) const;
-  float Absorption(int medium, float lambda) const;  // per mm
 
   std::vector<Surface> surfaces_;
-  std::vector<std::vector<float>> index_tables_, absorption_tables_;  // per medium, 360..830 nm at 1 nm
+  // Per medium (air first), 360..830 nm at 1 nm: index, absorption coefficient per mm.
+  std::vector<std::vector<float>> index_tables_, absorption_tables_;
   float film_z_;
   LensTracer shape_;  // a copy, for bladed stops (the circle is tested inline)
   bool bladed_;

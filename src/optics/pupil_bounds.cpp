@@ -225,6 +225,7 @@ PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, const Pup
   if (!options.rims) fast.IgnoreRims();
   bounds_.resize(bins);
   triangle_cdf_.resize(bins);
+  guides_.resize(bins);
   // Bins are independent: build them in parallel.
   tbb::parallel_for(0, bins, [&](int bin) {
     // The edge for the film radii at both ends of the annulus and every wavelength; the
@@ -265,8 +266,14 @@ PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, const Pup
     } else {
       poly.vertices.clear();
     }
+    // Guide table: for u in [g / G, (g + 1) / G), the triangles before guide[g] are too low.
+    std::vector<uint16_t> guide(cdf.empty() ? 0 : 64);
+    for (size_t g = 0; g < guide.size(); ++g)
+      guide[g] = uint16_t(std::max<ptrdiff_t>(
+          1, std::upper_bound(cdf.begin(), cdf.end(), double(g) / guide.size()) - cdf.begin()));
     bounds_[bin] = std::move(poly);
     triangle_cdf_[bin] = std::move(cdf);
+    guides_[bin] = std::move(guide);
   });
 }
 
@@ -277,13 +284,16 @@ const ConvexPolygon* PupilBounds::BoundAt(double r) const {
 }
 
 PupilBounds::Sample PupilBounds::SampleRear(Vec2d film, Vec2d u) const {
-  double r = std::hypot(film.x, film.y);
+  double r = std::sqrt(film.x * film.x + film.y * film.y);
   int bin = int(r / film_radius_ * bounds_.size());
   if (bin < 0 || bin >= int(bounds_.size()) || bounds_[bin].area <= 0) return {{0, 0, rear_z_}, 0};
   const ConvexPolygon& poly = bounds_[bin];
   const std::vector<double>& cdf = triangle_cdf_[bin];
-  // Pick a fan triangle by area (reusing u.x), then a uniform point in it.
-  size_t t = size_t(std::upper_bound(cdf.begin(), cdf.end(), u.x) - cdf.begin());
+  // Pick a fan triangle by area (reusing u.x): the guide table gives the first candidate,
+  // a short scan the triangle with cdf[t - 1] <= u.x < cdf[t].
+  const std::vector<uint16_t>& guide = guides_[bin];
+  size_t t = guide[std::min(size_t(u.x * guide.size()), guide.size() - 1)];
+  while (t + 1 < cdf.size() && cdf[t] <= u.x) ++t;
   t = std::clamp<size_t>(t, 1, cdf.size() - 1);
   double ux = (u.x - cdf[t - 1]) / std::max(cdf[t] - cdf[t - 1], 1e-300);
   Vec2f bary = SampleUniformTriangle({float(std::min(ux, 0.99999994)), float(u.y)});

@@ -4,6 +4,7 @@
 // Sampling points uniformly inside it (with its exact pdf) wastes few rays and, because the
 // polygon contains the whole passing region, leaves the estimator unbiased.
 #pragma once
+#include <cstdint>
 #include <vector>
 
 #include "base/vec.h"
@@ -44,6 +45,7 @@ class PupilBounds {
  private:
   std::vector<ConvexPolygon> bounds_;  // per bin; empty polygon: no light
   std::vector<std::vector<double>> triangle_cdf_;  // per bin, for sampling the fan
+  std::vector<std::vector<uint16_t>> guides_;       // per bin: where to start looking in the cdf
   double film_radius_, rear_z_;
 };
 
