@@ -1,5 +1,5 @@
 # Runs CMD (a list) and checks its exit code (EXPECT_CODE), optionally that its output or
-# TEXT_FILE contains EXPECT_TEXT and that EXPECT_FILES exist.
+# TEXT_FILE contains EXPECT_TEXT, that EXPECT_FILES exist and that JSON_FILE is valid JSON.
 execute_process(COMMAND ${CMD} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT "${code}" STREQUAL "${EXPECT_CODE}")
   message(FATAL_ERROR "exit code ${code}, expected ${EXPECT_CODE}\nstdout: ${out}\nstderr: ${err}")
@@ -19,3 +19,16 @@ foreach(f IN LISTS EXPECT_FILES)
     message(FATAL_ERROR "missing output file ${f}")
   endif()
 endforeach()
+# JSON_FILE must parse as JSON (CMake's own parser) and hold the key JSON_KEY.
+if(DEFINED JSON_FILE)
+  file(READ ${JSON_FILE} json)
+  string(JSON value ERROR_VARIABLE json_error GET "${json}" ${JSON_KEY})
+  if(json_error)
+    message(FATAL_ERROR "${JSON_FILE}: not valid JSON with key '${JSON_KEY}': ${json_error}")
+  endif()
+  # CMake's parser forgives a comma before a closing bracket; strict JSON does not.
+  string(REGEX MATCH ",[ \t\r\n]*[]}]" trailing "${json}")
+  if(trailing)
+    message(FATAL_ERROR "${JSON_FILE}: a comma before a closing bracket")
+  endif()
+endif()

@@ -18,7 +18,9 @@ double WideOpenFNumber(const LensPrescription& lens) { return RealFNumber(LensTr
 
 namespace {
 
-LensTracer StoppedDown(const LensCameraSpec& spec) {
+// The lens with its stop set as asked; `fnumber` receives the f-number of the round stop
+// (before blades are put in).
+LensTracer StoppedDown(const LensCameraSpec& spec, double* fnumber) {
   LensTracer tracer(spec.lens);
   const double full = tracer.StopSemiDiameter();
   if (spec.stop_diameter > 0) {
@@ -33,6 +35,7 @@ LensTracer StoppedDown(const LensCameraSpec& spec) {
                                    WideOpenFNumber(spec.lens)));
     tracer.SetStopSemiDiameter(*semi);
   }
+  *fnumber = RealFNumber(tracer);
   if (spec.blades >= 3) tracer.SetStopBlades(spec.blades, spec.blade_curvature, spec.blade_rotation);
   return tracer;
 }
@@ -60,15 +63,16 @@ double FocusPointDistance(const LensTracer& tracer, const Transform& to_world, V
 
 std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int height, const LensCameraSpec& spec) {
   auto start = std::chrono::steady_clock::now();
-  LensTracer tracer = StoppedDown(spec);
+  double fnumber = 0;
+  LensTracer tracer = StoppedDown(spec, &fnumber);
   ParaxialData p = ComputeParaxial(spec.lens, kLambdad, tracer.StopSemiDiameter());
   double distance = spec.focus_point
                         ? FocusPointDistance(tracer, to_world, *spec.focus_point, spec.settings.metres_per_unit)
                         : spec.focus_distance * 1e3;
   LensFocus focus = FocusLens(tracer, distance);
   tracer.SetBackFocus(focus.back_focus);
-  spdlog::info("lens {}: EFL {:.2f} mm, f/{:.3g} (paraxial f/{:.3g}); {}", spec.lens.name, p.efl, RealFNumber(tracer),
-               p.fnumber, DescribeFocus(focus, p.bfl));
+  spdlog::info("lens {}: EFL {:.2f} mm, f/{:.3g} (paraxial f/{:.3g}){}; {}", spec.lens.name, p.efl, fnumber, p.fnumber,
+               spec.blades >= 3 ? fmt::format(", {} blades", spec.blades) : "", DescribeFocus(focus, p.bfl));
   std::unique_ptr<Camera> camera;
   if (spec.model == LensModel::kReal) {
     auto real = std::make_unique<RealisticCamera>(to_world, width, height, tracer, spec.settings);

@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "base/error.h"
 #include "io/lens_plot.h"
@@ -133,7 +134,7 @@ void WriteLensAnalysis(const LensTracer& tracer, const std::string& directory) {
   const double lambdas[3] = {kF, kD, kC};
   const char* colours[3] = {"#1f5fd1", "#1a9e3a", "#d12f1f"};
   std::vector<PlotSeries> lsa;
-  json += "  \"longitudinal_aberration\": [\n";
+  std::vector<std::string> rows;  // joined at the end: rays that do not get through leave gaps
   for (int w = 0; w < 3; ++w) {
     PlotSeries s{fmt::format("{:.0f} nm", lambdas[w]), colours[w], {}};
     for (int k = 1; k <= 20; ++k) {
@@ -143,12 +144,12 @@ void WriteLensAnalysis(const LensTracer& tracer, const std::string& directory) {
       double shift = ComputeParaxial(lens, lambdas[w], tracer.StopSemiDiameter()).bfl - p.bfl;
       if (a) s.points.push_back({*a + shift, double(k) / 20});
       if (a)
-        json += fmt::format("    {{\"wavelength_nm\": {:.4f}, \"pupil\": {:.3f}, \"focus_mm\": {:.6g}}}{}\n", lambdas[w],
-                            double(k) / 20, *a + shift, (w == 2 && k == 20) ? "" : ",");
+        rows.push_back(fmt::format("    {{\"wavelength_nm\": {:.4f}, \"pupil\": {:.3f}, \"focus_mm\": {:.6g}}}",
+                                   lambdas[w], double(k) / 20, *a + shift));
     }
     lsa.push_back(s);
   }
-  json += "  ]\n}\n";
+  json += "  \"longitudinal_aberration\": [\n" + fmt::format("{}", fmt::join(rows, ",\n")) + "\n  ]\n}\n";
   LinePlot(lens.name + ": longitudinal aberration", "focus relative to the d-line paraxial focus (mm)",
            "pupil height (relative)", lsa)
       .Write((fs::path(directory) / "longitudinal_aberration.svg").string());
