@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include <tbb/parallel_for.h>
 
@@ -206,6 +207,40 @@ std::vector<Vec2d> TraceEdge(const RegionProbe& probe, Vec2d c, double limit, do
 
 }  // namespace
 
+PupilBounds::Region PupilBounds::MakeRegion(std::initializer_list<const std::vector<Vec2d>*> edges, double size) {
+  // Grow the hull by the edge tolerance and the bisection's step, so that no light is left
+  // outside: each edge point becomes a small square.
+  std::vector<Vec2d> corners;
+  double grow = 2e-3 * size;
+  for (const std::vector<Vec2d>* edge : edges)
+    for (const Vec2d& q : *edge)
+      for (double dx : {-grow, grow})
+        for (double dy : {-grow, grow}) corners.push_back({q.x + dx, q.y + dy});
+  Region region;
+  ConvexPolygon& poly = region.poly;
+  poly.vertices = ConvexHull(corners);
+  poly.area = poly.vertices.size() >= 3 ? PolygonArea(poly.vertices) : 0;
+  if (!(poly.area > 0)) {
+    poly = {};
+    return region;
+  }
+  // Fan triangles from vertex 0, chosen in proportion to their area.
+  std::vector<double>& cdf = region.cdf;
+  double acc = 0;
+  cdf.push_back(0);
+  for (size_t t = 1; t + 1 < poly.vertices.size(); ++t) {
+    acc += 0.5 * Cross(poly.vertices[0], poly.vertices[t], poly.vertices[t + 1]);
+    cdf.push_back(acc);
+  }
+  for (double& c : cdf) c /= acc;
+  // Guide table: for u in [g / G, (g + 1) / G), the triangles before guide[g] are too low.
+  region.guide.resize(64);
+  for (size_t g = 0; g < region.guide.size(); ++g)
+    region.guide[g] = uint16_t(
+        std::max<ptrdiff_t>(1, std::upper_bound(cdf.begin(), cdf.end(), double(g) / region.guide.size()) - cdf.begin()));
+  return region;
+}
+
 PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, const PupilBoundsOptions& options)
     : film_radius_(film_radius) {
   const int bins = options.bins;
@@ -223,75 +258,94 @@ PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, const Pup
   const double film_z = tracer.FilmZ();
   BatchLensTracer fast(tracer);
   if (!options.rims) fast.IgnoreRims();
-  bounds_.resize(bins);
-  triangle_cdf_.resize(bins);
-  guides_.resize(bins);
-  // Bins are independent: build them in parallel.
-  tbb::parallel_for(0, bins, [&](int bin) {
-    // The edge for the film radii at both ends of the annulus and every wavelength; the
-    // regions move little across a bin, and the hull of all their edges holds them all.
-    std::vector<Vec2d> edge;
-    double size = 0;
-    for (double lambda : lambdas)
-      for (double r : {film_radius * bin / bins, film_radius * (bin + 1) / bins}) {
-        RegionProbe probe(fast, tracer, r, film_z, rear_z_, lambda);
-        std::optional<Vec2d> c = probe.Inside(half);
-        if (!c) continue;
-        // Tolerance: a thousandth of the region's size (its first estimate: the exit pupil).
-        double tol = 1e-3 * std::max(p.exit_pupil_diameter, 1e-9);
-        std::vector<Vec2d> e = TraceEdge(probe, *c, 2 * half, tol);
-        for (const Vec2d& q : e) size = std::max(size, std::hypot(q.x - c->x, q.y - c->y));
-        edge.insert(edge.end(), e.begin(), e.end());
-      }
-    // Grow the hull by the edge tolerance and the bisection's step, so that no light is
-    // left outside: each edge point becomes a small square.
-    std::vector<Vec2d> corners;
-    double grow = 2e-3 * size;
-    for (const Vec2d& q : edge)
-      for (double dx : {-grow, grow})
-        for (double dy : {-grow, grow}) corners.push_back({q.x + dx, q.y + dy});
-    ConvexPolygon poly;
-    poly.vertices = ConvexHull(corners);
-    poly.area = poly.vertices.size() >= 3 ? PolygonArea(poly.vertices) : 0;
-    std::vector<double> cdf;
-    if (poly.area > 0) {
-      // Fan triangles from vertex 0, chosen in proportion to their area.
-      double acc = 0;
-      cdf.push_back(0);
-      for (size_t t = 1; t + 1 < poly.vertices.size(); ++t) {
-        acc += 0.5 * Cross(poly.vertices[0], poly.vertices[t], poly.vertices[t + 1]);
-        cdf.push_back(acc);
-      }
-      for (double& c : cdf) c /= acc;
-    } else {
-      poly.vertices.clear();
+  // The edge of the passing region for one film radius, all wavelengths together.
+  struct Edge {
+    std::vector<Vec2d> points;
+    double size = 0;  // largest distance of an edge point from the probe's centre
+  };
+  auto edge_at = [&](double r) {
+    Edge edge;
+    for (double lambda : lambdas) {
+      RegionProbe probe(fast, tracer, r, film_z, rear_z_, lambda);
+      std::optional<Vec2d> c = probe.Inside(half);
+      if (!c) continue;
+      // Tolerance: a thousandth of the region's size (its first estimate: the exit pupil).
+      double tol = 1e-3 * std::max(p.exit_pupil_diameter, 1e-9);
+      std::vector<Vec2d> e = TraceEdge(probe, *c, 2 * half, tol);
+      for (const Vec2d& q : e) edge.size = std::max(edge.size, std::hypot(q.x - c->x, q.y - c->y));
+      edge.points.insert(edge.points.end(), e.begin(), e.end());
     }
-    // Guide table: for u in [g / G, (g + 1) / G), the triangles before guide[g] are too low.
-    std::vector<uint16_t> guide(cdf.empty() ? 0 : 64);
-    for (size_t g = 0; g < guide.size(); ++g)
-      guide[g] = uint16_t(std::max<ptrdiff_t>(
-          1, std::upper_bound(cdf.begin(), cdf.end(), double(g) / guide.size()) - cdf.begin()));
-    bounds_[bin] = std::move(poly);
-    triangle_cdf_[bin] = std::move(cdf);
-    guides_[bin] = std::move(guide);
+    return edge;
+  };
+  // Each bin is one annulus, or where the region changes fast across it (at the rim of a
+  // fisheye's image circle, say), halves, quarters, ... of it: a sub-annulus is split while
+  // the hull of both its ends is more than 4% larger than the smaller end (a film point at
+  // that end would waste more than 4% of its rays).
+  const int max_depth = 5;
+  struct BinRegions {
+    std::vector<Region> regions;
+    std::vector<uint32_t> leaves;  // per finest sub-annulus, its region
+  };
+  std::vector<BinRegions> per_bin(bins);
+  std::vector<Edge> ends(bins + 1);
+  tbb::parallel_for(0, bins + 1, [&](int k) { ends[k] = edge_at(film_radius * k / bins); });
+  tbb::parallel_for(0, bins, [&](int bin) {
+    BinRegions& out = per_bin[bin];
+    std::function<void(double, double, const Edge&, const Edge&, int)> build =
+        [&](double r0, double r1, const Edge& e0, const Edge& e1, int depth) {
+          Region both = MakeRegion({&e0.points, &e1.points}, std::max(e0.size, e1.size));
+          if (depth < max_depth) {
+            double a0 = MakeRegion({&e0.points}, e0.size).poly.area, a1 = MakeRegion({&e1.points}, e1.size).poly.area;
+            if (both.poly.area > 1.04 * std::min(a0, a1)) {
+              double rm = 0.5 * (r0 + r1);
+              Edge em = edge_at(rm);
+              build(r0, rm, e0, em, depth + 1);
+              build(rm, r1, em, e1, depth + 1);
+              return;
+            }
+          }
+          out.leaves.insert(out.leaves.end(), size_t(1) << (max_depth - depth), uint32_t(out.regions.size()));
+          out.regions.push_back(std::move(both));
+        };
+    build(film_radius * bin / bins, film_radius * (bin + 1) / bins, ends[bin], ends[bin + 1], 0);
   });
+  // Flatten; a bin with one region needs no sub-annuli.
+  for (int bin = 0; bin < bins; ++bin) {
+    BinRegions& b = per_bin[bin];
+    const uint32_t base = uint32_t(regions_.size());
+    bin_first_.push_back(uint32_t(leaves_.size()));
+    bin_levels_.push_back(b.regions.size() == 1 ? 0 : uint8_t(max_depth));
+    if (b.regions.size() == 1) leaves_.push_back(base);
+    else
+      for (uint32_t leaf : b.leaves) leaves_.push_back(base + leaf);
+    for (Region& r : b.regions) regions_.push_back(std::move(r));
+  }
+}
+
+const PupilBounds::Region* PupilBounds::RegionAt(double r) const {
+  double x = r / film_radius_ * bin_first_.size();
+  int bin = int(x);
+  if (bin < 0 || bin >= int(bin_first_.size())) return nullptr;
+  int levels = bin_levels_[bin];
+  int sub = std::min(int((x - bin) * (1 << levels)), (1 << levels) - 1);
+  const Region& region = regions_[leaves_[bin_first_[bin] + sub]];
+  return region.poly.area > 0 ? &region : nullptr;
 }
 
 const ConvexPolygon* PupilBounds::BoundAt(double r) const {
-  int bin = int(r / film_radius_ * bounds_.size());
-  if (bin < 0 || bin >= int(bounds_.size()) || bounds_[bin].area <= 0) return nullptr;
-  return &bounds_[bin];
+  const Region* region = RegionAt(r);
+  return region ? &region->poly : nullptr;
 }
 
 PupilBounds::Sample PupilBounds::SampleRear(Vec2d film, Vec2d u) const {
   double r = std::sqrt(film.x * film.x + film.y * film.y);
-  int bin = int(r / film_radius_ * bounds_.size());
-  if (bin < 0 || bin >= int(bounds_.size()) || bounds_[bin].area <= 0) return {{0, 0, rear_z_}, 0};
-  const ConvexPolygon& poly = bounds_[bin];
-  const std::vector<double>& cdf = triangle_cdf_[bin];
+  const Region* region = RegionAt(r);
+  if (!region) return {{0, 0, rear_z_}, 0};
+  const ConvexPolygon& poly = region->poly;
+  const std::vector<double>& cdf = region->cdf;
   // Pick a fan triangle by area (reusing u.x): the guide table gives the first candidate,
   // a short scan the triangle with cdf[t - 1] <= u.x < cdf[t].
-  const std::vector<uint16_t>& guide = guides_[bin];
+  const std::vector<uint16_t>& guide = region->guide;
   size_t t = guide[std::min(size_t(u.x * guide.size()), guide.size() - 1)];
   while (t + 1 < cdf.size() && cdf[t] <= u.x) ++t;
   t = std::clamp<size_t>(t, 1, cdf.size() - 1);

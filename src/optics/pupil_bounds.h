@@ -5,6 +5,7 @@
 // polygon contains the whole passing region, leaves the estimator unbiased.
 #pragma once
 #include <cstdint>
+#include <initializer_list>
 #include <vector>
 
 #include "base/vec.h"
@@ -39,13 +40,24 @@ class PupilBounds {
   Sample SampleRear(Vec2d film, Vec2d u) const;
   // The bound (unrotated: film point on +x) for the annulus containing radius r; null if none.
   const ConvexPolygon* BoundAt(double r) const;
+  size_t RegionCount() const { return regions_.size(); }
   double rear_z() const { return rear_z_; }  // the sampling plane's z (the exit pupil)
   double film_radius() const { return film_radius_; }
 
  private:
-  std::vector<ConvexPolygon> bounds_;  // per bin; empty polygon: no light
-  std::vector<std::vector<double>> triangle_cdf_;  // per bin, for sampling the fan
-  std::vector<std::vector<uint16_t>> guides_;       // per bin: where to start looking in the cdf
+  struct Region {
+    ConvexPolygon poly;          // empty: no light
+    std::vector<double> cdf;     // over the fan triangles from vertex 0
+    std::vector<uint16_t> guide;  // where to start looking in the cdf for u in [g/G, (g+1)/G)
+  };
+  static Region MakeRegion(std::initializer_list<const std::vector<Vec2d>*> edges, double size);
+  const Region* RegionAt(double r) const;
+
+  // Bin b (an annulus of film radii) has 2^bin_levels_[b] equal sub-annuli; sub-annulus k's
+  // region is regions_[leaves_[bin_first_[b] + k]].
+  std::vector<Region> regions_;
+  std::vector<uint32_t> leaves_, bin_first_;
+  std::vector<uint8_t> bin_levels_;
   double film_radius_, rear_z_;
 };
 
