@@ -30,9 +30,15 @@ LensTracer StoppedDown(const LensCameraSpec& spec, double* fnumber) {
     tracer.SetStopSemiDiameter(spec.stop_diameter / 2);
   } else if (spec.fnumber > 0) {
     std::optional<double> semi = StopSemiDiameterForFNumber(tracer, spec.fnumber);
-    if (!semi)
-      throw InputError(fmt::format("f/{} is faster than {} opens (f/{:.3g})", spec.fnumber, spec.lens.name,
-                                   WideOpenFNumber(spec.lens)));
+    if (!semi) {
+      // A lens sold as f/2.8 may open to f/2.81 by the real rays: a request within 2% of the
+      // widest aperture means wide open.
+      const double wide_open = WideOpenFNumber(spec.lens);
+      if (spec.fnumber < wide_open / 1.02)
+        throw InputError(fmt::format("f/{} is faster than {} opens (f/{:.3g})", spec.fnumber, spec.lens.name, wide_open));
+      spdlog::info("lens {}: f/{} taken as wide open (f/{:.3g})", spec.lens.name, spec.fnumber, wide_open);
+      semi = full;
+    }
     tracer.SetStopSemiDiameter(*semi);
   }
   *fnumber = RealFNumber(tracer);
