@@ -23,6 +23,20 @@ struct BadCase {
   std::string message_part;
 };
 
+// Each case fails to load with an error at its line that says what is wrong.
+void ExpectErrors(const std::vector<BadCase>& cases) {
+  for (const BadCase& c : cases) {
+    try {
+      LoadSceneFromString(c.xml, "bad.xml", {});
+      ADD_FAILURE() << "no error for:\n" << c.xml;
+    } catch (const InputError& e) {
+      std::string msg = e.what();
+      EXPECT_EQ(msg.rfind("bad.xml:" + std::to_string(c.line) + ":", 0), 0u) << msg;
+      EXPECT_NE(msg.find(c.message_part), std::string::npos) << msg;
+    }
+  }
+}
+
 TEST(Parser, BadInputNamesFileAndLine) {
   // The sensor occupies lines 2-3; bodies start at line 4.
   std::vector<BadCase> cases = {
@@ -63,16 +77,35 @@ TEST(Parser, BadInputNamesFileAndLine) {
       {Wrap("<emitter type=\"constant\">\n<spectrum name=\"radiance\" value=\"400:1, 500:-2\"/></emitter>"), 5,
        "not negative"},
   };
-  for (const BadCase& c : cases) {
-    try {
-      LoadSceneFromString(c.xml, "bad.xml", {});
-      ADD_FAILURE() << "no error for:\n" << c.xml;
-    } catch (const InputError& e) {
-      std::string msg = e.what();
-      EXPECT_EQ(msg.rfind("bad.xml:" + std::to_string(c.line) + ":", 0), 0u) << msg;
-      EXPECT_NE(msg.find(c.message_part), std::string::npos) << msg;
-    }
-  }
+  ExpectErrors(cases);
+}
+
+TEST(Parser, RealisticSensorErrorsNameFileAndLine) {
+  auto scene = [](const std::string& props) {
+    return "<scene version=\"3.0.0\">\n<sensor type=\"realistic\">\n" + props + "\n</sensor>\n</scene>\n";
+  };
+  std::vector<BadCase> cases = {
+      {scene("<string name=\"lens\" value=\"no.such.lens\"/>"), 3, "lens 'no.such.lens'"},
+      {scene("<string name=\"lens\" value=\"dgauss.50mm\"/>\n<float name=\"fnumber\" value=\"1.2\"/>"), 2,
+       "faster than"},
+      {scene("<string name=\"lens\" value=\"dgauss.50mm\"/>\n<float name=\"aperture_diameter\" value=\"90\"/>"), 2,
+       "larger than"},
+      {scene("<string name=\"lens\" value=\"dgauss.50mm\"/>\n<string name=\"sensor\" value=\"imax\"/>"), 4,
+       "unknown sensor 'imax'"},
+      {scene("<string name=\"lens\" value=\"dgauss.50mm\"/>\n<string name=\"vignetting\" value=\"some\"/>"), 4,
+       "vignetting"},
+      {scene("<string name=\"lens\" value=\"dgauss.50mm\"/>\n<integer name=\"blades\" value=\"2\"/>"), 4,
+       "blades"},
+      {scene("<string name=\"lens\" value=\"dgauss.50mm\"/>\n<float name=\"focus_distance\" value=\"-1\"/>"), 4,
+       "focus_distance"},
+      {scene("<string name=\"lens\" value=\"dgauss.50mm\"/>\n<float name=\"focus_distance\" value=\"1\"/>\n"
+             "<point name=\"focus_point\" x=\"0\" y=\"0\" z=\"1\"/>"),
+       5, "either focus_distance or focus_point"},
+      {scene("<string name=\"lens\" value=\"dgauss.50mm\"/>\n<point name=\"focus_point\" x=\"0\" y=\"0\" z=\"-1\"/>"), 2,
+       "behind the camera"},
+      {scene("<float name=\"fnumber\" value=\"4\"/>"), 2, "needs the property 'lens'"},
+  };
+  ExpectErrors(cases);
 }
 
 TEST(Parser, DefaultsSubstitutionAndOverrides) {
