@@ -305,6 +305,29 @@ TEST(RealisticCamera, FocusNeverFailsOrHangs) {
   }
 }
 
+TEST(RealisticCamera, ApertureMaskWeightsTheLightThroughTheStop) {
+  // A mask open on its right half (as the photographer sees it): half the light on the axis,
+  // and every ray that gets out leaves through the right half of the entrance pupil
+  // (camera -x; the double Gauss images its stop upright).
+  Image half(64, 64, {"R", "G", "B"});
+  for (int y = 0; y < 64; ++y)
+    for (int x = 32; x < 64; ++x)
+      for (int c = 0; c < 3; ++c) half.At(x, y, c) = 1;
+  LensCameraSpec s = Spec("dgauss.50mm", 4);
+  auto open = Make(s);
+  s.settings.aperture_mask = std::make_shared<ApertureMask>(half);
+  auto masked = Make(s);
+  Estimate a = Irradiance(*open, Pixel({0, 0}, 36), 100000, 2), b = Irradiance(*masked, Pixel({0, 0}, 36), 100000, 2);
+  EXPECT_NEAR(b.mean / a.mean, 0.5, 0.02);
+  PCG32 rng(4, 4);
+  for (int i = 0; i < 2000; ++i) {
+    SampledWavelengths l = SampledWavelengths::Single(kLambdad);
+    auto r = masked->GenerateRay({Pixel({0, 0}, 36), Vec2f(rng.UniformFloat(), rng.UniformFloat())}, l);
+    if (!r || r->weight[0] == 0) continue;
+    ASSERT_LT(r->ray.o.x, 1e-4f);  // at the front vertex, a few cm in front of the pupil
+  }
+}
+
 TEST(RealisticCamera, BadStopIsAnError) {
   LensCameraSpec s = Spec("dgauss.50mm", 1.4);
   EXPECT_THROW(Make(s), InputError);

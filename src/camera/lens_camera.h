@@ -7,7 +7,9 @@
 // (as the other cameras); one scene unit is `metres_per_unit` metres.
 #pragma once
 #include <array>
+#include <memory>
 
+#include "camera/aperture_mask.h"
 #include "camera/camera.h"
 
 namespace objektiv {
@@ -30,6 +32,7 @@ struct LensCameraSettings {
   Vignetting vignetting = Vignetting::kFull;
   bool transmission = true;  // Fresnel losses and glass absorption (real lens only)
   float far_clip = 1e4;      // scene units
+  std::shared_ptr<const ApertureMask> aperture_mask;  // over the stop; null: none
 };
 
 class LensCamera : public Camera {

@@ -78,9 +78,11 @@ std::optional<CameraRay> ParaxialLensCamera::GenerateRay(const CameraSample& s, 
     Vec3d o(-f.x * object / image, -f.y * object / image, m_.front_principal_z - object);
     d = object > 0 ? Normalize(o - ep) : Normalize(ep - o);
   }
+  float w = Weight(film, -to_pupil.z, dz, 1 / area);
+  if (settings_.aperture_mask) w *= settings_.aperture_mask->Transmittance(u.x, u.y);
   CameraRay cr;
   cr.ray = WorldRay(ep, d);
-  cr.weight = SampledSpectrum(Weight(film, -to_pupil.z, dz, 1 / area));
+  cr.weight = SampledSpectrum(w);
   return cr;
 }
 

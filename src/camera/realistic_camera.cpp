@@ -36,7 +36,7 @@ RealisticCamera::RealisticCamera(const Transform& to_world, int width, int heigh
                                  const LensCameraSettings& settings)
     : LensCamera(to_world, width, height, settings), fast_(MakeFastTracer(tracer, settings.vignetting)),
       bounds_(tracer, FilmRadius(), BoundsOptions(tracer, settings.vignetting)), film_z_(tracer.FilmZ()),
-      dispersive_(IsDispersive(tracer.lens())) {
+      stop_radius_(float(tracer.StopSemiDiameter())), dispersive_(IsDispersive(tracer.lens())) {
   ParaxialData p = ComputeParaxial(tracer.lens(), kLambdad, tracer.StopSemiDiameter());
   SetOriginZ(tracer.VertexZ(0) + p.entrance_pupil_position);
 }
@@ -64,11 +64,10 @@ CameraRay RealisticCamera::Finish(const FloatRay& r, float weight) const {
 }
 
 std::optional<CameraRay> RealisticCamera::GenerateRay(const CameraSample& s, SampledWavelengths& lambda) const {
-  FloatRay ray;
-  float weight;
-  if (!StartRay(s, lambda, ray, weight)) return std::nullopt;
-  if (!fast_.TraceRay(ray, true, settings_.transmission)) return std::nullopt;
-  return Finish(ray, weight);
+  std::optional<CameraRay> out;
+  CameraRayCount count;
+  GenerateRays(std::span(&s, 1), std::span(&lambda, 1), std::span(&out, 1), count);
+  return out;
 }
 
 void RealisticCamera::GenerateRays(std::span<const CameraSample> samples, std::span<SampledWavelengths> lambdas,
@@ -91,10 +90,14 @@ void RealisticCamera::GenerateRays(std::span<const CameraSample> samples, std::s
   }
   fast_.TraceFromFilm(batch, settings_.transmission);
   count.traced += batch.Size();
+  const ApertureMask* mask = settings_.aperture_mask.get();
+  const float inv_stop = 1 / stop_radius_;
   for (size_t j = 0; j < batch.Size(); ++j) {
     if (!batch.alive[j]) continue;
     ++count.passed;
-    out[index[j]] = Finish(batch.Get(j), weights[j]);
+    float w = weights[j];
+    if (mask) w *= mask->Transmittance(batch.stop_x[j] * inv_stop, batch.stop_y[j] * inv_stop);
+    out[index[j]] = Finish(batch.Get(j), w);
   }
 }
 

@@ -29,6 +29,7 @@ class RealisticCamera final : public LensCamera {
   BatchLensTracer fast_;
   PupilBounds bounds_;
   double film_z_;
+  float stop_radius_;  // for the aperture mask
   bool dispersive_;
 };
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "camera/lens_camera_setup.h"
+#include "io/image_io.h"
 #include "io/loader_context.h"
 #include "optics/focusing.h"
 #include "optics/lens_file.h"
@@ -98,6 +99,14 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const Transform& to
   s.vignetting = modes.at(p.Choice("vignetting", "full", {"full", "cos4", "aperture", "none"}));
   s.transmission = p.Bool("transmission", true);
   s.far_clip = far_clip;
+  if (p.Has("aperture_mask")) {
+    std::string path = ResolvePath(p.LocOf("aperture_mask"), p.String("aperture_mask"));
+    try {
+      s.aperture_mask = std::make_shared<ApertureMask>(ReadImageRgb(path, /*raw=*/true));
+    } catch (const InputError& e) {
+      throw ErrorAt(p.LocOf("aperture_mask"), "{}", e.what());
+    }
+  }
   try {
     return MakeLensCamera(to_world, width, height, spec);
   } catch (const InputError& e) {

@@ -234,22 +234,17 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
       if (refract) StepAll<false, false, true>(st, transmission, rays);
       else StepAll<false, false, false>(st, transmission, rays);
     }
-    // A bladed stop: the circle was tested above, the blades here.
-    if (sf.is_stop && bladed_)
-      for (size_t j = 0; j < count; ++j)
-        if (rays.alive[j] && !shape_.InsideStop(rays.ox[j], rays.oy[j])) rays.alive[j] = 0;
+    if (sf.is_stop) {
+      rays.stop_x.assign(rays.ox.begin(), rays.ox.end());
+      rays.stop_y.assign(rays.oy.begin(), rays.oy.end());
+      // A bladed stop: the circle was tested above, the blades here.
+      if (bladed_)
+        for (size_t j = 0; j < count; ++j)
+          if (rays.alive[j] && !shape_.InsideStop(rays.ox[j], rays.oy[j])) rays.alive[j] = 0;
+    }
   }
   if (transmission)
     for (size_t j = 0; j < count; ++j) rays.transmittance[j] *= std::exp(-rays.depth[j]);
-}
-
-bool BatchLensTracer::TraceRay(FloatRay& ray, bool from_film, bool transmission) const {
-  thread_local RayBatch one;
-  one.Resize(0);
-  one.Push(ray);
-  Trace(one, from_film, transmission);
-  ray = one.Get(0);
-  return one.alive[0] != 0;
 }
 
 }  // namespace objektiv

@@ -22,6 +22,8 @@ struct RayBatch {
   std::vector<float> ox, oy, oz, dx, dy, dz, lambda;
   std::vector<float> transmittance;  // Fresnel and internal transmittance, multiplied along
   std::vector<uint8_t> alive;
+  // Where each ray crossed the stop's plane (lens x, y in mm), set by the tracer.
+  std::vector<float> stop_x, stop_y;
   // Scratch for the tracer: per medium and ray, the index and absorption coefficient at the
   // ray's wavelength; per ray, the optical depth crossed.
   std::vector<float> media_index, media_alpha, depth;
@@ -39,8 +41,6 @@ class BatchLensTracer {
   // the Fresnel losses and glass absorption are multiplied into `transmittance`.
   void TraceFromFilm(RayBatch& rays, bool transmission = true) const;
   void TraceFromObject(RayBatch& rays, bool transmission = true) const;
-  // One ray, in place; false if it is blocked (the ray is then left where it stopped).
-  bool TraceRay(FloatRay& ray, bool from_film, bool transmission = true) const;
   // Without the rims: only the stop clips (to show a lens without optical vignetting).
   void IgnoreRims();
   float FilmZ() const { return film_z_; }
