@@ -12,8 +12,8 @@ render() { "$bin" render "$@" --quiet; }
 
 render scenes/bokeh/bokeh-lens.xml -D spp=1024 -o "$tmp/bokeh-f2.8.exr"
 render scenes/bokeh/bokeh-lens.xml -D spp=1024 -D fnumber=2.03 -o "$tmp/bokeh-open.exr"
-oiiotool "$tmp/bokeh-f2.8.png" --resize 600x400 -o "$out/lens-bokeh.png"
-oiiotool "$tmp/bokeh-open.png" --resize 600x400 -o "$out/lens-bokeh-wide-open.png"
+cp "$tmp/bokeh-f2.8.png" "$out/lens-bokeh.png"
+cp "$tmp/bokeh-open.png" "$out/lens-bokeh-wide-open.png"
 
 render scenes/lens/distortion-chart.xml -D spp=64 -o "$tmp/dist-wide.exr"
 render scenes/lens/distortion-chart.xml -D spp=64 -D lens=telephoto.250mm -D distance=11.4 -o "$tmp/dist-tele.exr"

@@ -9,10 +9,10 @@ namespace objektiv {
 
 namespace {
 
-// Whether any glass's index changes across the visible range.
+// Whether any glass's index changes with the wavelength.
 bool IsDispersive(const LensPrescription& lens) {
   for (const LensSurface& s : lens.surfaces)
-    if (s.medium && std::abs(s.medium->Index(400) - s.medium->Index(700)) > 1e-7) return true;
+    if (s.medium && s.medium->IsDispersive()) return true;
   return false;
 }
 
