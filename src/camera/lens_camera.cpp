@@ -20,6 +20,14 @@ void LensCamera::SetOriginZ(double z) {
   // Camera-space origin at lens z: (x, y, z) -> (x, y, z_origin - z) mm.
   Vec3d o = to_world_.Point(Vec3d(0, 0, z * mm_to_units_));
   offset_ = Vec3f(float(o.x), float(o.y), float(o.z));
+  // A rotation times a uniform scale (the usual lookat) stretches every direction alike: the
+  // world direction's length is then known without a square root.
+  double s2[3], dots = 0;
+  for (int c = 0; c < 3; ++c) s2[c] = m[0][c] * m[0][c] + m[1][c] * m[1][c] + m[2][c] * m[2][c];
+  for (int a = 0; a < 3; ++a)
+    for (int b = a + 1; b < 3; ++b) dots += std::abs(m[0][a] * m[0][b] + m[1][a] * m[1][b] + m[2][a] * m[2][b]);
+  bool uniform = std::abs(s2[1] - s2[0]) < 1e-9 * s2[0] && std::abs(s2[2] - s2[0]) < 1e-9 * s2[0] && dots < 1e-9 * s2[0];
+  dir_scale_ = uniform ? float(std::sqrt(s2[0])) : 0.f;
 }
 
 double LensCamera::FilmRadius() const {
@@ -51,7 +59,7 @@ Ray LensCamera::WorldRay(Vec3d o, Vec3d d) const {
   Ray r;
   r.o = apply(point_, float(o.x), float(o.y), float(-o.z)) + offset_;
   Vec3f dw = apply(dir_, float(d.x), float(d.y), float(-d.z));
-  float scale = Length(dw);
+  float scale = dir_scale_ > 0 ? dir_scale_ : Length(dw);
   r.d = dw / scale;
   r.tmax = settings_.far_clip * scale;
   return r;

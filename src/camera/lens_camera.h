@@ -62,6 +62,7 @@ class LensCamera : public Camera {
   // d = dir_ (dx, dy, -dz) (the to_world matrix, scaled by mm_to_units_ for points).
   std::array<float, 9> point_{}, dir_{};
   Vec3f offset_;
+  float dir_scale_ = 0;  // |dir_ d| for every unit d, when the same for all (else 0)
   double mm_to_units_;
   float weight_scale_;  // (4 / pi) exposure_scale
 };

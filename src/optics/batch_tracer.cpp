@@ -1,5 +1,6 @@
 #include "optics/batch_tracer.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace objektiv {
@@ -8,18 +9,6 @@ void RayBatch::Resize(size_t n) {
   for (auto* v : {&ox, &oy, &oz, &dx, &dy, &dz, &lambda}) v->resize(n);
   transmittance.assign(n, 1.f);
   alive.assign(n, 1);
-}
-
-void RayBatch::Push(const FloatRay& r) {
-  ox.push_back(r.ox), oy.push_back(r.oy), oz.push_back(r.oz);
-  dx.push_back(r.dx), dy.push_back(r.dy), dz.push_back(r.dz);
-  lambda.push_back(r.lambda);
-  transmittance.push_back(r.transmittance);
-  alive.push_back(1);
-}
-
-FloatRay RayBatch::Get(size_t i) const {
-  return {ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], lambda[i], transmittance[i]};
 }
 
 namespace {
@@ -54,11 +43,14 @@ BatchLensTracer::BatchLensTracer(const LensTracer& tracer)
         alpha[l] = float(-std::log(std::max(s.medium->InternalTransmittance(kTableMin + l, 1.0), 1e-30)));
       }
       f.medium_after = int(index_tables_.size()) - 1;  // tables[0] is air
+      absorbing_ |= *std::max_element(alpha.begin(), alpha.end()) > 0;
       index_tables_.push_back(std::move(n));
       absorption_tables_.push_back(std::move(alpha));
     }
     surfaces_.push_back(f);
   }
+  for (const std::vector<float>& tab : index_tables_)
+    constant_index_.push_back(std::all_of(tab.begin(), tab.end(), [&](float v) { return v == tab[0]; }));
 }
 
 void BatchLensTracer::IgnoreRims() {
@@ -197,17 +189,23 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
   // Each medium's index and absorption at each ray's wavelength, once for all surfaces (the
   // kernel then reads them as contiguous arrays, which vectorises better than table lookups).
   const size_t media = index_tables_.size();
+  const bool absorbing = transmission && absorbing_;
   rays.media_index.resize(media * count);
-  rays.media_alpha.resize(media * count);
+  rays.media_alpha.resize((absorbing ? media : 1) * count);
   rays.depth.assign(count, 0.f);
-  for (size_t j = 0; j < count; ++j) {
-    float x = std::min(std::max(rays.lambda[j] - kTableMin, 0.f), kTableMax - kTableMin - 1e-3f);
-    int i0 = int(x);
-    float f = x - float(i0);
-    for (size_t m = 0; m < media; ++m) {
-      const std::vector<float>&n = index_tables_[m], &a = absorption_tables_[m];
-      rays.media_index[m * count + j] = n[i0] + f * (n[i0 + 1] - n[i0]);
-      rays.media_alpha[m * count + j] = a[i0] + f * (a[i0 + 1] - a[i0]);
+  std::fill(rays.media_alpha.begin(), rays.media_alpha.begin() + count, 0.f);  // air
+  for (size_t m = 0; m < media; ++m) {
+    const std::vector<float>&tab = index_tables_[m], &alpha = absorption_tables_[m];
+    float* out_n = &rays.media_index[m * count];
+    float* out_a = absorbing ? &rays.media_alpha[m * count] : nullptr;
+    if (constant_index_[m]) std::fill(out_n, out_n + count, tab[0]);
+    for (size_t j = 0; j < count; ++j) {
+      if (constant_index_[m] && !out_a) break;
+      float x = std::min(std::max(rays.lambda[j] - kTableMin, 0.f), kTableMax - kTableMin - 1e-3f);
+      int i0 = int(x);
+      float f = x - float(i0);
+      if (!constant_index_[m]) out_n[j] = tab[i0] + f * (tab[i0 + 1] - tab[i0]);
+      if (out_a) out_a[j] = alpha[i0] + f * (alpha[i0 + 1] - alpha[i0]);
     }
   }
   const int n = int(surfaces_.size());
@@ -221,7 +219,7 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
     // the first surface).
     const bool absorb = k > 0;
     Step st{sf.z, sf.c, sf.k1, sf.semi2, sf.a2, {}, &rays.media_index[(m_in + 1) * count],
-            &rays.media_index[(m_out + 1) * count], &rays.media_alpha[(absorb ? m_in + 1 : 0) * count]};
+            &rays.media_index[(m_out + 1) * count], &rays.media_alpha[(absorb && absorbing ? m_in + 1 : 0) * count]};
     std::copy(sf.a, sf.a + 7, st.a);
     const bool refract = !sf.is_stop && m_in != m_out;
     if (sf.plane) {
@@ -243,7 +241,7 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
           if (rays.alive[j] && !shape_.InsideStop(rays.ox[j], rays.oy[j])) rays.alive[j] = 0;
     }
   }
-  if (transmission)
+  if (absorbing)
     for (size_t j = 0; j < count; ++j) rays.transmittance[j] *= std::exp(-rays.depth[j]);
 }
 

@@ -29,8 +29,14 @@ struct RayBatch {
   std::vector<float> media_index, media_alpha, depth;
   void Resize(size_t n);
   size_t Size() const { return ox.size(); }
-  void Push(const FloatRay& r);  // appended alive
-  FloatRay Get(size_t i) const;
+  void Push(const FloatRay& r) {  // appended alive
+    ox.push_back(r.ox), oy.push_back(r.oy), oz.push_back(r.oz);
+    dx.push_back(r.dx), dy.push_back(r.dy), dz.push_back(r.dz);
+    lambda.push_back(r.lambda);
+    transmittance.push_back(r.transmittance);
+    alive.push_back(1);
+  }
+  FloatRay Get(size_t i) const { return {ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], lambda[i], transmittance[i]}; }
 };
 
 class BatchLensTracer {
@@ -57,6 +63,8 @@ class BatchLensTracer {
   std::vector<Surface> surfaces_;
   // Per medium (air first), 360..830 nm at 1 nm: index, absorption coefficient per mm.
   std::vector<std::vector<float>> index_tables_, absorption_tables_;
+  std::vector<uint8_t> constant_index_;  // per medium: the same index at every wavelength
+  bool absorbing_ = false;               // any glass absorbs somewhere in the range
   float film_z_;
   LensTracer shape_;  // a copy, for bladed stops (the circle is tested inline)
   bool bladed_;
