@@ -49,7 +49,8 @@ Vec2d SensorSize(const Properties& p, int width, int height) {
     bool found = false;
     std::string known;
     for (const SensorFormat& f : kSensorFormats) {
-      known += (known.empty() ? "" : ", ") + std::string(f.name);
+      if (!known.empty()) known += ", ";
+      known += f.name;
       if (key == f.name) w = f.width, h = f.height, found = true;
     }
     if (!found) throw ErrorAt(p.LocOf("sensor"), "unknown sensor '{}' (known: {})", name, known);

@@ -25,16 +25,20 @@ SampledSpectrum BSDF::f(const Vec3f& wo_world, const Vec3f& wi_world, TransportM
 
 std::optional<BSDFSample> BSDF::Sample(const Vec3f& wo_world, float uc, Vec2f u, TransportMode mode) const {
   Vec3f wo = frame_.ToLocal(wo_world);
-  if (wo.z == 0) return std::nullopt;
   bool flipped = two_sided_ && wo.z < 0 && IsOpaque();
   if (flipped) wo.z = -wo.z;
+  // One returned name on every path, so that the sample is built in the caller's slot (a
+  // copy of it stalled on store forwarding).
   std::optional<BSDFSample> s =
-      std::visit(Overloaded{[&](const DielectricBxDF& b) { return b.Sample(wo, uc, u, mode); },
-                            [&](const auto& b) { return b.Sample(wo, uc, u); }},
-                 bxdf_);
-  if (!s || s->pdf == 0 || s->f.IsBlack() || s->wi.z == 0) return std::nullopt;
-  if (flipped) s->wi.z = -s->wi.z;
-  s->wi = frame_.FromLocal(s->wi);
+      wo.z == 0 ? std::nullopt
+                : std::visit(Overloaded{[&](const DielectricBxDF& b) { return b.Sample(wo, uc, u, mode); },
+                                        [&](const auto& b) { return b.Sample(wo, uc, u); }},
+                             bxdf_);
+  if (s && (s->pdf == 0 || s->f.IsBlack() || s->wi.z == 0)) s.reset();
+  if (s) {
+    if (flipped) s->wi.z = -s->wi.z;
+    s->wi = frame_.FromLocal(s->wi);
+  }
   return s;
 }
 

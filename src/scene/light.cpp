@@ -82,20 +82,24 @@ SampledSpectrum AreaLight::L(const Vec3f& n, Vec2f uv, const Vec3f& w, const Sam
 }
 
 std::optional<LightSample> AreaLight::SampleLi(const Vec3f& ref, Vec2f u, const SampledWavelengths& lambda) const {
+  // Filled in place and returned by one name on every path (so the optional is built in the
+  // caller's slot): assembling it elsewhere and copying it over stalled on store forwarding,
+  // a measurable part of the render.
+  std::optional<LightSample> out;
   std::optional<ShapeSample> ss = shape_->SampleFrom(ref, u);
-  if (!ss) return std::nullopt;
-  Vec3f d = ss->p - ref;
+  Vec3f d = ss ? ss->p - ref : Vec3f(0.f);
   float dist2 = LengthSquared(d);
-  if (dist2 == 0) return std::nullopt;
-  LightSample s;
-  s.wi = d / std::sqrt(dist2);
-  s.L = L(ss->n, ss->uv, -s.wi, lambda);
-  if (s.L.IsBlack()) return std::nullopt;
-  s.pdf = ss->pdf;
-  s.p = ss->p;
-  s.p_error = ss->p_error;
-  s.n = ss->n;
-  return s;
+  if (ss && dist2 > 0) {
+    LightSample& s = out.emplace();
+    s.wi = d / std::sqrt(dist2);
+    s.L = L(ss->n, ss->uv, -s.wi, lambda);
+    s.pdf = ss->pdf;
+    s.p = ss->p;
+    s.p_error = ss->p_error;
+    s.n = ss->n;
+    if (s.L.IsBlack()) out.reset();
+  }
+  return out;
 }
 
 float AreaLight::PdfLi(const Vec3f& ref, const SurfaceInteraction& hit) const { return shape_->PdfFrom(ref, hit); }
