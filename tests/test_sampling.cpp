@@ -199,3 +199,25 @@ TEST(Distribution1D, SmallAndLargeDistributionsPickTheSameCells) {
 }
 }  // namespace
 }  // namespace objektiv
+
+namespace objektiv {
+namespace {
+
+TEST(Sampling, ConcentricDiskMatchesTheTrigonometricMapping) {
+  // The polynomial cos/sin in the concentric mapping against the library's, on a grid.
+  double worst = 0;
+  for (int i = 0; i <= 200; ++i)
+    for (int j = 0; j <= 200; ++j) {
+      Vec2f u(i / 200.f, j / 200.f);
+      double ox = 2.0 * u.x - 1, oy = 2.0 * u.y - 1;
+      if (ox == 0 && oy == 0) continue;
+      double r = std::abs(ox) > std::abs(oy) ? ox : oy;
+      double theta = std::abs(ox) > std::abs(oy) ? M_PI / 4 * (oy / ox) : M_PI / 2 - M_PI / 4 * (ox / oy);
+      Vec2f d = SampleUniformDiskConcentric(u);
+      worst = std::max({worst, std::abs(d.x - r * std::cos(theta)), std::abs(d.y - r * std::sin(theta))});
+    }
+  EXPECT_LT(worst, 3e-7);
+}
+
+}  // namespace
+}  // namespace objektiv

@@ -8,18 +8,30 @@
 namespace objektiv {
 
 // Shirley-Chiu concentric map: preserves area fractions and adjacency.
+namespace {
+// cos and sin of t for |t| <= pi/4 by their Taylor series to t^10 and t^9 (truncation error
+// below 2e-9, under float rounding): several times cheaper than the library's sincosf, which
+// must reduce any argument.
+inline Vec2f CosSinQuarter(float t) {
+  float t2 = t * t;
+  float c = 1 + t2 * (-1.f / 2 + t2 * (1.f / 24 + t2 * (-1.f / 720 + t2 * (1.f / 40320 - t2 * (1.f / 3628800)))));
+  float s = t * (1 + t2 * (-1.f / 6 + t2 * (1.f / 120 + t2 * (-1.f / 5040 + t2 * (1.f / 362880)))));
+  return {c, s};
+}
+}  // namespace
+
 Vec2f SampleUniformDiskConcentric(Vec2f u) {
   float ox = 2 * u.x - 1, oy = 2 * u.y - 1;
   if (ox == 0 && oy == 0) return {0, 0};
-  float r, theta;
+  // Shirley-Chiu: the angle is pi/4 times the ratio of the smaller coordinate to the larger,
+  // measured from the larger one's axis (|angle| <= pi/4 there).
   if (std::abs(ox) > std::abs(oy)) {
-    r = ox;
-    theta = (kPi / 4) * (oy / ox);
-  } else {
-    r = oy;
-    theta = kPi / 2 - (kPi / 4) * (ox / oy);
+    Vec2f cs = CosSinQuarter((kPi / 4) * (oy / ox));
+    return {ox * cs.x, ox * cs.y};
   }
-  return {r * std::cos(theta), r * std::sin(theta)};
+  // theta = pi/2 - t: cos theta = sin t, sin theta = cos t.
+  Vec2f cs = CosSinQuarter((kPi / 4) * (ox / oy));
+  return {oy * cs.y, oy * cs.x};
 }
 
 float RegularPolygonArea(int blades) { return 0.5f * blades * std::sin(2 * kPi / blades); }
