@@ -4,7 +4,7 @@
 
 #include "base/sampling.h"
 #include "optics/dispersion.h"
-#include "optics/focusing.h"
+#include "optics/real_focus.h"
 #include "optics/paraxial.h"
 
 namespace objektiv {
@@ -31,13 +31,7 @@ ParaxialLensModel MakeParaxialModel(const LensTracer& tracer, double distance_fr
     return m;
   }
   LensTracer t = tracer;
-  if (infinite) {
-    t.SetBackFocus(p.bfl);
-  } else if (auto f = FocusAtDistance(lens, distance_from_film)) {
-    t.SetBackFocus(f->back_focus);
-  } else {
-    t.SetBackFocus(p.back_principal_plane + 2 * p.efl);  // closest focus
-  }
+  t.SetBackFocus(ParaxialFocus(lens, distance_from_film).back_focus);
   m.front_principal_z = t.VertexZ(0) + p.front_principal_plane;
   m.back_principal_z = t.VertexZ(last) + p.back_principal_plane;
   m.entrance_pupil_z = t.VertexZ(0) + p.entrance_pupil_position;

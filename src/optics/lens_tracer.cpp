@@ -52,6 +52,17 @@ bool LensTracer::InsideStop(double x, double y) const {
   return (px - xc) * (px - xc) + py * py <= radius * radius;
 }
 
+std::optional<Vec3d> LensTracer::StopCrossingFromFilm(const LensRay& ray, double lambda_nm) const {
+  const int stop = lens_.StopIndex();
+  if (stop < 0) return std::nullopt;
+  // The path holds the point on every surface the ray reached, the blocking one included.
+  std::vector<Vec3d> path;
+  TraceFromFilm(ray, lambda_nm, &path);
+  const size_t k = lens_.surfaces.size() - 1 - size_t(stop);
+  if (path.size() <= k) return std::nullopt;
+  return path[k];
+}
+
 double FresnelReflectance(double n1, double n2, double cos_i) {
   cos_i = std::clamp(cos_i, 0.0, 1.0);
   double eta = n1 / n2, sin2_t = eta * eta * (1 - cos_i * cos_i);

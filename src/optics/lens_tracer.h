@@ -48,6 +48,9 @@ class LensTracer {
   // From the film through every surface toward the object.
   TraceResult TraceFromFilm(const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path = nullptr,
                             std::vector<SurfaceEvent>* events = nullptr) const;
+  // Where a ray from the film meets the stop's plane, whether or not the stop lets it through;
+  // nothing if it does not get that far (or the lens has no stop).
+  std::optional<Vec3d> StopCrossingFromFilm(const LensRay& ray, double lambda_nm) const;
 
   // The stop's semi-diameter may be narrowed (never widened) to set an f-number.
   void SetStopSemiDiameter(double r);

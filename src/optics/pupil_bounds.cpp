@@ -79,15 +79,10 @@ class RegionProbe {
   // The aim point whose ray crosses the stop's centre (the real chief ray), by the secant
   // method from the axis; nothing if the ray does not reach the stop.
   std::optional<Vec2d> ChiefAim() const {
-    const int stop = exact_.lens().StopIndex(), n = int(exact_.lens().surfaces.size());
-    if (stop < 0) return std::nullopt;
     auto stop_x = [&](double a) -> std::optional<double> {
-      std::vector<Vec3d> path;
       Vec3d o(r_, 0, film_z_);
-      exact_.TraceFromFilm({o, Normalize(Vec3d(a, 0, plane_z_) - o)}, lambda_, &path);
-      size_t k = size_t(n - 1 - stop);
-      if (path.size() <= k) return std::nullopt;
-      return path[k].x;
+      std::optional<Vec3d> hit = exact_.StopCrossingFromFilm({o, Normalize(Vec3d(a, 0, plane_z_) - o)}, lambda_);
+      return hit ? std::optional<double>(hit->x) : std::nullopt;
     };
     double a0 = 0, a1 = 1e-3 * (1 + std::abs(r_));
     std::optional<double> f0 = stop_x(a0), f1 = stop_x(a1);
@@ -205,25 +200,27 @@ std::vector<Vec2d> TraceEdge(const RegionProbe& probe, Vec2d c, double limit, do
   return pts;
 }
 
-}  // namespace
-
-PupilBounds::Region PupilBounds::MakeRegion(std::initializer_list<const std::vector<Vec2d>*> edges, double size) {
-  // Grow the hull by the edge tolerance and the bisection's step, so that no light is left
-  // outside: each edge point becomes a small square.
+// The convex hull of edge points grown by `grow` (each point becomes a small square), so that
+// the edge tolerance and the bisection's step leave no light outside.
+std::vector<Vec2d> GrownHull(std::initializer_list<const std::vector<Vec2d>*> edges, double grow) {
   std::vector<Vec2d> corners;
-  double grow = 2e-3 * size;
   for (const std::vector<Vec2d>* edge : edges)
     for (const Vec2d& q : *edge)
       for (double dx : {-grow, grow})
         for (double dy : {-grow, grow}) corners.push_back({q.x + dx, q.y + dy});
+  return ConvexHull(corners);
+}
+
+double HullArea(const std::vector<Vec2d>& hull) { return hull.size() >= 3 ? PolygonArea(hull) : 0; }
+
+}  // namespace
+
+PupilBounds::Region PupilBounds::MakeRegion(std::vector<Vec2d> hull) {
   Region region;
   ConvexPolygon& poly = region.poly;
-  poly.vertices = ConvexHull(corners);
-  poly.area = poly.vertices.size() >= 3 ? PolygonArea(poly.vertices) : 0;
-  if (!(poly.area > 0)) {
-    poly = {};
-    return region;
-  }
+  poly.area = HullArea(hull);
+  if (!(poly.area > 0)) return region;
+  poly.vertices = std::move(hull);
   // Fan triangles from vertex 0, chosen in proportion to their area.
   std::vector<double>& cdf = region.cdf;
   double acc = 0;
@@ -258,13 +255,16 @@ PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, const Pup
   const double film_z = tracer.FilmZ();
   BatchLensTracer fast(tracer);
   if (!options.rims) fast.IgnoreRims();
-  // The edge of the passing region for one film radius, all wavelengths together.
+  // The edge of the passing region for one film radius, all wavelengths together, and the
+  // area its grown hull bounds.
   struct Edge {
     std::vector<Vec2d> points;
-    double size = 0;  // largest distance of an edge point from the probe's centre
+    double grow = 0;  // 0.2% of the region's size (its largest distance from the probe's centre)
+    double area = 0;
   };
   auto edge_at = [&](double r) {
     Edge edge;
+    double size = 0;
     for (double lambda : lambdas) {
       RegionProbe probe(fast, tracer, r, film_z, rear_z_, lambda);
       std::optional<Vec2d> c = probe.Inside(half);
@@ -272,9 +272,11 @@ PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, const Pup
       // Tolerance: a thousandth of the region's size (its first estimate: the exit pupil).
       double tol = 1e-3 * std::max(p.exit_pupil_diameter, 1e-9);
       std::vector<Vec2d> e = TraceEdge(probe, *c, 2 * half, tol);
-      for (const Vec2d& q : e) edge.size = std::max(edge.size, std::hypot(q.x - c->x, q.y - c->y));
+      for (const Vec2d& q : e) size = std::max(size, std::hypot(q.x - c->x, q.y - c->y));
       edge.points.insert(edge.points.end(), e.begin(), e.end());
     }
+    edge.grow = 2e-3 * size;
+    edge.area = HullArea(GrownHull({&edge.points}, edge.grow));
     return edge;
   };
   // Each bin is one annulus, or where the region changes fast across it (at the rim of a
@@ -293,19 +295,16 @@ PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, const Pup
     BinRegions& out = per_bin[bin];
     std::function<void(double, double, const Edge&, const Edge&, int)> build =
         [&](double r0, double r1, const Edge& e0, const Edge& e1, int depth) {
-          Region both = MakeRegion({&e0.points, &e1.points}, std::max(e0.size, e1.size));
-          if (depth < max_depth) {
-            double a0 = MakeRegion({&e0.points}, e0.size).poly.area, a1 = MakeRegion({&e1.points}, e1.size).poly.area;
-            if (both.poly.area > 1.04 * std::min(a0, a1)) {
-              double rm = 0.5 * (r0 + r1);
-              Edge em = edge_at(rm);
-              build(r0, rm, e0, em, depth + 1);
-              build(rm, r1, em, e1, depth + 1);
-              return;
-            }
+          std::vector<Vec2d> both = GrownHull({&e0.points, &e1.points}, std::max(e0.grow, e1.grow));
+          if (depth < max_depth && HullArea(both) > 1.04 * std::min(e0.area, e1.area)) {
+            double rm = 0.5 * (r0 + r1);
+            Edge em = edge_at(rm);
+            build(r0, rm, e0, em, depth + 1);
+            build(rm, r1, em, e1, depth + 1);
+            return;
           }
           out.leaves.insert(out.leaves.end(), size_t(1) << (max_depth - depth), uint32_t(out.regions.size()));
-          out.regions.push_back(std::move(both));
+          out.regions.push_back(MakeRegion(std::move(both)));
         };
     build(film_radius * bin / bins, film_radius * (bin + 1) / bins, ends[bin], ends[bin + 1], 0);
   });

@@ -50,7 +50,7 @@ class PupilBounds {
     std::vector<double> cdf;     // over the fan triangles from vertex 0
     std::vector<uint16_t> guide;  // where to start looking in the cdf for u in [g/G, (g+1)/G)
   };
-  static Region MakeRegion(std::initializer_list<const std::vector<Vec2d>*> edges, double size);
+  static Region MakeRegion(std::vector<Vec2d> hull);  // the polygon and its sampling tables
   const Region* RegionAt(double r) const;
 
   // Bin b (an annulus of film radii) has 2^bin_levels_[b] equal sub-annuli; sub-annulus k's

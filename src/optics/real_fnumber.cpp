@@ -30,16 +30,12 @@ double RealFNumber(const LensTracer& tracer, double lambda_nm) {
 }
 
 std::optional<double> StopSemiDiameterForFNumber(const LensTracer& tracer, double fnumber, double lambda_nm) {
+  if (!(fnumber > 0.5)) return std::nullopt;
   LensTracer t = AtInfinityFocus(tracer, lambda_nm);
-  const int stop = t.lens().StopIndex(), n = int(t.lens().surfaces.size());
-  if (stop < 0 || !(fnumber > 0.5)) return std::nullopt;
-  // Where the cone's edge ray crosses the stop (the path holds the points the ray reached,
-  // the stop's included even if the stop then blocks it).
-  std::vector<Vec3d> path;
-  t.TraceFromFilm(ConeRay(t, 1 / (2 * fnumber)), lambda_nm, &path);
-  size_t k = size_t(n - 1 - stop);
-  if (path.size() <= k) return std::nullopt;
-  double semi = std::hypot(path[k].x, path[k].y);
+  // Where the cone's edge ray crosses the stop: the stop's radius for that cone.
+  std::optional<Vec3d> hit = t.StopCrossingFromFilm(ConeRay(t, 1 / (2 * fnumber)), lambda_nm);
+  if (!hit) return std::nullopt;
+  double semi = std::hypot(hit->x, hit->y);
   if (semi > t.StopSemiDiameter() * (1 + 1e-9)) return std::nullopt;
   return semi;
 }

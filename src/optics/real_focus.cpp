@@ -78,12 +78,10 @@ double ClosestFocusDistance(const LensPrescription& lens, double lambda_nm) {
   return t + lens.TotalTrack() + object - p.front_principal_plane;
 }
 
-LensFocus FocusLens(const LensTracer& tracer, double distance_from_film, double lambda_nm) {
-  const LensPrescription& lens = tracer.lens();
-  ParaxialData p = ComputeParaxial(lens, lambda_nm, tracer.StopSemiDiameter());
+LensFocus ParaxialFocus(const LensPrescription& lens, double distance_from_film, double lambda_nm) {
+  ParaxialData p = ComputeParaxial(lens, lambda_nm);
   LensFocus focus;
-  const bool infinite = !(distance_from_film < kInfinity);
-  if (infinite) {
+  if (!(distance_from_film < kInfinity)) {
     focus.back_focus = p.bfl;
     focus.object_distance = INFINITY;
   } else if (auto s = FocusAtDistance(lens, distance_from_film, lambda_nm)) {
@@ -94,6 +92,14 @@ LensFocus FocusLens(const LensTracer& tracer, double distance_from_film, double 
     focus.object_distance = ClosestFocusDistance(lens, lambda_nm);
     focus.clamped = true;
   }
+  return focus;
+}
+
+LensFocus FocusLens(const LensTracer& tracer, double distance_from_film, double lambda_nm) {
+  const LensPrescription& lens = tracer.lens();
+  ParaxialData p = ComputeParaxial(lens, lambda_nm, tracer.StopSemiDiameter());
+  LensFocus focus = ParaxialFocus(lens, distance_from_film, lambda_nm);
+  const bool infinite = std::isinf(focus.object_distance);
   // Real rays: the object stays at its distance from the film while the lens moves, so the
   // object point follows each new back focus; a few rounds converge.
   LensTracer t = tracer;

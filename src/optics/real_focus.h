@@ -20,6 +20,10 @@ struct LensFocus {
 // Never fails: too close gives the closest focus, too few real rays the paraxial focus.
 LensFocus FocusLens(const LensTracer& tracer, double distance_from_film, double lambda_nm = 587.5618);
 
+// The paraxial part of the above: the back focus that images the object sharp by first-order
+// optics (the closest focus if it is too close).
+LensFocus ParaxialFocus(const LensPrescription& lens, double distance_from_film, double lambda_nm = 587.5618);
+
 // The film-to-object distance of the closest focus by unit focusing (paraxial, mm).
 double ClosestFocusDistance(const LensPrescription& lens, double lambda_nm = 587.5618);
 
