@@ -88,9 +88,10 @@ void RealisticCamera::GenerateRays(std::span<const CameraSample> samples, std::s
     weights.push_back(w);
     index.push_back(uint32_t(i));
   }
+  const ApertureMask* mask = settings_.aperture_mask.get();
+  batch.record_stop = mask != nullptr;
   fast_.TraceFromFilm(batch, settings_.transmission);
   count.traced += batch.Size();
-  const ApertureMask* mask = settings_.aperture_mask.get();
   const float inv_stop = 1 / stop_radius_;
   for (size_t j = 0; j < batch.Size(); ++j) {
     if (!batch.alive[j]) continue;

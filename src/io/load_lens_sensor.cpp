@@ -18,9 +18,18 @@ struct SensorFormat {
 };
 // Named sensor formats (the usual nominal sizes).
 constexpr SensorFormat kSensorFormats[] = {
-    {"full_frame", 36, 24},  {"aps-h", 28.7, 19.0},    {"aps-c", 23.6, 15.7},
-    {"super35", 24.89, 18.66}, {"micro_four_thirds", 17.3, 13.0}, {"medium_format", 43.8, 32.9},
+    {"full_frame", 36, 24}, {"35mm", 36, 24},           {"aps-h", 28.7, 19.0},
+    {"aps-c", 23.6, 15.7},  {"super35", 24.89, 18.66},  {"micro_four_thirds", 17.3, 13.0},
+    {"medium_format", 43.8, 32.9},
 };
+
+// A format name compared without case, spaces, hyphens or underscores ("Super 35" = "super35").
+std::string FormatKey(const std::string& name) {
+  std::string key;
+  for (char c : name)
+    if (c != ' ' && c != '-' && c != '_') key += char(std::tolower(static_cast<unsigned char>(c)));
+  return key;
+}
 
 // A shipped lens by name ("dgauss.50mm"), or else a lens file relative to the scene.
 LensPrescription LoadSceneLens(const Properties& p) {
@@ -40,18 +49,13 @@ Vec2d SensorSize(const Properties& p, int width, int height) {
   if (p.Has("sensor")) {
     if (p.Has("sensor_width") || p.Has("sensor_height"))
       throw ErrorAt(p.LocOf("sensor"), "give either sensor or sensor_width/sensor_height, not both");
-    std::string name = p.String("sensor"), key;
-    for (char c : name) key += (c == ' ' || c == '-') ? '_' : char(std::tolower(c));
-    if (key == "aps_c") key = "aps-c";
-    if (key == "aps_h") key = "aps-h";
-    if (key == "super_35") key = "super35";
-    if (key == "35mm" || key == "fullframe") key = "full_frame";
+    std::string name = p.String("sensor"), key = FormatKey(name);
     bool found = false;
     std::string known;
     for (const SensorFormat& f : kSensorFormats) {
       if (!known.empty()) known += ", ";
       known += f.name;
-      if (key == f.name) w = f.width, h = f.height, found = true;
+      if (key == FormatKey(f.name)) w = f.width, h = f.height, found = true;
     }
     if (!found) throw ErrorAt(p.LocOf("sensor"), "unknown sensor '{}' (known: {})", name, known);
   } else {

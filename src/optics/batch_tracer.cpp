@@ -190,24 +190,25 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
   // kernel then reads them as contiguous arrays, which vectorises better than table lookups).
   const size_t media = index_tables_.size();
   const bool absorbing = transmission && absorbing_;
-  rays.media_index.resize(media * count);
-  rays.media_alpha.resize((absorbing ? media : 1) * count);
-  rays.depth.assign(count, 0.f);
-  std::fill(rays.media_alpha.begin(), rays.media_alpha.begin() + count, 0.f);  // air
-  for (size_t m = 0; m < media; ++m) {
-    const std::vector<float>&tab = index_tables_[m], &alpha = absorption_tables_[m];
-    float* out_n = &rays.media_index[m * count];
-    float* out_a = absorbing ? &rays.media_alpha[m * count] : nullptr;
-    if (constant_index_[m]) std::fill(out_n, out_n + count, tab[0]);
+  // Linear interpolation of a 1 nm table at every ray's wavelength.
+  auto interpolate = [&](const std::vector<float>& tab, float* out) {
     for (size_t j = 0; j < count; ++j) {
-      if (constant_index_[m] && !out_a) break;
       float x = std::min(std::max(rays.lambda[j] - kTableMin, 0.f), kTableMax - kTableMin - 1e-3f);
       int i0 = int(x);
-      float f = x - float(i0);
-      if (!constant_index_[m]) out_n[j] = tab[i0] + f * (tab[i0 + 1] - tab[i0]);
-      if (out_a) out_a[j] = alpha[i0] + f * (alpha[i0 + 1] - alpha[i0]);
+      out[j] = tab[i0] + (x - float(i0)) * (tab[i0 + 1] - tab[i0]);
     }
+  };
+  rays.media_index.resize(media * count);
+  for (size_t m = 0; m < media; ++m) {
+    float* out = &rays.media_index[m * count];
+    if (constant_index_[m]) std::fill(out, out + count, index_tables_[m][0]);
+    else interpolate(index_tables_[m], out);
   }
+  // Absorption coefficients only when some glass absorbs (else one block of zeros, air's).
+  rays.media_alpha.assign((absorbing ? media : 1) * count, 0.f);
+  if (absorbing)
+    for (size_t m = 1; m < media; ++m) interpolate(absorption_tables_[m], &rays.media_alpha[m * count]);
+  rays.depth.assign(count, 0.f);
   const int n = int(surfaces_.size());
   for (int k = 0; k < n; ++k) {
     const int i = from_film ? n - 1 - k : k;
@@ -233,8 +234,10 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
       else StepAll<false, false, false>(st, transmission, rays);
     }
     if (sf.is_stop) {
-      rays.stop_x.assign(rays.ox.begin(), rays.ox.end());
-      rays.stop_y.assign(rays.oy.begin(), rays.oy.end());
+      if (rays.record_stop) {
+        rays.stop_x.assign(rays.ox.begin(), rays.ox.end());
+        rays.stop_y.assign(rays.oy.begin(), rays.oy.end());
+      }
       // A bladed stop: the circle was tested above, the blades here.
       if (bladed_)
         for (size_t j = 0; j < count; ++j)

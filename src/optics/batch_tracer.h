@@ -22,7 +22,9 @@ struct RayBatch {
   std::vector<float> ox, oy, oz, dx, dy, dz, lambda;
   std::vector<float> transmittance;  // Fresnel and internal transmittance, multiplied along
   std::vector<uint8_t> alive;
-  // Where each ray crossed the stop's plane (lens x, y in mm), set by the tracer.
+  // Where each ray crossed the stop's plane (lens x, y in mm), set by the tracer when
+  // `record_stop` is on (an aperture mask needs it).
+  bool record_stop = false;
   std::vector<float> stop_x, stop_y;
   // Scratch for the tracer: per medium and ray, the index and absorption coefficient at the
   // ray's wavelength; per ray, the optical depth crossed.
