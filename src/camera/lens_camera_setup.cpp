@@ -54,11 +54,12 @@ double FocusPointDistance(const LensTracer& tracer, const Transform& to_world, V
   double depth = Dot(point - origin, forward) * metres_per_unit * 1e3;  // mm in front of the entrance pupil
   if (!(depth > 0)) throw InputError("focus_point lies behind the camera");
   ParaxialData p = ComputeParaxial(tracer.lens(), kLambdad, tracer.StopSemiDiameter());
+  // First-order focusing is enough here: the pupil moves by the focusing travel, a few mm on a
+  // distance of metres, and real rays move it by a fraction of that.
   LensTracer t = tracer;
   double distance = depth;
   for (int round = 0; round < 6; ++round) {
-    LensFocus f = FocusLens(t, distance);
-    t.SetBackFocus(f.back_focus);
+    t.SetBackFocus(ParaxialFocus(t.lens(), distance).back_focus);
     double pupil_to_film = t.FilmZ() - (t.VertexZ(0) + p.entrance_pupil_position);
     distance = depth + pupil_to_film;
   }
