@@ -18,7 +18,12 @@ Scene::Scene() {
   if (!device_) throw std::runtime_error("cannot create the Embree device");
   rtcSetDeviceErrorFunction(device_, EmbreeError, nullptr);
   scene_ = rtcNewScene(device_);
-  rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
+  // Low quality at the top makes Embree build two levels: each shape keeps its own BVH (a
+  // mesh's built at high quality, see TriangleMesh::CreateGeometry) under a BVH over the
+  // shapes. Scenes made of a few large pieces trace much faster so (Cornell box: 77 instead of
+  // 98 ns per closest hit, 36 instead of 57 per shadow ray; one flat BVH packs triangles of
+  // different walls into one leaf box), and a scene of one big mesh as fast as before.
+  rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_LOW);
 }
 
 Scene::~Scene() {
