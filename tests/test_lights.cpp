@@ -47,6 +47,41 @@ TEST(ShapeSampling, RectangleMesh) {
   CheckShapeSampling(std::make_unique<TriangleMesh>(TriangleMesh::Rectangle(), t, false), Vec3f(0.f), "rectangle");
 }
 
+// Two-triangle meshes: a sheared parallelogram (sampled as one, here with repeated vertices
+// as OBJ quads have, texture coordinates and the triangles' vertices in different orders)
+// and a kite (not a parallelogram: sampled triangle by triangle). Besides the densities, a
+// sample's uv and normal must be those of the surface point it names.
+TEST(ShapeSampling, TwoTriangleMeshes) {
+  auto check_attributes = [](const TriangleMesh& mesh, const Vec3f& ref) {
+    Scene scene;
+    scene.AddShape(std::make_unique<TriangleMesh>(mesh.data(), Transform(), false), nullptr);
+    scene.Commit();
+    PCG32 g;
+    for (int k = 0; k < 2000; ++k) {
+      ShapeSample s = mesh.SampleArea({g.UniformFloat(), g.UniformFloat()});
+      auto si = scene.Intersect(Ray{ref, s.p - ref});
+      ASSERT_TRUE(si);
+      EXPECT_NEAR(Length(si->p - s.p), 0, 1e-5);
+      EXPECT_NEAR(si->uv.x, s.uv.x, 1e-4);
+      EXPECT_NEAR(si->uv.y, s.uv.y, 1e-4);
+      EXPECT_NEAR(Dot(si->n, s.n), 1, 1e-6);
+    }
+  };
+  MeshData quad;
+  // R, P, Q, and S = P + Q - R, sheared; the second triangle repeats P and Q as new vertices.
+  quad.positions = {{0, 0, 1}, {0.9f, 0.1f, 1.2f}, {0.3f, 0.6f, 0.8f}, {0.3f, 0.6f, 0.8f}, {1.2f, 0.7f, 1.0f}, {0.9f, 0.1f, 1.2f}};
+  quad.uvs = {{0, 0}, {1, 0}, {0, 1}, {0, 1}, {1, 1}, {1, 0}};
+  quad.indices = {1, 2, 0, 3, 5, 4};
+  TriangleMesh q(quad, Transform(), false);
+  CheckShapeSampling(std::make_unique<TriangleMesh>(quad, Transform(), false), Vec3f(0.2f, 0.3f, 0), "parallelogram");
+  check_attributes(q, Vec3f(0.2f, 0.3f, 0));
+  MeshData kite = quad;
+  kite.positions[4] = {1.5f, 1.1f, 1.0f};
+  TriangleMesh k(kite, Transform(), false);
+  CheckShapeSampling(std::make_unique<TriangleMesh>(kite, Transform(), false), Vec3f(0.2f, 0.3f, 0), "kite");
+  check_attributes(k, Vec3f(0.2f, 0.3f, 0));
+}
+
 TEST(ShapeSampling, DiskAndCylinder) {
   Transform t = Transform::Translate({0.2, 0, 1}) * Transform::Rotate(40, {0, 1, 0}) * Transform::Scale({0.7, 0.4, 1});
   CheckShapeSampling(std::make_unique<Disk>(t, false), Vec3f(0.f), "disk");

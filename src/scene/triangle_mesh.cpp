@@ -36,6 +36,7 @@ TriangleMesh::TriangleMesh(MeshData data, const Transform& to_world, bool flip_n
     face_normals_[i] = len > 0 ? ng / len * (flip_ ? -1.f : 1.f) : Vec3f(0, 0, 1);
   }
   if (!areas.empty()) triangle_distribution_ = Distribution1D(areas);
+  FindParallelogram();
 }
 
 RTCGeometry TriangleMesh::CreateGeometry(RTCDevice device) const {
@@ -88,23 +89,73 @@ SurfaceInteraction TriangleMesh::ComputeInteraction(const Ray& ray, const RTCHit
   return si;
 }
 
+void TriangleMesh::FindParallelogram() {
+  if (TriangleCount() != 2 || !(area_ > 0)) return;
+  const uint32_t *a = &data_.indices[0], *b = &data_.indices[3];
+  auto pos = [&](uint32_t v) { return data_.positions[v]; };
+  // The two vertices both triangles share (by position: OBJ quads may repeat vertices).
+  int shared_a[3] = {-1, -1, -1}, shared = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (pos(a[i]) == pos(b[j])) {
+        shared_a[i] = j;
+        ++shared;
+        break;
+      }
+  if (shared != 2) return;
+  Parallelogram q;
+  for (int i = 0; i < 3; ++i)
+    if (shared_a[i] < 0) q.r_slot = i;
+  q.p_slot = (q.r_slot + 1) % 3;
+  q.q_slot = (q.r_slot + 2) % 3;
+  q.sp_slot = shared_a[q.p_slot];
+  q.sq_slot = shared_a[q.q_slot];
+  q.s_slot = 3 - q.sp_slot - q.sq_slot;
+  // A parallelogram when R + S = P + Q (its diagonals halve each other).
+  Vec3f r = pos(a[q.r_slot]), p = pos(a[q.p_slot]), qq = pos(a[q.q_slot]), sv = pos(b[q.s_slot]);
+  float scale = MaxComponent(Abs(r)) + MaxComponent(Abs(p)) + MaxComponent(Abs(qq)) + MaxComponent(Abs(sv));
+  if (MaxComponent(Abs(r + sv - p - qq)) > 1e-6f * scale) return;
+  parallelogram_ = q;
+}
+
 ShapeSample TriangleMesh::SampleArea(Vec2f u) const {
-  float pmf;
-  int i = triangle_distribution_.SampleDiscrete(u.x, &pmf);
-  // Reuse u.x within the chosen triangle's slice of the CDF.
-  float ux = std::min((u.x - triangle_distribution_.CdfAt(i)) / pmf, kOneMinusEpsilon);
-  Vec2f b = SampleUniformTriangle({ux, u.y});
+  int i;
+  float b[3];  // barycentric weights of triangle i's three vertices
+  if (parallelogram_) {
+    // u maps affinely onto the parallelogram R + u (P - R) + v (Q - R): the triangle (R, P, Q)
+    // where u + v <= 1, else (S, P, Q) with S = P + Q - R.
+    const Parallelogram& q = *parallelogram_;
+    if (u.x + u.y <= 1) {
+      i = 0;
+      b[q.r_slot] = 1 - u.x - u.y;
+      b[q.p_slot] = u.x;
+      b[q.q_slot] = u.y;
+    } else {
+      i = 1;
+      b[q.s_slot] = u.x + u.y - 1;
+      b[q.sp_slot] = 1 - u.y;
+      b[q.sq_slot] = 1 - u.x;
+    }
+  } else {
+    float pmf;
+    i = triangle_distribution_.SampleDiscrete(u.x, &pmf);
+    // Reuse u.x within the chosen triangle's slice of the CDF.
+    float ux = std::min((u.x - triangle_distribution_.CdfAt(i)) / pmf, kOneMinusEpsilon);
+    Vec2f bt = SampleUniformTriangle({ux, u.y});
+    b[0] = bt.x;
+    b[1] = bt.y;
+    b[2] = 1 - bt.x - bt.y;
+  }
   const uint32_t* tri = &data_.indices[3 * size_t(i)];
   const Vec3f &p0 = data_.positions[tri[0]], &p1 = data_.positions[tri[1]], &p2 = data_.positions[tri[2]];
-  float b2 = 1 - b.x - b.y;
   ShapeSample s;
-  s.p = p0 * b.x + p1 * b.y + p2 * b2;
-  s.p_error = (Abs(p0 * b.x) + Abs(p1 * b.y) + Abs(p2 * b2)) * Gamma(6);
+  s.p = p0 * b[0] + p1 * b[1] + p2 * b[2];
+  s.p_error = (Abs(p0 * b[0]) + Abs(p1 * b[1]) + Abs(p2 * b[2])) * Gamma(6);
   s.n = face_normals_[i];
   if (data_.uvs.empty()) {
-    s.uv = {b.y + b2, b2};  // as ComputeInteraction: barycentric uv
+    s.uv = {b[1] + b[2], b[2]};  // as ComputeInteraction: barycentric uv
   } else {
-    s.uv = data_.uvs[tri[0]] * b.x + data_.uvs[tri[1]] * b.y + data_.uvs[tri[2]] * b2;
+    s.uv = data_.uvs[tri[0]] * b[0] + data_.uvs[tri[1]] * b[1] + data_.uvs[tri[2]] * b[2];
   }
   s.pdf = 1 / area_;
   return s;

@@ -1,6 +1,7 @@
 // Triangle meshes in world space (transformed once when loaded), intersected by Embree.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,14 @@ class TriangleMesh final : public Shape {
   float area_ = 0;
   Bounds3f bounds_;
   Distribution1D triangle_distribution_;
+  // Two triangles (R, P, Q) and (S, P, Q) forming a parallelogram (a quad light, a rectangle)
+  // are sampled as one, with no triangle choice: the vertex slot of each corner in its triangle.
+  struct Parallelogram {
+    int r_slot, p_slot, q_slot;   // in triangle 0
+    int s_slot, sp_slot, sq_slot;  // in triangle 1
+  };
+  std::optional<Parallelogram> parallelogram_;
+  void FindParallelogram();
 };
 
 }  // namespace objektiv
