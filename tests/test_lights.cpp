@@ -20,9 +20,9 @@ void CheckShapeSampling(std::unique_ptr<Shape> shape, const Vec3f& ref, const ch
   scene.AddShape(std::move(shape), nullptr);
   scene.Commit();
   auto sampler = [&](PCG32& g) -> std::optional<Vec3f> {
-    auto s = raw->SampleFrom(ref, {g.UniformFloat(), g.UniformFloat()});
-    if (!s) return std::nullopt;
-    return Normalize(s->p - ref);
+    ShapeSample s = raw->SampleFrom(ref, {g.UniformFloat(), g.UniformFloat()});
+    if (!(s.pdf > 0)) return std::nullopt;
+    return Normalize(s.p - ref);
   };
   auto pdf = [&](const Vec3f& w) -> double {
     auto si = scene.Intersect(Ray{ref, w});

@@ -194,7 +194,7 @@ ShapeSample Sphere::SampleArea(Vec2f u) const {
   return s;
 }
 
-std::optional<ShapeSample> Sphere::SampleFrom(const Vec3f& ref, Vec2f u) const {
+ShapeSample Sphere::SampleFrom(const Vec3f& ref, Vec2f u) const {
   Vec3d rd(ref);
   double dc2 = LengthSquared(center_ - rd);
   double r2 = radius_ * radius_;

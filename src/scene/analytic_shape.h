@@ -29,7 +29,7 @@ class Sphere final : public AnalyticShape {
   float Area() const override;
   Bounds3f WorldBounds() const override;
   ShapeSample SampleArea(Vec2f u) const override;
-  std::optional<ShapeSample> SampleFrom(const Vec3f& ref, Vec2f u) const override;
+  ShapeSample SampleFrom(const Vec3f& ref, Vec2f u) const override;
   float PdfFrom(const Vec3f& ref, const SurfaceInteraction& hit) const override;
   Vec3f center() const { return Vec3f(center_); }
   float radius() const { return float(radius_); }

@@ -86,17 +86,17 @@ std::optional<LightSample> AreaLight::SampleLi(const Vec3f& ref, Vec2f u, const 
   // caller's slot): assembling it elsewhere and copying it over stalled on store forwarding,
   // a measurable part of the render.
   std::optional<LightSample> out;
-  std::optional<ShapeSample> ss = shape_->SampleFrom(ref, u);
-  Vec3f d = ss ? ss->p - ref : Vec3f(0.f);
+  ShapeSample ss = shape_->SampleFrom(ref, u);
+  Vec3f d = ss.p - ref;
   float dist2 = LengthSquared(d);
-  if (ss && dist2 > 0) {
+  if (ss.pdf > 0 && dist2 > 0) {
     LightSample& s = out.emplace();
     s.wi = d / std::sqrt(dist2);
-    s.L = L(ss->n, ss->uv, -s.wi, lambda);
-    s.pdf = ss->pdf;
-    s.p = ss->p;
-    s.p_error = ss->p_error;
-    s.n = ss->n;
+    s.L = L(ss.n, ss.uv, -s.wi, lambda);
+    s.pdf = ss.pdf;
+    s.p = ss.p;
+    s.p_error = ss.p_error;
+    s.n = ss.n;
     if (s.L.IsBlack()) out.reset();
   }
   return out;

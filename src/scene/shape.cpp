@@ -11,12 +11,11 @@ float AreaToSolidAnglePdf(float pdf_area, const Vec3f& ref, const Vec3f& p, cons
   return pdf_area * dist2 / cos;
 }
 
-std::optional<ShapeSample> Shape::SampleFrom(const Vec3f& ref, Vec2f u) const {
-  // One returned name on every path, so that the result is built in the caller's slot.
-  std::optional<ShapeSample> out(SampleArea(u));
-  out->pdf = AreaToSolidAnglePdf(out->pdf, ref, out->p, out->n);
-  if (!(out->pdf > 0) || std::isinf(out->pdf)) out.reset();
-  return out;
+ShapeSample Shape::SampleFrom(const Vec3f& ref, Vec2f u) const {
+  ShapeSample s = SampleArea(u);
+  s.pdf = AreaToSolidAnglePdf(s.pdf, ref, s.p, s.n);
+  if (!(s.pdf > 0) || std::isinf(s.pdf)) s.pdf = 0;
+  return s;
 }
 
 float Shape::PdfFrom(const Vec3f& ref, const SurfaceInteraction& hit) const {

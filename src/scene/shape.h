@@ -28,8 +28,10 @@ class Shape {
   // A point uniformly distributed over the surface (pdf per unit area).
   virtual ShapeSample SampleArea(Vec2f u) const = 0;
   // A point on the shape as seen from `ref`, pdf per unit solid angle at ref. Shapes that
-  // can do better than area sampling (spheres: the cone of directions) override this.
-  virtual std::optional<ShapeSample> SampleFrom(const Vec3f& ref, Vec2f u) const;
+  // can do better than area sampling (spheres: the cone of directions) override this. A pdf
+  // of 0 means no sample (ref on the shape's plane, or on the shape). A plain struct rather
+  // than an optional: it is built in the caller's slot, never copied (a measurable cost).
+  virtual ShapeSample SampleFrom(const Vec3f& ref, Vec2f u) const;
   // Density (solid angle at ref) with which SampleFrom would return the point `hit`.
   virtual float PdfFrom(const Vec3f& ref, const SurfaceInteraction& hit) const;
 };
