@@ -151,7 +151,10 @@ TEST(Spectrum, TabulatedInterpolatesAndClampsAtTheEnds) {
 namespace objektiv {
 namespace {
 TEST(Wavelengths, BundleMatchesTheScalarFormulas) {
-  for (float u : {0.f, 0.13f, 0.5f, 0.77f, 0.999f}) {
+  // A fine grid over u covers the whole range of the vectorised logarithm, and the ends.
+  std::vector<float> us = {0.f, kOneMinusEpsilon};
+  for (int k = 0; k < 4000; ++k) us.push_back((k + 0.37f) / 4000);
+  for (float u : us) {
     SampledWavelengths w = SampledWavelengths::SampleVisible(u);
     for (int i = 0; i < kSpectrumSamples; ++i) {
       float up = u + float(i) / kSpectrumSamples;
