@@ -37,6 +37,9 @@ class Camera {
   // where no light gets through.
   virtual void GenerateRays(std::span<const CameraSample> samples, std::span<SampledWavelengths> lambdas,
                             std::span<std::optional<CameraRay>> out, CameraRayCount& count) const;
+  // Whether rays depend on CameraSample::p_lens; if not, the renderer does not draw it (one
+  // 2D sample fewer per camera ray for pinhole and orthographic cameras).
+  virtual bool UsesLensSample() const { return true; }
   int width() const { return width_; }
   int height() const { return height_; }
 
@@ -56,6 +59,7 @@ class PerspectiveCamera : public Camera {
   PerspectiveCamera(const Transform& to_world, int width, int height, float fov_deg, FovAxis axis, float near_clip,
                     float far_clip);
   std::optional<CameraRay> GenerateRay(const CameraSample& s, SampledWavelengths& lambda) const override;
+  bool UsesLensSample() const override { return false; }
 
  protected:
   // Direction in camera space through film point p (not normalised; z = 1).
@@ -71,6 +75,7 @@ class ThinLensCamera final : public PerspectiveCamera {
   ThinLensCamera(const Transform& to_world, int width, int height, float fov_deg, FovAxis axis, float near_clip,
                  float far_clip, float aperture_radius, float focus_distance, int blades, float blade_rotation_deg);
   std::optional<CameraRay> GenerateRay(const CameraSample& s, SampledWavelengths& lambda) const override;
+  bool UsesLensSample() const override { return aperture_radius_ > 0; }
 
  private:
   float aperture_radius_, focus_distance_;
@@ -83,6 +88,7 @@ class OrthographicCamera final : public Camera {
  public:
   OrthographicCamera(const Transform& to_world, int width, int height, float near_clip, float far_clip);
   std::optional<CameraRay> GenerateRay(const CameraSample& s, SampledWavelengths& lambda) const override;
+  bool UsesLensSample() const override { return false; }
 
  private:
   float near_, far_;

@@ -45,6 +45,7 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
     st.rays_out.resize(kCameraBatch);
     return st;
   });
+  const bool lens_sample = camera.UsesLensSample();
   Progress progress("Rendering", int64_t(tiles_x) * tiles_y, options.progress);
   auto start = std::chrono::steady_clock::now();
 
@@ -65,7 +66,8 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
             st.filter_samples[k] = film.filter().Sample(sk.GetPixel2D());
             st.lambdas[k] = SampledWavelengths::SampleVisible(sk.Get1D());
             Vec2f offset = st.filter_samples[k].offset;
-            st.camera_samples[k] = {Vec2f(x + 0.5f + offset.x, y + 0.5f + offset.y), sk.Get2D()};
+            Vec2f lens = lens_sample ? sk.Get2D() : Vec2f(0.5f, 0.5f);
+            st.camera_samples[k] = {Vec2f(x + 0.5f + offset.x, y + 0.5f + offset.y), lens};
           }
           camera.GenerateRays(std::span(st.camera_samples.data(), n), std::span(st.lambdas.data(), n),
                               std::span(st.rays_out.data(), n), st.camera);
