@@ -211,6 +211,58 @@ TEST(Instancing, InstancesRenderLikeTheShapesThemselves) {
   EXPECT_GT(sum / a.image.pixels.size(), 0.05);
 }
 
+// Camera rays are traced in packets (Scene::IntersectCoherent): every packet answer must be
+// the single-ray one, for meshes, analytic shapes (user geometry called with N = 8),
+// instances, misses, empty lanes and a count that is not a multiple of the packet size.
+TEST(Scene, PacketIntersectionMatchesSingleRays) {
+  std::string xml = InstancingScene(R"(<shape type="shapegroup" id="g">
+      <shape type="sphere"><float name="radius" value="0.5"/></shape>
+      <shape type="cube"><transform name="to_world"><scale value="0.3"/><translate y="0.7"/></transform></shape></shape>
+    <shape type="instance"><ref id="g"/><transform name="to_world"><translate x="-0.8" y="0.5"/></transform></shape>
+    <shape type="sphere"><point name="center" x="0.9" y="0.4" z="0.3"/><float name="radius" value="0.4"/></shape>
+    <shape type="cylinder"><transform name="to_world"><scale value="0.2"/><translate x="0.1" y="0.1" z="1"/></transform></shape>
+    <shape type="disk"><transform name="to_world"><scale value="0.3"/><translate x="-0.2" y="1.2" z="0.5"/></transform></shape>
+    <shape type="cube"><transform name="to_world"><scale value="0.25"/><translate y="0.25" z="-0.6"/></transform></shape>)");
+  RenderSetup setup = LoadSceneFromString(xml, "test.xml", {});
+  const Scene& scene = *setup.scene;
+  PCG32 rng(3, 5);
+  std::vector<Ray> rays;
+  for (int k = 0; k < 61; ++k) {
+    // Mostly from the camera toward the objects (coherent), some in random directions.
+    Vec3f o(0, 1.5f, 5);
+    Vec3f target(rng.UniformFloat() * 3 - 1.5f, rng.UniformFloat() * 1.5f, rng.UniformFloat() * 2 - 1);
+    Vec3f d = k % 5 == 4 ? SampleUniformSphere({rng.UniformFloat(), rng.UniformFloat()}) : Normalize(target - o);
+    rays.push_back(Ray{o, d, k % 7 == 3 ? 4.5f : std::numeric_limits<float>::infinity()});
+  }
+  std::vector<const Ray*> ptrs;
+  for (size_t k = 0; k < rays.size(); ++k) ptrs.push_back(k % 9 == 2 ? nullptr : &rays[k]);
+  std::vector<std::optional<SurfaceInteraction>> out(rays.size(), SurfaceInteraction{});
+  scene.IntersectCoherent(ptrs, out);
+  int hits = 0, misses = 0;
+  for (size_t k = 0; k < rays.size(); ++k) {
+    if (!ptrs[k]) {
+      EXPECT_FALSE(out[k]) << k;
+      continue;
+    }
+    std::optional<SurfaceInteraction> single = scene.Intersect(rays[k]);
+    ASSERT_EQ(single.has_value(), out[k].has_value()) << k;
+    if (!single) {
+      ++misses;
+      continue;
+    }
+    ++hits;
+    EXPECT_EQ(single->shape, out[k]->shape) << k;
+    EXPECT_NEAR(single->t, out[k]->t, 1e-5f * single->t) << k;
+    EXPECT_LT(Length(single->p - out[k]->p), 1e-5f) << k;
+    EXPECT_GT(Dot(single->n, out[k]->n), 1 - 1e-5f) << k;
+    EXPECT_NEAR(single->uv.x, out[k]->uv.x, 1e-4f) << k;
+    EXPECT_NEAR(single->uv.y, out[k]->uv.y, 1e-4f) << k;
+  }
+  // Both kinds of answer were checked.
+  EXPECT_GE(hits, 20);
+  EXPECT_GE(misses, 5);
+}
+
 TEST(Instancing, InstancedShapesCannotEmit) {
   std::string xml = InstancingScene(R"(<shape type="shapegroup" id="g"><shape type="sphere">
       <emitter type="area"><rgb name="radiance" value="1"/></emitter></shape></shape>)");

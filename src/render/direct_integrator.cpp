@@ -3,10 +3,8 @@
 
 namespace objektiv {
 
-SampledSpectrum DirectIntegrator::Li(const Ray& ray, SampledWavelengths& lambda, Sampler& sampler,
-                                     RayCounts& counts) const {
-  ++counts.closest;
-  std::optional<SurfaceInteraction> si = scene_.Intersect(ray);
+SampledSpectrum DirectIntegrator::Li(const Ray& ray, const std::optional<SurfaceInteraction>& si,
+                                     SampledWavelengths& lambda, Sampler& sampler, RayCounts& counts) const {
   SampledSpectrum L(0.f);
   if (!si) {
     for (const InfiniteLight* light : scene_.infinite_lights()) L += light->Le(ray.d, lambda);

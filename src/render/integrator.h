@@ -13,8 +13,16 @@ struct RayCounts {
 
 class Integrator {
  public:
+  explicit Integrator(const Scene& scene) : scene_(scene) {}
   virtual ~Integrator() = default;
-  virtual SampledSpectrum Li(const Ray& ray, SampledWavelengths& lambda, Sampler& sampler, RayCounts& counts) const = 0;
+  // Radiance along a camera ray whose first intersection the caller has already found (the
+  // renderer traces a pixel's camera rays together, Scene::IntersectCoherent; empty: a miss).
+  virtual SampledSpectrum Li(const Ray& ray, const std::optional<SurfaceInteraction>& first_hit,
+                             SampledWavelengths& lambda, Sampler& sampler, RayCounts& counts) const = 0;
+  const Scene& scene() const { return scene_; }
+
+ protected:
+  const Scene& scene_;
 };
 
 // Unidirectional path tracing with next-event estimation and multiple importance sampling.
@@ -22,11 +30,12 @@ class Integrator {
 // lighting, -1: unbounded); Russian roulette from rr_depth on.
 class PathIntegrator final : public Integrator {
  public:
-  PathIntegrator(const Scene& scene, int max_depth, int rr_depth) : scene_(scene), max_depth_(max_depth), rr_depth_(rr_depth) {}
-  SampledSpectrum Li(const Ray& ray, SampledWavelengths& lambda, Sampler& sampler, RayCounts& counts) const override;
+  PathIntegrator(const Scene& scene, int max_depth, int rr_depth)
+      : Integrator(scene), max_depth_(max_depth), rr_depth_(rr_depth) {}
+  SampledSpectrum Li(const Ray& ray, const std::optional<SurfaceInteraction>& first_hit, SampledWavelengths& lambda,
+                     Sampler& sampler, RayCounts& counts) const override;
 
  private:
-  const Scene& scene_;
   int max_depth_, rr_depth_;
 };
 
@@ -35,11 +44,11 @@ class PathIntegrator final : public Integrator {
 class DirectIntegrator final : public Integrator {
  public:
   DirectIntegrator(const Scene& scene, int emitter_samples, int bsdf_samples)
-      : scene_(scene), emitter_samples_(emitter_samples), bsdf_samples_(bsdf_samples) {}
-  SampledSpectrum Li(const Ray& ray, SampledWavelengths& lambda, Sampler& sampler, RayCounts& counts) const override;
+      : Integrator(scene), emitter_samples_(emitter_samples), bsdf_samples_(bsdf_samples) {}
+  SampledSpectrum Li(const Ray& ray, const std::optional<SurfaceInteraction>& first_hit, SampledWavelengths& lambda,
+                     Sampler& sampler, RayCounts& counts) const override;
 
  private:
-  const Scene& scene_;
   int emitter_samples_, bsdf_samples_;
 };
 

@@ -5,8 +5,8 @@
 
 namespace objektiv {
 
-SampledSpectrum PathIntegrator::Li(const Ray& camera_ray, SampledWavelengths& lambda, Sampler& sampler,
-                                   RayCounts& counts) const {
+SampledSpectrum PathIntegrator::Li(const Ray& camera_ray, const std::optional<SurfaceInteraction>& first_hit,
+                                   SampledWavelengths& lambda, Sampler& sampler, RayCounts& counts) const {
   SampledSpectrum L(0.f), beta(1.f);
   Ray ray = camera_ray;
   bool specular_bounce = false;
@@ -14,8 +14,9 @@ SampledSpectrum PathIntegrator::Li(const Ray& camera_ray, SampledWavelengths& la
   Vec3f prev_p;
   // `depth` is the number of path segments traced so far, including the current ray.
   for (int depth = 1;; ++depth) {
-    ++counts.closest;
-    std::optional<SurfaceInteraction> si = scene_.Intersect(ray);
+    if (depth > 1) ++counts.closest;
+    // Initialised by the call itself (an assignment would copy the interaction each bounce).
+    std::optional<SurfaceInteraction> si = depth == 1 ? first_hit : scene_.Intersect(ray);
     if (!si) {
       for (const InfiniteLight* light : scene_.infinite_lights()) {
         SampledSpectrum Le = light->Le(ray.d, lambda);

@@ -32,6 +32,8 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
     std::vector<SampledWavelengths> lambdas;
     std::vector<CameraSample> camera_samples;
     std::vector<std::optional<CameraRay>> rays_out;
+    std::vector<const Ray*> first_rays;
+    std::vector<std::optional<SurfaceInteraction>> first_hits;
     RayCounts rays;
     CameraRayCount camera;
     uint64_t nan = 0, inf = 0;
@@ -43,6 +45,8 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
     st.lambdas.resize(kCameraBatch);
     st.camera_samples.resize(kCameraBatch);
     st.rays_out.resize(kCameraBatch);
+    st.first_rays.resize(kCameraBatch);
+    st.first_hits.resize(kCameraBatch);
     return st;
   });
   const bool lens_sample = camera.UsesLensSample();
@@ -71,11 +75,17 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
           }
           camera.GenerateRays(std::span(st.camera_samples.data(), n), std::span(st.lambdas.data(), n),
                               std::span(st.rays_out.data(), n), st.camera);
+          // The camera rays' first hits, traced together (they are coherent: packets pay).
+          for (int k = 0; k < n; ++k) {
+            st.first_rays[k] = st.rays_out[k] ? &st.rays_out[k]->ray : nullptr;
+            st.rays.closest += st.rays_out[k].has_value();
+          }
+          integrator.scene().IntersectCoherent(std::span(st.first_rays.data(), n), std::span(st.first_hits.data(), n));
           for (int k = 0; k < n; ++k) {
             SampledWavelengths& lambda = st.lambdas[k];
             const std::optional<CameraRay>& cr = st.rays_out[k];
             SampledSpectrum L(0.f);
-            if (cr) L = cr->weight * integrator.Li(cr->ray, lambda, st.samplers[k], st.rays);
+            if (cr) L = cr->weight * integrator.Li(cr->ray, st.first_hits[k], lambda, st.samplers[k], st.rays);
             // Non-finite radiance is counted and dropped, never written to the film.
             if (L.HasNaN()) {
               ++st.nan;

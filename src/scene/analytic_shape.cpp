@@ -20,35 +20,44 @@ void BoundsCallback(const RTCBoundsFunctionArguments* args) {
   out->upper_z = b.hi.z;
 }
 
-// Objektiv only traces single rays (rtcIntersect1 / rtcOccluded1), so N is always 1.
+// N is 1 for single rays and 8 for the packets of Scene::IntersectCoherent; lanes are read
+// and written through Embree's structure-of-arrays accessors.
 void IntersectCallback(const RTCIntersectFunctionNArguments* args) {
-  if (!args->valid[0]) return;
   auto* shape = static_cast<const AnalyticShape*>(args->geometryUserPtr);
-  auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
-  RTCRay& r = rh->ray;
-  double t;
-  Vec2f param;
-  if (!shape->Intersect(Vec3d(r.org_x, r.org_y, r.org_z), Vec3d(r.dir_x, r.dir_y, r.dir_z), r.tfar, &t, &param)) return;
-  if (!(t > r.tnear)) return;
-  r.tfar = float(t);
-  rh->hit.u = param.x;
-  rh->hit.v = param.y;
-  rh->hit.Ng_x = rh->hit.Ng_y = 0;
-  rh->hit.Ng_z = 1;
-  rh->hit.geomID = args->geomID;
-  rh->hit.primID = args->primID;
-  rh->hit.instID[0] = args->context->instID[0];
+  const unsigned n = args->N;
+  RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, n);
+  RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, n);
+  for (unsigned i = 0; i < n; ++i) {
+    if (!args->valid[i]) continue;
+    Vec3d o(RTCRayN_org_x(ray, n, i), RTCRayN_org_y(ray, n, i), RTCRayN_org_z(ray, n, i));
+    Vec3d d(RTCRayN_dir_x(ray, n, i), RTCRayN_dir_y(ray, n, i), RTCRayN_dir_z(ray, n, i));
+    double t;
+    Vec2f param;
+    if (!shape->Intersect(o, d, RTCRayN_tfar(ray, n, i), &t, &param)) continue;
+    if (!(t > RTCRayN_tnear(ray, n, i))) continue;
+    RTCRayN_tfar(ray, n, i) = float(t);
+    RTCHitN_u(hit, n, i) = param.x;
+    RTCHitN_v(hit, n, i) = param.y;
+    RTCHitN_Ng_x(hit, n, i) = RTCHitN_Ng_y(hit, n, i) = 0;
+    RTCHitN_Ng_z(hit, n, i) = 1;
+    RTCHitN_geomID(hit, n, i) = args->geomID;
+    RTCHitN_primID(hit, n, i) = args->primID;
+    RTCHitN_instID(hit, n, i, 0) = args->context->instID[0];
+  }
 }
 
 void OccludedCallback(const RTCOccludedFunctionNArguments* args) {
-  if (!args->valid[0]) return;
   auto* shape = static_cast<const AnalyticShape*>(args->geometryUserPtr);
-  auto* r = reinterpret_cast<RTCRay*>(args->ray);
-  double t;
-  Vec2f param;
-  if (shape->Intersect(Vec3d(r->org_x, r->org_y, r->org_z), Vec3d(r->dir_x, r->dir_y, r->dir_z), r->tfar, &t, &param) &&
-      t > r->tnear)
-    r->tfar = -std::numeric_limits<float>::infinity();
+  const unsigned n = args->N;
+  for (unsigned i = 0; i < n; ++i) {
+    if (!args->valid[i]) continue;
+    Vec3d o(RTCRayN_org_x(args->ray, n, i), RTCRayN_org_y(args->ray, n, i), RTCRayN_org_z(args->ray, n, i));
+    Vec3d d(RTCRayN_dir_x(args->ray, n, i), RTCRayN_dir_y(args->ray, n, i), RTCRayN_dir_z(args->ray, n, i));
+    double t;
+    Vec2f param;
+    if (shape->Intersect(o, d, RTCRayN_tfar(args->ray, n, i), &t, &param) && t > RTCRayN_tnear(args->ray, n, i))
+      RTCRayN_tfar(args->ray, n, i) = -std::numeric_limits<float>::infinity();
+  }
 }
 
 Vec3d ToObject(const Matrix4& inv, const Vec3d& p, bool is_point) {

@@ -135,12 +135,65 @@ std::optional<SurfaceInteraction> Scene::Intersect(const Ray& ray) const {
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &ctx, &rh);
+  return HitInteraction(ray, rh);
+}
+
+std::optional<SurfaceInteraction> Scene::HitInteraction(const Ray& ray, const RTCRayHit& rh) const {
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) return InstanceInteraction(ray, rh);
   const ShapeRecord& rec = shapes_[rh.hit.geomID];
   SurfaceInteraction si = rec.shape->ComputeInteraction(ray, rh.hit, rh.ray.tfar);
   si.shape = &rec;
   return si;
+}
+
+void Scene::IntersectCoherent(std::span<const Ray* const> rays, std::span<std::optional<SurfaceInteraction>> out) const {
+  constexpr int kPacket = 8;
+  for (size_t start = 0; start < rays.size(); start += kPacket) {
+    const int n = int(std::min<size_t>(kPacket, rays.size() - start));
+    alignas(32) int valid[kPacket];
+    alignas(32) RTCRayHit8 packet;
+    for (int k = 0; k < kPacket; ++k) {
+      const Ray* ray = k < n ? rays[start + k] : nullptr;
+      valid[k] = ray ? -1 : 0;
+      if (!ray) continue;
+      packet.ray.org_x[k] = ray->o.x;
+      packet.ray.org_y[k] = ray->o.y;
+      packet.ray.org_z[k] = ray->o.z;
+      packet.ray.dir_x[k] = ray->d.x;
+      packet.ray.dir_y[k] = ray->d.y;
+      packet.ray.dir_z[k] = ray->d.z;
+      packet.ray.tnear[k] = 0;
+      packet.ray.tfar[k] = ray->tmax;
+      packet.ray.time[k] = 0;
+      packet.ray.mask[k] = 0xffffffffu;
+      packet.ray.id[k] = 0;
+      packet.ray.flags[k] = 0;
+      packet.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+      packet.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+    }
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    rtcIntersect8(valid, scene_, &ctx, &packet);
+    for (int k = 0; k < n; ++k) {
+      std::optional<SurfaceInteraction>& o = out[start + k];
+      o.reset();
+      if (!valid[k]) continue;
+      // One lane as a single-ray answer (what the interaction code reads of it).
+      RTCRayHit rh;
+      rh.ray.tfar = packet.ray.tfar[k];
+      rh.hit.Ng_x = packet.hit.Ng_x[k];
+      rh.hit.Ng_y = packet.hit.Ng_y[k];
+      rh.hit.Ng_z = packet.hit.Ng_z[k];
+      rh.hit.u = packet.hit.u[k];
+      rh.hit.v = packet.hit.v[k];
+      rh.hit.primID = packet.hit.primID[k];
+      rh.hit.geomID = packet.hit.geomID[k];
+      rh.hit.instID[0] = packet.hit.instID[0][k];
+      if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) o = HitInteraction(*rays[start + k], rh);
+    }
+  }
 }
 
 SurfaceInteraction Scene::InstanceInteraction(const Ray& ray, const RTCRayHit& rh) const {
