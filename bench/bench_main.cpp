@@ -1,4 +1,4 @@
-// Micro-benchmarks: ray casting against the Cornell box, BSDF sampling, samplers.
+// Micro-benchmarks: ray casting against the Cornell box (random and camera rays), BSDF sampling, samplers.
 // Run: build/objektiv-bench (the full-render figure comes from bench/cornell.sh).
 #include <benchmark/benchmark.h>
 
@@ -44,6 +44,38 @@ void BM_IntersectClosest(benchmark::State& state) {
   state.counters["hit_fraction"] = double(hits) / state.iterations();
 }
 BENCHMARK(BM_IntersectClosest);
+
+// A pixel's camera rays as the renderer makes them (64 jittered in one pixel of the 512 x 512
+// Cornell camera), traced one by one (arg 0) or in packets by Scene::IntersectCoherent (arg 1).
+void BM_IntersectCameraRays(benchmark::State& state) {
+  const Scene& scene = *Cornell().scene;
+  PCG32 rng(1, 1);
+  const float t = std::tan(19.5f / 2 * kPi / 180);
+  std::vector<std::vector<Ray>> pixels(256);
+  for (std::vector<Ray>& rays : pixels) {
+    float px = rng.UniformFloat() * 512, py = rng.UniformFloat() * 512;
+    for (int k = 0; k < 64; ++k) {
+      float x = (px + rng.UniformFloat()) / 256 - 1, y = 1 - (py + rng.UniformFloat()) / 256;
+      rays.push_back(Ray{Vec3f(0, 1, 6.8f), Normalize(Vec3f(-x * t, y * t, -1))});
+    }
+  }
+  std::vector<const Ray*> ptrs(64);
+  std::vector<std::optional<SurfaceInteraction>> hits(64);
+  size_t i = 0;
+  for (auto _ : state) {
+    const std::vector<Ray>& rays = pixels[i++ % pixels.size()];
+    if (state.range(0) == 0) {
+      for (int k = 0; k < 64; ++k) hits[k] = scene.Intersect(rays[k]);
+    } else {
+      for (int k = 0; k < 64; ++k) ptrs[k] = &rays[k];
+      scene.IntersectCoherent(ptrs, hits);
+    }
+    benchmark::DoNotOptimize(hits.data());
+  }
+  state.SetItemsProcessed(state.iterations() * 64);
+  state.SetLabel(state.range(0) ? "packets of 8" : "one by one");
+}
+BENCHMARK(BM_IntersectCameraRays)->Arg(0)->Arg(1);
 
 void BM_Occluded(benchmark::State& state) {
   const Scene& scene = *Cornell().scene;
