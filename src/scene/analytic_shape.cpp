@@ -162,7 +162,7 @@ ShapeSample Sphere::PointAt(const Vec3d& pd) const {
   s.p_error = Abs(s.p) * Gamma(5) + Vec3f(float(radius_) * Gamma(5));
   s.n = Vec3f(dir);
   if (flip_) s.n = -s.n;
-  Vec3f local = Normalize(to_world_.Inverse().Vector(Vec3f(dir)));
+  Vec3f local = Normalize(Vec3f(ToObject(to_world_.InverseMatrix(), dir, false)));
   float phi = std::atan2(local.y, local.x);
   if (phi < 0) phi += 2 * kPi;
   s.uv = {phi * kInv2Pi, std::acos(Clamp(local.z, -1, 1)) * kInvPi};
