@@ -47,4 +47,17 @@ std::optional<double> ParseFiniteNumber(const std::string& s) {
   return v;
 }
 
+double ParseFiniteNumber(const std::string& s, const std::string& path, int line) {
+  std::optional<double> v = ParseFiniteNumber(s);
+  if (!v) throw MakeInputError(path, line, "'{}' is not a finite number", s);
+  return *v;
+}
+
+std::vector<std::string> SplitFields(const std::string& line) {
+  std::istringstream tok(line);
+  std::vector<std::string> fields;
+  for (std::string t; tok >> t;) fields.push_back(t);
+  return fields;
+}
+
 }  // namespace objektiv

@@ -3,6 +3,7 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace objektiv {
 
@@ -13,5 +14,9 @@ std::string ReadTextFile(const std::string& path, const char* what);
 std::string DecodeToAscii(const std::string& raw);
 // The number spelled by the whole of `s` (surrounding spaces allowed), if finite.
 std::optional<double> ParseFiniteNumber(const std::string& s);
+// The same, or InputError "PATH:LINE: 'S' is not a finite number".
+double ParseFiniteNumber(const std::string& s, const std::string& path, int line);
+// The whitespace-separated fields of one line (a trailing '\r' is whitespace too).
+std::vector<std::string> SplitFields(const std::string& line);
 
 }  // namespace objektiv

@@ -21,12 +21,6 @@ std::string Upper(std::string_view s) {
   return r;
 }
 
-double Number(const std::string& s, const std::string& path, int line) {
-  std::optional<double> v = ParseFiniteNumber(s);
-  if (!v) throw MakeInputError(path, line, "'{}' is not a finite number", s);
-  return *v;
-}
-
 }  // namespace
 
 void GlassCatalog::LoadAgf(const std::string& path, const std::string& name) {
@@ -43,22 +37,20 @@ void GlassCatalog::LoadAgfText(const std::string& raw, const std::string& path, 
   int number = 0;
   while (std::getline(lines, line)) {
     ++number;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    std::istringstream tok(line);
-    std::string type;
-    if (!(tok >> type)) continue;
-    std::vector<std::string> f;
-    for (std::string t; tok >> t;) f.push_back(t);
+    std::vector<std::string> f = SplitFields(line);
+    if (f.empty()) continue;
+    const std::string type = f.front();
+    f.erase(f.begin());
     if (type == "NM") {
       // NM name formula MIL nd vd [exclude status melt]
       if (f.size() < 5) throw MakeInputError(path, number, "NM line needs name, formula, MIL, nd and vd");
-      double formula_number = Number(f[1], path, number);
+      double formula_number = ParseFiniteNumber(f[1], path, number);
       auto formula = DispersionFormulaFromNumber(int(formula_number));
       if (!formula || formula_number != std::floor(formula_number))
         throw MakeInputError(path, number, "glass {}: unknown dispersion formula {}", f[0], f[1]);
       auto glass = std::make_unique<Glass>(f[0], catalog, *formula, std::array<double, 10>{});
-      glass->catalog_nd = Number(f[3], path, number);
-      glass->catalog_vd = Number(f[4], path, number);
+      glass->catalog_nd = ParseFiniteNumber(f[3], path, number);
+      glass->catalog_vd = ParseFiniteNumber(f[4], path, number);
       std::string key = Upper(f[0]);
       if (table.count(key)) throw MakeInputError(path, number, "glass {} is listed twice", f[0]);
       current = glass.get();
@@ -68,17 +60,18 @@ void GlassCatalog::LoadAgfText(const std::string& raw, const std::string& path, 
       if (type == "CD") {
         if (f.empty() || f.size() > 10) throw MakeInputError(path, number, "CD line needs 1 to 10 coefficients");
         std::array<double, 10> c{};
-        for (size_t i = 0; i < f.size(); ++i) c[i] = Number(f[i], path, number);
+        for (size_t i = 0; i < f.size(); ++i) c[i] = ParseFiniteNumber(f[i], path, number);
         current->SetCoefficients(c);
       } else if (type == "LD") {
         if (f.size() < 2) throw MakeInputError(path, number, "LD line needs a minimum and a maximum wavelength");
-        current->lambda_min_um = Number(f[0], path, number);
-        current->lambda_max_um = Number(f[1], path, number);
+        current->lambda_min_um = ParseFiniteNumber(f[0], path, number);
+        current->lambda_max_um = ParseFiniteNumber(f[1], path, number);
         if (!(current->lambda_min_um < current->lambda_max_um))
           throw MakeInputError(path, number, "LD range is empty");
       } else {
         if (f.size() < 3) throw MakeInputError(path, number, "IT line needs wavelength, transmittance and thickness");
-        double l = Number(f[0], path, number), tau = Number(f[1], path, number), d = Number(f[2], path, number);
+        double l = ParseFiniteNumber(f[0], path, number), tau = ParseFiniteNumber(f[1], path, number);
+        double d = ParseFiniteNumber(f[2], path, number);
         // Implausible rows occur in real catalogs (HIKARI lists transmittances of 12 and
         // 1.959): one bad optional row should not make a catalog unusable. Skip it and say so
         // in the debug log (the shipped catalogs would otherwise warn on every run).

@@ -19,23 +19,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-double ParseNumber(const std::string& s, const std::string& path, int line) {
-  std::optional<double> v = ParseFiniteNumber(s);
-  if (!v) throw MakeInputError(path, line, "'{}' is not a finite number", s);
-  return *v;
-}
-
 std::shared_ptr<const Glass> ParseMedium(const std::string& m, const std::string& path, int line) {
   if (m == "air") return nullptr;
   if (m.rfind("n=", 0) == 0) {
-    double n = ParseNumber(m.substr(2), path, line);
+    double n = ParseFiniteNumber(m.substr(2), path, line);
     if (n < 1) throw MakeInputError(path, line, "index {} is below 1", n);
     return std::make_shared<const Glass>(Glass::Constant(n));
   }
   if (m.rfind("nd=", 0) == 0) {
     size_t comma = m.find(",vd=");
     if (comma == std::string::npos) throw MakeInputError(path, line, "a model glass is written nd=N,vd=V, got '{}'", m);
-    double nd = ParseNumber(m.substr(3, comma - 3), path, line), vd = ParseNumber(m.substr(comma + 4), path, line);
+    double nd = ParseFiniteNumber(m.substr(3, comma - 3), path, line);
+    double vd = ParseFiniteNumber(m.substr(comma + 4), path, line);
     if (nd < 1 || vd <= 0) throw MakeInputError(path, line, "model glass needs nd >= 1 and vd > 0");
     return std::make_shared<const Glass>(Glass::Model(nd, vd));
   }
@@ -66,9 +61,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
   while (std::getline(lines, line)) {
     ++number;
     if (size_t h = line.find('#'); h != std::string::npos) line.resize(h);
-    std::istringstream tok(line);
-    std::vector<std::string> f;
-    for (std::string t; tok >> t;) f.push_back(t);
+    std::vector<std::string> f = SplitFields(line);
     if (f.empty()) continue;
     if (f[0].back() == ':') {
       if (!lens.surfaces.empty()) throw MakeInputError(path, number, "metadata must come before the surfaces");
@@ -76,9 +69,9 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       for (size_t i = 1; i < f.size(); ++i) value += (i > 1 ? " " : "") + f[i];
       if (key == "name") lens.name = value;
       else if (key == "source") lens.source = value;
-      else if (key == "focal_length") lens.design_focal_length = ParseNumber(value, path, number);
-      else if (key == "fnumber") lens.design_fnumber = ParseNumber(value, path, number);
-      else if (key == "image_circle") lens.image_circle = ParseNumber(value, path, number);
+      else if (key == "focal_length") lens.design_focal_length = ParseFiniteNumber(value, path, number);
+      else if (key == "fnumber") lens.design_fnumber = ParseFiniteNumber(value, path, number);
+      else if (key == "image_circle") lens.image_circle = ParseFiniteNumber(value, path, number);
       else throw MakeInputError(path, number, "unknown key '{}' (name, source, focal_length, fnumber, image_circle)", key);
       continue;
     }
@@ -96,19 +89,19 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       if (f[1] == "inf" || f[1] == "c=0") {
         s.flat = true;
       } else if (f[1].rfind("c=", 0) == 0) {
-        s.radius = 1 / ParseNumber(f[1].substr(2), path, number);
+        s.radius = 1 / ParseFiniteNumber(f[1].substr(2), path, number);
       } else {
-        s.radius = ParseNumber(f[1], path, number);
+        s.radius = ParseFiniteNumber(f[1], path, number);
         if (s.radius == 0) throw MakeInputError(path, number, "radius 0: write inf for a plane (the stop is its own line)");
       }
       next = 2;
     } else {
       throw MakeInputError(path, number, "unknown line '{}' (surface, stop, or key: value)", f[0]);
     }
-    s.thickness = ParseNumber(f[next], path, number);
+    s.thickness = ParseFiniteNumber(f[next], path, number);
     if (s.thickness < 0) throw MakeInputError(path, number, "thickness must not be negative");
     s.medium = ParseMedium(f[next + 1], path, number);
-    s.semi_diameter = ParseNumber(f[next + 2], path, number);
+    s.semi_diameter = ParseFiniteNumber(f[next + 2], path, number);
     if (!(s.semi_diameter > 0)) throw MakeInputError(path, number, "semi-diameter must be positive");
     for (size_t i = next + 3; i < f.size(); ++i) {
       if (s.is_stop) throw MakeInputError(path, number, "the stop takes no options");
@@ -116,13 +109,13 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       if (eq == std::string::npos) throw MakeInputError(path, number, "option '{}' is not key=value", f[i]);
       std::string key = f[i].substr(0, eq), value = f[i].substr(eq + 1);
       if (key == "k") {
-        s.conic = ParseNumber(value, path, number);
+        s.conic = ParseFiniteNumber(value, path, number);
       } else if (key == "coating") {
         s.coating = value;
       } else if (key.size() >= 2 && key[0] == 'a' && std::all_of(key.begin() + 1, key.end(), ::isdigit)) {
         int order = std::atoi(key.c_str() + 1);
         if (order < 4 || order > 16 || order % 2) throw MakeInputError(path, number, "aspheric terms are a4, a6, ..., a16");
-        s.aspheric[(order - 4) / 2] = ParseNumber(value, path, number);
+        s.aspheric[(order - 4) / 2] = ParseFiniteNumber(value, path, number);
       } else {
         throw MakeInputError(path, number, "unknown option '{}' (k, a4..a16, coating)", key);
       }

@@ -41,14 +41,8 @@ LensPrescription ParsePbrtLens(const std::string& text, const std::string& path)
       }
       line.resize(hash);
     }
-    std::istringstream tok(line);
     std::vector<double> v;
-    std::string t;
-    while (tok >> t) {
-      std::optional<double> x = ParseFiniteNumber(t);
-      if (!x) throw MakeInputError(path, number, "'{}' is not a finite number", t);
-      v.push_back(*x);
-    }
+    for (const std::string& t : SplitFields(line)) v.push_back(ParseFiniteNumber(t, path, number));
     if (v.empty()) continue;
     if (v.size() != 4)
       throw MakeInputError(path, number, "a lens row needs 4 numbers (radius, thickness, index, aperture), got {}", v.size());

@@ -26,11 +26,10 @@ struct ZSurface {
   double parm[9] = {};
 };
 
+// Zemax writes infinite thicknesses and radii as words.
 double Number(const std::string& s, const std::string& path, int line) {
   if (s == "INFINITY" || s == "Infinity" || s == "inf") return INFINITY;
-  std::optional<double> v = ParseFiniteNumber(s);
-  if (!v) throw MakeInputError(path, line, "'{}' is not a number", s);
-  return *v;
+  return ParseFiniteNumber(s, path, line);
 }
 
 }  // namespace
@@ -59,12 +58,10 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path)
   ZSurface* cur = nullptr;
   while (std::getline(lines, line)) {
     ++number;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    std::istringstream tok(line);
-    std::string key;
-    if (!(tok >> key)) continue;
-    std::vector<std::string> f;
-    for (std::string t; tok >> t;) f.push_back(t);
+    std::vector<std::string> f = SplitFields(line);
+    if (f.empty()) continue;
+    const std::string key = f.front();
+    f.erase(f.begin());
     auto need = [&](size_t n) {
       if (f.size() < n) throw MakeInputError(path, number, "{} needs {} value(s)", key, n);
     };
