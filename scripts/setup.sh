@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config make
-  libembree-dev libtbb-dev libopenimageio-dev libopenexr-dev
+  libembree-dev libtbb-dev libopenimageio-dev openimageio-tools libopenexr-dev
   libpugixml-dev libtinyobjloader-dev libassimp-dev
   libcli11-dev libfmt-dev libspdlog-dev
   libgtest-dev libgmock-dev libbenchmark-dev
