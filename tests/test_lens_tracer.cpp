@@ -156,22 +156,22 @@ TEST(LensTracer, BladedStops) {
   LensTracer t(LoadLens("dgauss.50mm"));
   double r = t.StopSemiDiameter();
   EXPECT_TRUE(t.InsideStop(0.99 * r, 0));
-  t.SetStopBlades(6, 0, 0);  // corners at 0, 60, 120 ... degrees
+  t.SetStopShape(StopShape::Iris(6, 0, 0));  // corners at 0, 60, 120 ... degrees
   EXPECT_TRUE(t.InsideStop(0.99 * r, 0));  // toward a corner
   double flat = r * std::cos(M_PI / 6);     // the edge's distance, between corners (30 degrees)
   EXPECT_TRUE(t.InsideStop(0.99 * flat * std::cos(M_PI / 6), 0.99 * flat * std::sin(M_PI / 6)));
   EXPECT_FALSE(t.InsideStop(1.01 * flat * std::cos(M_PI / 6), 1.01 * flat * std::sin(M_PI / 6)));
-  t.SetStopBlades(6, 0, 30);  // rotated: now an edge faces +x
+  t.SetStopShape(StopShape::Iris(6, 0, 30 * M_PI / 180));  // rotated: now an edge faces +x
   EXPECT_FALSE(t.InsideStop(0.95 * r, 0));
-  t.SetStopBlades(6, 1, 0);  // fully curved blades: a circle
+  t.SetStopShape(StopShape::Iris(6, 1, 0));  // fully curved blades: a circle
   EXPECT_TRUE(t.InsideStop(0.99 * r * std::cos(M_PI / 6), 0.99 * r * std::sin(M_PI / 6)));
-  t.SetStopBlades(6, 0.5, 0);  // in between: outside the straight edge, inside the circle
+  t.SetStopShape(StopShape::Iris(6, 0.5, 0));  // in between: outside the straight edge, inside the circle
   Vec2d mid(r * std::cos(M_PI / 6), r * std::sin(M_PI / 6));
   double m = flat + 0.5 * (r - flat);
   EXPECT_TRUE(t.InsideStop(0.99 * m * mid.x / r, 0.99 * m * mid.y / r));
   EXPECT_FALSE(t.InsideStop(1.01 * m * mid.x / r, 1.01 * m * mid.y / r));
   // The opening's area: a regular hexagon is 3 sqrt(3) / (2 pi) of the circle.
-  t.SetStopBlades(6, 0, 0);
+  t.SetStopShape(StopShape::Iris(6, 0, 0));
   int in = 0, n = 400;
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) in += t.InsideStop(r * (2.0 * (i + 0.5) / n - 1), r * (2.0 * (j + 0.5) / n - 1));

@@ -83,7 +83,7 @@ TEST(PupilBounds, TheBoundContainsAllTheLight) {
         PupilBounds::Sample s = bounds.SampleRear(film, {rng.UniformFloat(), rng.UniformFloat()});
         if (s.pdf > 0) via_bound += bool(t.TraceFromFilm({o, Normalize(s.point - o)}, 587.5618).ray);
       }
-      const ConvexPolygon* poly = bounds.BoundAt(fr * radius);
+      const ConvexPolygon* poly = bounds.BoundAt(film);
       double a_brute = M_PI * rear * rear * brute / n;
       double a_bound = poly ? poly->area * via_bound / n : 0;
       // Binomial standard errors of both estimates.

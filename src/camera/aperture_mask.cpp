@@ -27,4 +27,22 @@ float ApertureMask::Transmittance(float x, float y) const {
   return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x1, y0)) + fy * ((1 - fx) * at(x0, y1) + fx * at(x1, y1));
 }
 
+ConvexPolygon ApertureMask::OpenHull() const {
+  // A pixel's value reaches one pixel to each side through the bilinear lookup, and no
+  // further than the image's border: per row, the footprints of its outermost open pixels.
+  auto u_to_x = [&](double u) { return 1 - 2 * (std::clamp(u, -0.5, width_ - 0.5) + 0.5) / width_; };
+  auto v_to_y = [&](double v) { return 1 - 2 * (std::clamp(v, -0.5, height_ - 0.5) + 0.5) / height_; };
+  std::vector<Vec2d> corners;
+  for (int y = 0; y < height_; ++y) {
+    const float* row = &values_[size_t(y) * width_];
+    int first = 0, last = width_ - 1;
+    while (first < width_ && row[first] == 0) ++first;
+    if (first == width_) continue;
+    while (row[last] == 0) --last;
+    for (double u : {first - 1.0, last + 1.0})
+      for (double v : {y - 1.0, y + 1.0}) corners.push_back({u_to_x(u), v_to_y(v)});
+  }
+  return ConvexPolygon::HullOf(std::move(corners));
+}
+
 }  // namespace objektiv

@@ -18,6 +18,13 @@ double WideOpenFNumber(const LensPrescription& lens) { return RealFNumber(LensTr
 
 namespace {
 
+// The stop's opening: the iris, cut to where the aperture mask lets light through.
+StopShape StopOpening(const LensCameraSpec& spec) {
+  StopShape shape = StopShape::Iris(spec.blades, spec.blade_curvature, spec.blade_rotation * M_PI / 180);
+  if (spec.settings.aperture_mask) shape.Cut(spec.settings.aperture_mask->OpenHull());
+  return shape;
+}
+
 // The lens with its stop set as asked; `fnumber` receives the f-number of the round stop
 // (before blades are put in).
 LensTracer StoppedDown(const LensCameraSpec& spec, double* fnumber) {
@@ -42,7 +49,7 @@ LensTracer StoppedDown(const LensCameraSpec& spec, double* fnumber) {
     tracer.SetStopSemiDiameter(*semi);
   }
   *fnumber = RealFNumber(tracer);
-  if (spec.blades >= 3) tracer.SetStopBlades(spec.blades, spec.blade_curvature, spec.blade_rotation);
+  tracer.SetStopShape(StopOpening(spec));
   return tracer;
 }
 
@@ -87,8 +94,7 @@ std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int
     camera = std::move(real);
   } else {
     ParaxialLensModel m = MakeParaxialModel(tracer, focus.object_distance, spec.model == LensModel::kThin);
-    camera = std::make_unique<ParaxialLensCamera>(to_world, width, height, m, spec.blades, spec.blade_rotation,
-                                                  spec.settings);
+    camera = std::make_unique<ParaxialLensCamera>(to_world, width, height, m, tracer.stop_shape(), spec.settings);
   }
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   spdlog::info("lens camera set up in {:.3f} s", seconds);

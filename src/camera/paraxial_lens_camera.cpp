@@ -43,17 +43,16 @@ ParaxialLensModel MakeParaxialModel(const LensTracer& tracer, double distance_fr
 }
 
 ParaxialLensCamera::ParaxialLensCamera(const Transform& to_world, int width, int height, const ParaxialLensModel& model,
-                                       int blades, double blade_rotation_deg, const LensCameraSettings& settings)
-    : LensCamera(to_world, width, height, settings), m_(model), blades_(blades),
-      blade_rotation_(float(blade_rotation_deg * M_PI / 180)) {
+                                       const StopShape& stop, const LensCameraSettings& settings)
+    : LensCamera(to_world, width, height, settings), m_(model), stop_(stop) {
   SetOriginZ(m_.entrance_pupil_z);
 }
 
 std::optional<CameraRay> ParaxialLensCamera::GenerateRay(const CameraSample& s, SampledWavelengths&) const {
   Vec2d film = FilmPoint(s.p_film);
-  // A point of the exit pupil (circle or regular polygon inscribed in it).
-  Vec2f u = blades_ >= 3 ? SampleRegularPolygon(blades_, blade_rotation_, s.p_lens) : SampleUniformDiskConcentric(s.p_lens);
-  double area = (blades_ >= 3 ? RegularPolygonArea(blades_) : M_PI) * m_.exit_pupil_radius * m_.exit_pupil_radius;
+  // A point of the exit pupil (the iris inscribed in it).
+  Vec2d u = stop_.SampleIris(Vec2d(s.p_lens.x, s.p_lens.y));
+  double area = stop_.IrisArea() * m_.exit_pupil_radius * m_.exit_pupil_radius;
   Vec3d f(film.x, film.y, m_.film_z), xp(u.x * m_.exit_pupil_radius, u.y * m_.exit_pupil_radius, m_.exit_pupil_z);
   double dz = m_.film_z - m_.exit_pupil_z;
   Vec3d to_pupil = Normalize(xp - f);
@@ -73,7 +72,7 @@ std::optional<CameraRay> ParaxialLensCamera::GenerateRay(const CameraSample& s, 
     d = object > 0 ? Normalize(o - ep) : Normalize(ep - o);
   }
   float w = Weight(film, -to_pupil.z, dz, 1 / area);
-  if (settings_.aperture_mask) w *= settings_.aperture_mask->Transmittance(u.x, u.y);
+  if (settings_.aperture_mask) w *= settings_.aperture_mask->Transmittance(float(u.x), float(u.y));
   CameraRay cr;
   cr.ray = WorldRay(ep, d);
   cr.weight = SampledSpectrum(w);

@@ -24,15 +24,16 @@ ParaxialLensModel MakeParaxialModel(const LensTracer& tracer, double distance_fr
 
 class ParaxialLensCamera final : public LensCamera {
  public:
-  ParaxialLensCamera(const Transform& to_world, int width, int height, const ParaxialLensModel& model, int blades,
-                     double blade_rotation_deg, const LensCameraSettings& settings);
+  // `stop`: the opening laid over the exit pupil (its iris is sampled; an aperture mask, in the
+  // settings, weights the light).
+  ParaxialLensCamera(const Transform& to_world, int width, int height, const ParaxialLensModel& model,
+                     const StopShape& stop, const LensCameraSettings& settings);
   std::optional<CameraRay> GenerateRay(const CameraSample& s, SampledWavelengths& lambda) const override;
   const ParaxialLensModel& model() const { return m_; }
 
  private:
   ParaxialLensModel m_;
-  int blades_;
-  float blade_rotation_;
+  StopShape stop_;
 };
 
 }  // namespace objektiv

@@ -17,7 +17,7 @@ constexpr int kTableSize = 471;  // 1 nm steps
 }  // namespace
 
 BatchLensTracer::BatchLensTracer(const LensTracer& tracer)
-    : film_z_(float(tracer.FilmZ())), shape_(tracer), bladed_(tracer.StopIsBladed()) {
+    : film_z_(float(tracer.FilmZ())), stop_shape_(tracer.stop_shape()), stop_semi_(float(tracer.StopSemiDiameter())) {
   const LensPrescription& lens = tracer.lens();
   index_tables_.push_back(std::vector<float>(kTableSize, 1.f));  // air
   absorption_tables_.push_back(std::vector<float>(kTableSize, 0.f));
@@ -56,6 +56,12 @@ BatchLensTracer::BatchLensTracer(const LensTracer& tracer)
 void BatchLensTracer::IgnoreRims() {
   for (Surface& s : surfaces_)
     if (!s.is_stop) s.semi2 = INFINITY;
+}
+
+BatchLensTracer BatchLensTracer::WithStopShape(const StopShape& shape) const {
+  BatchLensTracer t = *this;
+  t.stop_shape_ = shape;
+  return t;
 }
 
 void BatchLensTracer::TraceFromFilm(RayBatch& rays, bool transmission) const { Trace(rays, true, transmission); }
@@ -238,10 +244,12 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
         rays.stop_x.assign(rays.ox.begin(), rays.ox.end());
         rays.stop_y.assign(rays.oy.begin(), rays.oy.end());
       }
-      // A bladed stop: the circle was tested above, the blades here.
-      if (bladed_)
+      // Any other opening: the circle was tested above, the rest here.
+      if (!stop_shape_.IsRound()) {
+        const float inv = 1 / stop_semi_;
         for (size_t j = 0; j < count; ++j)
-          if (rays.alive[j] && !shape_.InsideStop(rays.ox[j], rays.oy[j])) rays.alive[j] = 0;
+          if (rays.alive[j] && !stop_shape_.Contains(rays.ox[j] * inv, rays.oy[j] * inv)) rays.alive[j] = 0;
+      }
     }
   }
   if (absorbing)

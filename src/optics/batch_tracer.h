@@ -51,6 +51,8 @@ class BatchLensTracer {
   void TraceFromObject(RayBatch& rays, bool transmission = true) const;
   // Without the rims: only the stop clips (to show a lens without optical vignetting).
   void IgnoreRims();
+  // The same lens with another opening of the stop (the pupil bounds probe turned irises).
+  BatchLensTracer WithStopShape(const StopShape& shape) const;
   float FilmZ() const { return film_z_; }
 
  private:
@@ -68,8 +70,9 @@ class BatchLensTracer {
   std::vector<uint8_t> constant_index_;  // per medium: the same index at every wavelength
   bool absorbing_ = false;               // any glass absorbs somewhere in the range
   float film_z_;
-  LensTracer shape_;  // a copy, for bladed stops (the circle is tested inline)
-  bool bladed_;
+  // The opening, where not round (the circle is tested inline), and the stop's radius.
+  StopShape stop_shape_;
+  float stop_semi_;
 };
 
 }  // namespace objektiv

@@ -25,31 +25,9 @@ void LensTracer::SetStopSemiDiameter(double r) {
 
 double LensTracer::StopSemiDiameter() const { return stop_semi_; }
 
-void LensTracer::SetStopBlades(int blades, double curvature, double rotation_deg) {
-  blades_ = blades >= 3 ? blades : 0;
-  blade_curvature_ = std::clamp(curvature, 0.0, 1.0);
-  blade_rotation_ = rotation_deg * M_PI / 180;
-}
-
 bool LensTracer::InsideStop(double x, double y) const {
-  double r2 = x * x + y * y;
-  if (r2 > stop_semi_ * stop_semi_) return false;
-  if (blades_ == 0) return true;
-  // Corners at rotation + k sector; rotate into the frame of the blade the point faces, whose
-  // midline (through the middle of its edge) becomes +x.
-  double sector = 2 * M_PI / blades_, half = sector / 2;
-  double phi = std::atan2(y, x) - blade_rotation_;
-  phi -= sector * std::floor(phi / sector);
-  double a = phi - half, r = std::sqrt(r2);
-  double px = r * std::cos(a), py = r * std::sin(a);
-  double inner = stop_semi_ * std::cos(half);  // the straight blade's distance from the centre
-  if (blade_curvature_ == 0) return px <= inner;
-  // A circular arc through the two corners and bulging out to m on the bisector.
-  double m = inner + blade_curvature_ * (stop_semi_ - inner);
-  if (m >= stop_semi_) return true;  // the circle itself
-  double xc = (stop_semi_ * stop_semi_ - m * m) / (2 * (inner - m));
-  double radius = m - xc;
-  return (px - xc) * (px - xc) + py * py <= radius * radius;
+  if (x * x + y * y > stop_semi_ * stop_semi_) return false;
+  return stop_shape_.IsRound() || stop_shape_.Contains(x / stop_semi_, y / stop_semi_);
 }
 
 std::optional<Vec3d> LensTracer::StopCrossingFromFilm(const LensRay& ray, double lambda_nm) const {

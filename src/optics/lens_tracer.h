@@ -6,6 +6,7 @@
 
 #include "base/vec.h"
 #include "optics/lens_prescription.h"
+#include "optics/stop_shape.h"
 
 namespace objektiv {
 
@@ -55,17 +56,15 @@ class LensTracer {
   // The stop's semi-diameter may be narrowed (never widened) to set an f-number.
   void SetStopSemiDiameter(double r);
   double StopSemiDiameter() const;
-  bool StopIsBladed() const { return blades_ >= 3; }
+  // The opening's shape (round, an iris of blades, cut by a mask's support); see StopShape.
+  void SetStopShape(const StopShape& shape) { stop_shape_ = shape; }
+  const StopShape& stop_shape() const { return stop_shape_; }
 
   // Moves the film to `distance` mm behind the last vertex (the last thickness).
   void SetBackFocus(double distance) { film_z_ = vertex_z_.back() + distance; }
   const LensPrescription& lens() const { return lens_; }
   double VertexZ(int i) const { return vertex_z_[i]; }
   double FilmZ() const { return film_z_; }
-  // The stop's polygonal shape: `blades` straight or curved blades (0: circular), rotated by
-  // `rotation_deg`; `curvature` 0 gives straight blades, 1 a circle, in between circular
-  // arcs through the polygon's corners.
-  void SetStopBlades(int blades, double curvature, double rotation_deg);
   // Whether (x, y) in the stop plane lies inside the opening.
   bool InsideStop(double x, double y) const;
   // Sag z(r) of surface i relative to its vertex, and dz/dr.
@@ -83,8 +82,7 @@ class LensTracer {
   std::vector<double> vertex_z_;
   double film_z_ = 0;
   double stop_semi_ = 0;
-  int blades_ = 0;
-  double blade_curvature_ = 0, blade_rotation_ = 0;
+  StopShape stop_shape_;
 };
 
 }  // namespace objektiv

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <memory>
 
 #include <tbb/parallel_for.h>
 
@@ -11,47 +12,6 @@
 #include "optics/paraxial.h"
 
 namespace objektiv {
-
-namespace {
-
-double Cross(Vec2d o, Vec2d a, Vec2d b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
-
-// Andrew's monotone chain: the convex hull, counter-clockwise.
-std::vector<Vec2d> ConvexHull(std::vector<Vec2d> p) {
-  std::sort(p.begin(), p.end(), [](Vec2d a, Vec2d b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  p.erase(std::unique(p.begin(), p.end()), p.end());
-  if (p.size() < 3) return p;
-  std::vector<Vec2d> h(2 * p.size());
-  size_t k = 0;
-  for (size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && Cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
-    h[k++] = p[i];
-  }
-  for (size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
-    while (k >= t && Cross(h[k - 2], h[k - 1], p[i - 1]) <= 0) --k;
-    h[k++] = p[i - 1];
-  }
-  h.resize(k - 1);
-  return h;
-}
-
-double PolygonArea(const std::vector<Vec2d>& v) {
-  double a = 0;
-  for (size_t i = 0; i < v.size(); ++i) {
-    const Vec2d &p = v[i], &q = v[(i + 1) % v.size()];
-    a += p.x * q.y - q.x * p.y;
-  }
-  return 0.5 * a;
-}
-
-}  // namespace
-
-bool ConvexPolygon::Contains(Vec2d p) const {
-  if (vertices.size() < 3) return false;
-  for (size_t i = 0; i < vertices.size(); ++i)
-    if (Cross(vertices[i], vertices[(i + 1) % vertices.size()], p) < 0) return false;
-  return true;
-}
 
 namespace {
 
@@ -202,25 +162,50 @@ std::vector<Vec2d> TraceEdge(const RegionProbe& probe, Vec2d c, double limit, do
 
 // The convex hull of edge points grown by `grow` (each point becomes a small square), so that
 // the edge tolerance and the bisection's step leave no light outside.
-std::vector<Vec2d> GrownHull(std::initializer_list<const std::vector<Vec2d>*> edges, double grow) {
+ConvexPolygon GrownHull(std::initializer_list<const std::vector<Vec2d>*> edges, double grow) {
   std::vector<Vec2d> corners;
   for (const std::vector<Vec2d>* edge : edges)
     for (const Vec2d& q : *edge)
       for (double dx : {-grow, grow})
         for (double dy : {-grow, grow}) corners.push_back({q.x + dx, q.y + dy});
-  return ConvexHull(corners);
+  return ConvexPolygon::HullOf(std::move(corners));
 }
 
-double HullArea(const std::vector<Vec2d>& hull) { return hull.size() >= 3 ? PolygonArea(hull) : 0; }
+// How far q lies outside the convex polygon (0 inside).
+double Protrusion(const ConvexPolygon& poly, Vec2d q) {
+  if (poly.Contains(q)) return 0;
+  double best = INFINITY;
+  const std::vector<Vec2d>& v = poly.vertices;
+  for (size_t i = 0; i < v.size(); ++i) {
+    const Vec2d a = v[i], ab = v[(i + 1) % v.size()] - a, aq = q - a;
+    const double t = std::clamp((aq.x * ab.x + aq.y * ab.y) / std::max(ab.x * ab.x + ab.y * ab.y, 1e-300), 0.0, 1.0);
+    best = std::min(best, std::hypot(aq.x - t * ab.x, aq.y - t * ab.y));
+  }
+  return best;
+}
+
+// The edge of the passing region for one film point (all wavelengths together): the hull of
+// the edge points, how much to grow it, and the area of the grown hull.
+struct Edge {
+  std::vector<Vec2d> hull;
+  double grow = 0;   // 0.2% of the region's size (its largest distance from the probe's centre)
+  double area = 0;
+};
+
+// The tracers that probe one azimuth of the table: the stop's opening turned as a film point
+// at that azimuth sees it.
+struct AzimuthTracers {
+  BatchLensTracer fast;
+  LensTracer exact;
+};
 
 }  // namespace
 
-PupilBounds::Region PupilBounds::MakeRegion(std::vector<Vec2d> hull) {
+PupilBounds::Region PupilBounds::MakeRegion(ConvexPolygon hull) {
   Region region;
+  if (!(hull.area > 0)) return region;
   ConvexPolygon& poly = region.poly;
-  poly.area = HullArea(hull);
-  if (!(poly.area > 0)) return region;
-  poly.vertices = std::move(hull);
+  poly = std::move(hull);
   // Fan triangles from vertex 0, chosen in proportion to their area.
   std::vector<double>& cdf = region.cdf;
   double acc = 0;
@@ -239,8 +224,8 @@ PupilBounds::Region PupilBounds::MakeRegion(std::vector<Vec2d> hull) {
 }
 
 PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, const PupilBoundsOptions& options)
-    : film_radius_(film_radius) {
-  const int bins = options.bins;
+    : bins_(options.bins), symmetry_(tracer.stop_shape().symmetry()), film_radius_(film_radius) {
+  const int bins = bins_;
   const std::vector<double>& lambdas = options.wavelengths;
   const LensPrescription& lens = tracer.lens();
   const int last = int(lens.surfaces.size()) - 1;
@@ -255,50 +240,162 @@ PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, const Pup
   const double film_z = tracer.FilmZ();
   BatchLensTracer fast(tracer);
   if (!options.rims) fast.IgnoreRims();
-  // The edge of the passing region for one film radius, all wavelengths together, and the
-  // area its grown hull bounds.
-  struct Edge {
-    std::vector<Vec2d> points;
-    double grow = 0;  // 0.2% of the region's size (its largest distance from the probe's centre)
-    double area = 0;
-  };
-  auto edge_at = [&](double r) {
+
+  // The azimuth table. A round stop: one column, regions in the film point's frame. Any other
+  // opening: regions in the opening's frame (lens space turned by -axis, where the opening
+  // stays put and only the vignetting turns with the film point), over azimuths psi in
+  // [0, span_] from the axis, in columns of 22.5 degrees or less, each bin's halved (five
+  // times at most) while the regions at two neighbouring azimuths differ so much that their
+  // common hull wastes more than 4% of the smaller one's rays.
+  round_ = symmetry_.order == 0;
+  period_ = round_ ? 2 * M_PI : 2 * M_PI / symmetry_.order;
+  span_ = round_ ? 0 : (symmetry_.mirror ? period_ / 2 : period_);
+  const int first_columns = round_ ? 1 : std::max(1, int(std::ceil(span_ / (M_PI / 8) - 1e-9)));
+  const int max_columns = round_ ? 1 : first_columns << (symmetry_.order == 1 ? 2 : 5);
+  for (int k = 0; k < (round_ ? 0 : symmetry_.order); ++k)
+    turns_.push_back({std::cos(symmetry_.axis + k * period_), std::sin(symmetry_.axis + k * period_)});
+
+  // Azimuth node m of the finest grid (psi = span_ m / max_columns): its tracers (made before
+  // each parallel stage) and the edge there at each radial node k (film_radius k / bins).
+  std::vector<std::unique_ptr<AzimuthTracers>> tracers(max_columns + 1);
+  auto psi_of = [&](int m) { return span_ * m / max_columns; };
+  auto edge_at = [&](double r, int m) {
+    const AzimuthTracers& t = *tracers[m];
+    // Probed with the film point on +x (the opening turned by -(axis + psi)), then turned by
+    // psi into the opening's frame.
+    const double c = std::cos(psi_of(m)), sn = std::sin(psi_of(m));
     Edge edge;
+    std::vector<Vec2d> points;
     double size = 0;
     for (double lambda : lambdas) {
-      RegionProbe probe(fast, tracer, r, film_z, rear_z_, lambda);
-      std::optional<Vec2d> c = probe.Inside(half);
-      if (!c) continue;
+      RegionProbe probe(t.fast, t.exact, r, film_z, rear_z_, lambda);
+      std::optional<Vec2d> centre = probe.Inside(half);
+      if (!centre) continue;
       // Tolerance: a thousandth of the region's size (its first estimate: the exit pupil).
       double tol = 1e-3 * std::max(p.exit_pupil_diameter, 1e-9);
-      std::vector<Vec2d> e = TraceEdge(probe, *c, 2 * half, tol);
-      for (const Vec2d& q : e) size = std::max(size, std::hypot(q.x - c->x, q.y - c->y));
-      edge.points.insert(edge.points.end(), e.begin(), e.end());
+      for (const Vec2d& q : TraceEdge(probe, *centre, 2 * half, tol)) {
+        size = std::max(size, std::hypot(q.x - centre->x, q.y - centre->y));
+        points.push_back(m == 0 ? q : Vec2d(c * q.x - sn * q.y, sn * q.x + c * q.y));
+      }
     }
+    edge.hull = ConvexHull(std::move(points));
     edge.grow = 2e-3 * size;
-    edge.area = HullArea(GrownHull({&edge.points}, edge.grow));
+    edge.area = GrownHull({&edge.hull}, edge.grow).area;
     return edge;
   };
-  // Each bin is one annulus, or where the region changes fast across it (at the rim of a
-  // fisheye's image circle, say), halves, quarters, ... of it: a sub-annulus is split while
-  // the hull of both its ends is more than 4% larger than the smaller end (a film point at
-  // that end would waste more than 4% of its rays).
+  std::vector<std::vector<Edge>> nodes(bins + 1, std::vector<Edge>(max_columns + 1));
+  std::vector<std::vector<uint8_t>> traced(bins + 1, std::vector<uint8_t>(max_columns + 1, 0));
+  // Traces the nodes that bins of `columns[b]` columns need and have not been traced.
+  auto trace_nodes = [&](const std::vector<int>& columns) {
+    std::vector<std::pair<int, int>> todo;
+    for (int b = 0; b < bins; ++b) {
+      const int step = max_columns / columns[b];
+      for (int k = b; k <= b + 1; ++k)
+        for (int m = 0; m <= (round_ ? 0 : max_columns); m += step)
+          if (!traced[k][m]) traced[k][m] = 1, todo.push_back({k, m});
+    }
+    for (auto [k, m] : todo)
+      if (!tracers[m]) {
+        const StopShape turned = tracer.stop_shape().Rotated(-(symmetry_.axis + psi_of(m)));
+        LensTracer exact = tracer;
+        exact.SetStopShape(turned);
+        tracers[m] = std::make_unique<AzimuthTracers>(AzimuthTracers{fast.WithStopShape(turned), std::move(exact)});
+      }
+    tbb::parallel_for(size_t(0), todo.size(), [&](size_t i) {
+      nodes[todo[i].first][todo[i].second] = edge_at(film_radius * todo[i].first / bins, todo[i].second);
+    });
+  };
+  // Between two azimuth nodes the region moves (the vignetting turns with the film point): the
+  // region half-way between them may stick out of their common hull, by `Protrusion`; the
+  // cell's hull is grown by twice the most it sticks out at either radius (the largest
+  // departure from the chord of a smooth motion is near the middle). A bin's columns are halved
+  // while that hull wastes more than 4% of the rays of the smaller region at a column's edge.
+  struct ColumnFit {
+    bool fine;
+    double margin;
+  };
+  auto fit_column = [&](int b, int m0, int m1) {
+    ColumnFit fit{true, 0};
+    for (int k = b; k <= b + 1; ++k) {
+      const Edge &e0 = nodes[k][m0], &e1 = nodes[k][m1], &mid = nodes[k][(m0 + m1) / 2];
+      ConvexPolygon both = GrownHull({&e0.hull, &e1.hull}, std::max(e0.grow, e1.grow));
+      if (mid.area > 0 && both.Empty()) return ColumnFit{false, 0};  // light only in between
+      for (const Vec2d& q : mid.hull) fit.margin = std::max(fit.margin, 2 * Protrusion(both, q));
+    }
+    for (int k = b; k <= b + 1; ++k) {
+      const Edge &e0 = nodes[k][m0], &e1 = nodes[k][m1];
+      const double smaller = std::min(e0.area, e1.area);
+      if (smaller > 0 && GrownHull({&e0.hull, &e1.hull}, std::max(e0.grow, e1.grow) + fit.margin).area > 1.04 * smaller)
+        fit.fine = false;
+    }
+    return fit;
+  };
+  columns_.assign(bins, first_columns);
+  std::vector<std::vector<double>> margins(bins, std::vector<double>(1, 0.0));
+  std::vector<uint8_t> settled(bins, round_);
+  for (;;) {
+    // Each unsettled bin also needs the azimuths half-way between its columns' edges.
+    std::vector<int> needed(bins);
+    for (int b = 0; b < bins; ++b) needed[b] = settled[b] ? columns_[b] : 2 * columns_[b];
+    trace_nodes(needed);
+    bool refined = false;
+    for (int b = 0; b < bins; ++b) {
+      if (settled[b]) continue;
+      const int step = max_columns / columns_[b];
+      bool fine = true;
+      margins[b].assign(columns_[b], 0);
+      for (int j = 0; j < columns_[b]; ++j) {
+        ColumnFit fit = fit_column(b, j * step, (j + 1) * step);
+        fine &= fit.fine;
+        margins[b][j] = fit.margin;
+      }
+      // At the finest columns traced, keep their margins (the mid-points of the next level are
+      // not traced) as they are.
+      if (fine || 4 * columns_[b] > max_columns) settled[b] = 1;
+      else columns_[b] *= 2, refined = true;
+    }
+    if (!refined) break;
+  }
+
+  // A cell end: the edges at both of its column's azimuths, and the column's margin.
+  struct End {
+    const Edge *a, *b;
+    double grow, area;
+  };
+  auto make_end = [&](const Edge& a, const Edge& b, double margin) {
+    End e{&a, &b, std::max(a.grow, b.grow) + margin, 0};
+    e.area = GrownHull({&a.hull, &b.hull}, e.grow).area;
+    return e;
+  };
+  // Each cell is one annulus of one column, or where the region changes fast across it (at
+  // the rim of a fisheye's image circle, say), halves, quarters, ... of it: a sub-annulus is
+  // split while the hull of both its ends is more than 4% larger than the smaller end (a film
+  // point at that end would waste more than 4% of its rays).
   const int max_depth = 5;
-  struct BinRegions {
+  struct CellRegions {
     std::vector<Region> regions;
     std::vector<uint32_t> leaves;  // per finest sub-annulus, its region
   };
-  std::vector<BinRegions> per_bin(bins);
-  std::vector<Edge> ends(bins + 1);
-  tbb::parallel_for(0, bins + 1, [&](int k) { ends[k] = edge_at(film_radius * k / bins); });
-  tbb::parallel_for(0, bins, [&](int bin) {
-    BinRegions& out = per_bin[bin];
-    std::function<void(double, double, const Edge&, const Edge&, int)> build =
-        [&](double r0, double r1, const Edge& e0, const Edge& e1, int depth) {
-          std::vector<Vec2d> both = GrownHull({&e0.points, &e1.points}, std::max(e0.grow, e1.grow));
-          if (depth < max_depth && HullArea(both) > 1.04 * std::min(e0.area, e1.area)) {
+  std::vector<std::pair<int, int>> cell_list;  // (bin, column)
+  for (int b = 0; b < bins; ++b) {
+    bin_first_cell_.push_back(uint32_t(cell_list.size()));
+    for (int j = 0; j < columns_[b]; ++j) cell_list.push_back({b, j});
+  }
+  std::vector<CellRegions> per_cell(cell_list.size());
+  tbb::parallel_for(size_t(0), cell_list.size(), [&](size_t cell) {
+    const auto [bin, j] = cell_list[cell];
+    const int step = max_columns / columns_[bin];
+    const int m0 = j * step, m1 = round_ ? m0 : (j + 1) * step;
+    const double margin = round_ ? 0 : margins[bin][j];
+    CellRegions& out = per_cell[cell];
+    std::function<void(double, double, const End&, const End&, int)> build =
+        [&](double r0, double r1, const End& e0, const End& e1, int depth) {
+          const double grow = std::max(e0.grow, e1.grow);
+          ConvexPolygon both = GrownHull({&e0.a->hull, &e0.b->hull, &e1.a->hull, &e1.b->hull}, grow);
+          if (depth < max_depth && both.area > 1.04 * std::min(e0.area, e1.area)) {
             double rm = 0.5 * (r0 + r1);
-            Edge em = edge_at(rm);
+            Edge ma = edge_at(rm, m0), mb = m1 == m0 ? Edge() : edge_at(rm, m1);
+            End em = make_end(ma, m1 == m0 ? ma : mb, margin);
             build(r0, rm, e0, em, depth + 1);
             build(rm, r1, em, e1, depth + 1);
             return;
@@ -306,39 +403,60 @@ PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, const Pup
           out.leaves.insert(out.leaves.end(), size_t(1) << (max_depth - depth), uint32_t(out.regions.size()));
           out.regions.push_back(MakeRegion(std::move(both)));
         };
-    build(film_radius * bin / bins, film_radius * (bin + 1) / bins, ends[bin], ends[bin + 1], 0);
+    build(film_radius * bin / bins, film_radius * (bin + 1) / bins, make_end(nodes[bin][m0], nodes[bin][m1], margin),
+          make_end(nodes[bin + 1][m0], nodes[bin + 1][m1], margin), 0);
   });
-  // Flatten; a bin with one region needs no sub-annuli.
-  for (int bin = 0; bin < bins; ++bin) {
-    BinRegions& b = per_bin[bin];
+  // Flatten; a cell with one region needs no sub-annuli.
+  for (CellRegions& c : per_cell) {
     const uint32_t base = uint32_t(regions_.size());
-    bin_first_.push_back(uint32_t(leaves_.size()));
-    bin_levels_.push_back(b.regions.size() == 1 ? 0 : uint8_t(max_depth));
-    if (b.regions.size() == 1) leaves_.push_back(base);
+    cell_first_.push_back(uint32_t(leaves_.size()));
+    cell_levels_.push_back(c.regions.size() == 1 ? 0 : uint8_t(max_depth));
+    if (c.regions.size() == 1) leaves_.push_back(base);
     else
-      for (uint32_t leaf : b.leaves) leaves_.push_back(base + leaf);
-    for (Region& r : b.regions) regions_.push_back(std::move(r));
+      for (uint32_t leaf : c.leaves) leaves_.push_back(base + leaf);
+    for (Region& r : c.regions) regions_.push_back(std::move(r));
   }
 }
 
-const PupilBounds::Region* PupilBounds::RegionAt(double r) const {
-  double x = r / film_radius_ * bin_first_.size();
+PupilBounds::Frame PupilBounds::FrameOf(Vec2d film) const {
+  const double r = std::sqrt(film.x * film.x + film.y * film.y);
+  Frame f{r, 0, false, Vec2d(r > 0 ? film.x / r : 1, r > 0 ? film.y / r : 0)};
+  if (round_) return f;  // the film point's own frame
+  // The azimuth from the axis: turns by whole periods (k), then the mirror (psi and period - psi
+  // mirror each other about the axis of the next period).
+  double psi = std::atan2(f.cos_sin.y, f.cos_sin.x) - symmetry_.axis;
+  const double periods = std::floor(psi / period_);
+  psi -= period_ * periods;
+  int k = int(periods);
+  if (symmetry_.mirror && psi > span_) psi = period_ - psi, f.mirrored = true, ++k;
+  k %= symmetry_.order;
+  if (k < 0) k += symmetry_.order;
+  f.cos_sin = turns_[k];
+  f.psi = psi;
+  return f;
+}
+
+const PupilBounds::Region* PupilBounds::RegionAt(const Frame& f) const {
+  double x = f.r / film_radius_ * bins_;
   int bin = int(x);
-  if (bin < 0 || bin >= int(bin_first_.size())) return nullptr;
-  int levels = bin_levels_[bin];
+  if (bin < 0 || bin >= bins_) return nullptr;
+  const int columns = columns_[bin];
+  const int column = round_ ? 0 : std::clamp(int(f.psi / span_ * columns), 0, columns - 1);
+  const int cell = bin_first_cell_[bin] + column;
+  int levels = cell_levels_[cell];
   int sub = std::min(int((x - bin) * (1 << levels)), (1 << levels) - 1);
-  const Region& region = regions_[leaves_[bin_first_[bin] + sub]];
+  const Region& region = regions_[leaves_[cell_first_[cell] + sub]];
   return region.poly.area > 0 ? &region : nullptr;
 }
 
-const ConvexPolygon* PupilBounds::BoundAt(double r) const {
-  const Region* region = RegionAt(r);
+const ConvexPolygon* PupilBounds::BoundAt(Vec2d film) const {
+  const Region* region = RegionAt(FrameOf(film));
   return region ? &region->poly : nullptr;
 }
 
 PupilBounds::Sample PupilBounds::SampleRear(Vec2d film, Vec2d u) const {
-  double r = std::sqrt(film.x * film.x + film.y * film.y);
-  const Region* region = RegionAt(r);
+  const Frame frame = FrameOf(film);
+  const Region* region = RegionAt(frame);
   if (!region) return {{0, 0, rear_z_}, 0};
   const ConvexPolygon& poly = region->poly;
   const std::vector<double>& cdf = region->cdf;
@@ -353,8 +471,9 @@ PupilBounds::Sample PupilBounds::SampleRear(Vec2d film, Vec2d u) const {
   const Vec2d &a = poly.vertices[0], &bb = poly.vertices[t], &c = poly.vertices[t + 1];
   double b2 = 1 - bary.x - bary.y;
   Vec2d p(a.x * bary.x + bb.x * bary.y + c.x * b2, a.y * bary.x + bb.y * bary.y + c.y * b2);
-  // The bound was built for a film point on +x: rotate it to the film point's azimuth.
-  double cs = r > 0 ? film.x / r : 1, sn = r > 0 ? film.y / r : 0;
+  if (frame.mirrored) p.y = -p.y;
+  // From the table's frame to lens space.
+  const double cs = frame.cos_sin.x, sn = frame.cos_sin.y;
   return {{p.x * cs - p.y * sn, p.x * sn + p.y * cs, rear_z_}, 1 / poly.area};
 }
 

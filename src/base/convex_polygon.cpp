@@ -1,0 +1,49 @@
+#include "base/convex_polygon.h"
+
+#include <algorithm>
+
+namespace objektiv {
+
+std::vector<Vec2d> ConvexHull(std::vector<Vec2d> p) {
+  std::sort(p.begin(), p.end(), [](Vec2d a, Vec2d b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  p.erase(std::unique(p.begin(), p.end()), p.end());
+  if (p.size() < 3) return p;
+  std::vector<Vec2d> h(2 * p.size());
+  size_t k = 0;
+  for (size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && Cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+    h[k++] = p[i];
+  }
+  for (size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
+    while (k >= t && Cross(h[k - 2], h[k - 1], p[i - 1]) <= 0) --k;
+    h[k++] = p[i - 1];
+  }
+  h.resize(k - 1);
+  return h;
+}
+
+double PolygonArea(const std::vector<Vec2d>& v) {
+  double a = 0;
+  for (size_t i = 0; i < v.size(); ++i) {
+    const Vec2d &p = v[i], &q = v[(i + 1) % v.size()];
+    a += p.x * q.y - q.x * p.y;
+  }
+  return 0.5 * a;
+}
+
+ConvexPolygon ConvexPolygon::HullOf(std::vector<Vec2d> points) {
+  ConvexPolygon poly;
+  std::vector<Vec2d> hull = ConvexHull(std::move(points));
+  double area = hull.size() >= 3 ? PolygonArea(hull) : 0;
+  if (area > 0) poly.vertices = std::move(hull), poly.area = area;
+  return poly;
+}
+
+bool ConvexPolygon::Contains(Vec2d p) const {
+  if (vertices.size() < 3) return false;
+  for (size_t i = 0; i < vertices.size(); ++i)
+    if (Cross(vertices[i], vertices[(i + 1) % vertices.size()], p) < 0) return false;
+  return true;
+}
+
+}  // namespace objektiv
