@@ -224,7 +224,10 @@ PupilBounds::Region PupilBounds::MakeRegion(ConvexPolygon hull) {
 }
 
 PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, const PupilBoundsOptions& options)
-    : bins_(options.bins), symmetry_(tracer.stop_shape().symmetry()), film_radius_(film_radius) {
+    : symmetry_(tracer.stop_shape().symmetry()), film_radius_(film_radius) {
+  // An opening that is not round needs regions over azimuth too: half as many radial bins
+  // (the radial splitting below still follows fast changes) keep its set-up time in bounds.
+  bins_ = symmetry_.order == 0 ? options.bins : std::max(8, options.bins / 2);
   const int bins = bins_;
   const std::vector<double>& lambdas = options.wavelengths;
   const LensPrescription& lens = tracer.lens();
@@ -251,7 +254,7 @@ PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, const Pup
   period_ = round_ ? 2 * M_PI : 2 * M_PI / symmetry_.order;
   span_ = round_ ? 0 : (symmetry_.mirror ? period_ / 2 : period_);
   const int first_columns = round_ ? 1 : std::max(1, int(std::ceil(span_ / (M_PI / 8) - 1e-9)));
-  const int max_columns = round_ ? 1 : first_columns << (symmetry_.order == 1 ? 2 : 5);
+  const int max_columns = round_ ? 1 : first_columns << 3;
   for (int k = 0; k < (round_ ? 0 : symmetry_.order); ++k)
     turns_.push_back({std::cos(symmetry_.axis + k * period_), std::sin(symmetry_.axis + k * period_)});
 

@@ -27,7 +27,7 @@
 namespace objektiv {
 
 struct PupilBoundsOptions {
-  int bins = 128;  // radial film bins
+  int bins = 128;  // radial film bins (half as many for an opening that is not round)
   // A probe passes if it passes at any of these wavelengths: a dispersive lens's pupil
   // changes a little with wavelength, and the bound must hold the light of every one.
   std::vector<double> wavelengths = {587.5618};
