@@ -176,6 +176,8 @@ void BuildShape(const ObjectNode& node, LoaderContext& ctx, int group) {
   }
   if (group >= 0) {
     if (radiance) throw ErrorAt(emitters[0]->loc, "shapes inside a shapegroup cannot emit light");
+    // An instance's bounds are its group's, transformed: the plane's would leave Embree's range.
+    if (node.type == "plane") throw ErrorAt(node.loc, "an infinite plane cannot be part of a shapegroup");
     for (auto& shape : shapes) ctx.scene.AddShapeToGroup(group, std::move(shape), material);
     props.WarnUnused();
     return;
