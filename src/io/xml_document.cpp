@@ -358,6 +358,7 @@ class Parser {
         FileContext sub = Load(ReadTextFile(inc.string(), "included file"), inc.string(), &doc);
         pugi::xml_node scene = doc.child("scene");
         if (!scene) throw MakeInputError(inc.string(), 1, "an included file must have a <scene> root");
+        CheckAttributes(scene, {"version"}, Loc(sub, scene));
         Walk(scene, sub, parent, include_depth + 1);
       } else if (tag == "ref") {
         CheckAttributes(c, {"id", "name"}, loc);
