@@ -9,6 +9,13 @@
 
 namespace objektiv::test {
 
+// How many times `part` occurs in `text`.
+inline int Occurrences(const std::string& text, const std::string& part) {
+  int n = 0;
+  for (size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+  return n;
+}
+
 class LogCapture {
  public:
   LogCapture() : previous_(spdlog::default_logger()) {
@@ -23,13 +30,7 @@ class LogCapture {
 
   std::string Text() const { return text_.str(); }
   bool Has(const std::string& s) const { return Text().find(s) != std::string::npos; }
-  // How many times s was logged.
-  int Count(const std::string& s) const {
-    std::string t = Text();
-    int n = 0;
-    for (size_t at = t.find(s); at != std::string::npos; at = t.find(s, at + 1)) ++n;
-    return n;
-  }
+  int Count(const std::string& s) const { return Occurrences(Text(), s); }  // how many times s was logged
 
  private:
   std::ostringstream text_;

@@ -147,9 +147,7 @@ TEST(StopInGlass, LayoutDrawsOneElementAcrossTheStop) {
   LensTracer tracer(lens);
   tracer.SetBackFocus(ComputeParaxial(lens).bfl);
   std::string svg = PlotLensLayout(tracer, {0, 5}).ToString();
-  int polygons = 0;
-  for (size_t at = svg.find("<polygon"); at != std::string::npos; at = svg.find("<polygon", at + 1)) ++polygons;
-  EXPECT_EQ(polygons, 1);
+  EXPECT_EQ(test::Occurrences(svg, "<polygon"), 1);
   EXPECT_NE(svg.find("<polyline"), std::string::npos) << "ray fans are drawn";
 }
 

@@ -32,12 +32,6 @@ std::string ErrorOf(F f) {
   return "";
 }
 
-int Occurrences(const std::string& text, const std::string& part) {
-  int n = 0;
-  for (size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
-  return n;
-}
-
 TEST(LensNames, ByNameNamePlusExtensionOrPath) {
   EXPECT_TRUE(EndsWith(ResolveLens("tessar.brendel.100mm"), "tessar.brendel.100mm.lens"));  // .lens first
   EXPECT_TRUE(EndsWith(ResolveLens("tessar.brendel.100mm.dat"), "tessar.brendel.100mm.dat"));
@@ -69,14 +63,14 @@ TEST(LensNames, ScenesFindLensesTheSameWayAndSayWhereOnce) {
     LoadSceneFromString(RealisticScene("<string name=\"lens\" value=\"no.such.lens\"/>"), "s.xml", {});
   });
   EXPECT_EQ(msg.rfind("s.xml:3: ", 0), 0u) << msg;
-  EXPECT_EQ(Occurrences(msg, "s.xml:"), 1) << msg;
+  EXPECT_EQ(test::Occurrences(msg, "s.xml:"), 1) << msg;
   // A broken lens file beside the scene: the scene's line, then the lens file's.
   fs::path dir = fs::temp_directory_path() / "objektiv_scene_lens";
   fs::create_directories(dir);
   std::ofstream(dir / "broken.dat") << "# a lens\n50 5 1.5\n";
   std::ofstream(dir / "scene.xml") << RealisticScene("<string name=\"lens\" value=\"broken.dat\"/>");
   msg = ErrorOf([&] { LoadScene((dir / "scene.xml").string(), {}); });
-  EXPECT_EQ(Occurrences(msg, "scene.xml:3:"), 1) << msg;
+  EXPECT_EQ(test::Occurrences(msg, "scene.xml:3:"), 1) << msg;
   EXPECT_NE(msg.find("broken.dat:2: a lens row needs 4 numbers"), std::string::npos) << msg;
 }
 
