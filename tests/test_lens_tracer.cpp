@@ -107,14 +107,15 @@ TEST(LensTracer, AperturesClipAndTotalInternalReflectionStops) {
   TraceResult narrow = t.TraceFromObject({{10, 0, -10}, {0, 0, 1}}, 550);
   EXPECT_FALSE(narrow.ray);
   EXPECT_EQ(narrow.surface, t.lens().StopIndex());
-  // Glass to air beyond the critical angle (41.8 degrees for n = 1.5): a ray inside glass at
-  // 60 degrees cannot leave through a plane face.
-  Vec3d steep = Normalize(Vec3d(std::sin(M_PI / 3), 0, std::cos(M_PI / 3)));
-  // Only the exit face, with glass in front of it (the stop sits inside the glass).
-  LensTracer exit_face(Parse("stop 0 n=1.5 50\nsurface inf 5 air 50\n"));
-  TraceResult tir = exit_face.TraceFromObject({{0, 0, -1}, steep}, 550);
+  // Glass to air beyond the critical angle (41.8 degrees for n = 1.5): a ray parallel to the
+  // axis at height 5 enters a flat face square on and meets the exit face (radius -6) at
+  // asin(5/6) = 56 degrees. (A stop in front with glass after it is an air-glass face: it
+  // refracts, so a steep ray cannot be started inside the glass that way.)
+  LensTracer exit_face(Parse("stop 1 air 50\nsurface inf 5 n=1.5 50\nsurface -6 5 air 5.9\n"));
+  TraceResult tir = exit_face.TraceFromObject({{0, 5, -1}, {0, 0, 1}}, 550);
   EXPECT_FALSE(tir.ray);
   EXPECT_EQ(tir.failure, TraceFailure::kTotalInternalReflection);
+  EXPECT_EQ(tir.surface, 2);
 }
 
 }  // namespace

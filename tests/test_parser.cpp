@@ -85,7 +85,7 @@ TEST(Parser, RealisticSensorErrorsNameFileAndLine) {
     return "<scene version=\"3.0.0\">\n<sensor type=\"realistic\">\n" + props + "\n</sensor>\n</scene>\n";
   };
   std::vector<BadCase> cases = {
-      {scene("<string name=\"lens\" value=\"no.such.lens\"/>"), 3, "lens 'no.such.lens'"},
+      {scene("<string name=\"lens\" value=\"no.such.lens\"/>"), 3, "no lens file 'no.such.lens'"},
       {scene("<string name=\"lens\" value=\"dgauss.50mm\"/>\n<float name=\"fnumber\" value=\"1.2\"/>"), 2,
        "faster than"},
       {scene("<string name=\"lens\" value=\"dgauss.50mm\"/>\n<float name=\"aperture_diameter\" value=\"90\"/>"), 2,

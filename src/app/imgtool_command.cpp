@@ -57,10 +57,13 @@ std::function<int()> AddImgtoolCommand(CLI::App& app) {
   CLI::App* diff = tool->add_subcommand("diff", "Compare two images (any format OpenImageIO reads); exit 1 above --threshold");
   diff->add_option("a", args->a, "Image A")->required()->check(CLI::ExistingFile);
   diff->add_option("b", args->b, "Image B (the reference for relmse)")->required()->check(CLI::ExistingFile);
+  CLI::Option* threshold =
+      diff->add_option("--threshold", args->threshold, "Exit with status 1 when the metric exceeds this value")
+          ->check(CLI::NonNegativeNumber);
+  // All three metrics are printed; the choice only matters against a threshold.
   diff->add_option("--metric", args->metric, "Metric compared with the threshold: rmse, relmse or mae")
-      ->check(CLI::IsMember({"rmse", "relmse", "mae"}));
-  diff->add_option("--threshold", args->threshold, "Exit with status 1 when the metric exceeds this value")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::IsMember({"rmse", "relmse", "mae"}))
+      ->needs(threshold);
   return [args] { return RunDiff(*args); };
 }
 

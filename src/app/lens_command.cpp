@@ -76,6 +76,16 @@ int RunInfo(const LensArgs& a) {
   LensTracer tracer = TracerFocusedAtInfinity(lens, a.wavelength);
   FieldOfView fov = SensorFieldOfView(tracer, sw, sh, a.wavelength);
   double real_bfl = RealBackFocus(tracer, a.wavelength);
+  // The file's own metadata (native .lens files), where given.
+  std::string design, design_json;
+  auto add_design = [&](double v, const char* text, const char* key) {
+    if (!(v > 0)) return;
+    design += fmt::format(" {} {:g}", text, v);
+    design_json += fmt::format(",\n  \"{}\": {:.6f}", key, v);
+  };
+  add_design(lens.design_focal_length, "focal length (mm)", "design_focal_length_mm");
+  add_design(lens.design_fnumber, "f-number", "design_fnumber");
+  add_design(lens.image_circle, "image circle (mm)", "image_circle_mm");
   std::string focus_json;
   if (focus)
     focus_json = fmt::format(
@@ -94,10 +104,11 @@ int RunInfo(const LensArgs& a) {
         lens.name.c_str(), a.wavelength, d.efl, d.bfl, d.ffl, d.fnumber, d.entrance_pupil_diameter,
         d.entrance_pupil_position, d.exit_pupil_diameter, d.exit_pupil_position, d.front_principal_plane,
         d.back_principal_plane, stop_diameter, lens.TotalTrack(), lens.surfaces.size(), real_bfl, sw, sh,
-        fov.horizontal, fov.vertical, fov.diagonal, focus_json.c_str());
+        fov.horizontal, fov.vertical, fov.diagonal, (design_json + focus_json).c_str());
     return 0;
   }
   std::printf("%s (%s)\n", lens.name.c_str(), lens.source.c_str());
+  if (!design.empty()) std::printf("  design (as the file states it):%s\n", design.c_str());
   std::printf("  %zu surfaces, stop at row %d (diameter %.3f mm), total track %.3f mm\n", lens.surfaces.size(),
               stop + 1, stop_diameter, lens.TotalTrack());
   std::printf("  paraxial, object at infinity, %.2f nm:\n", a.wavelength);
@@ -140,7 +151,9 @@ std::function<int()> AddLensCommand(CLI::App& app) {
   lens->require_subcommand(1);
   CLI::App* list = lens->add_subcommand("list", "List the shipped lenses with focal length, f-number and source");
   CLI::App* info = lens->add_subcommand("info", "Paraxial data of a lens (a file, or a shipped lens by name)");
-  info->add_option("lens", args->lens, "Lens file (.lens or .dat) or shipped lens name, e.g. dgauss.50mm")->required();
+  const std::string lens_help =
+      fmt::format("Lens file ({}) or shipped lens name, e.g. dgauss.50mm", LensFileExtensionList());
+  info->add_option("lens", args->lens, lens_help)->required();
   info->add_option("--wavelength", args->wavelength, "Wavelength in nm (default: the d line, 587.56)")
       ->check(CLI::Range(300.0, 2500.0));
   info->add_option("--focus", args->focus_m, "Also focus on an object this many metres from the film (unit focusing)")
@@ -148,7 +161,7 @@ std::function<int()> AddLensCommand(CLI::App& app) {
   info->add_option("--sensor", args->sensor, "Sensor size WIDTHxHEIGHT in mm for the field of view (default 36x24)");
   info->add_flag("--json", args->json, "Print the figures as a JSON object");
   CLI::App* plot = lens->add_subcommand("plot", "Draw the lens layout (elements, stop, ray fans) as SVG");
-  plot->add_option("lens", args->lens, "Lens file or shipped lens name")->required();
+  plot->add_option("lens", args->lens, lens_help)->required();
   plot->add_option("-o,--output", args->output, "Output SVG file")->required();
   plot->add_option("--fields", args->fields, "Field angles in degrees (default: 0, 70% and 100% of the field)")
       ->delimiter(',')
@@ -156,7 +169,7 @@ std::function<int()> AddLensCommand(CLI::App& app) {
   plot->add_option("--wavelength", args->wavelength, "Wavelength in nm")->check(CLI::Range(300.0, 2500.0));
   CLI::App* analyze = lens->add_subcommand(
       "analyze", "Real-ray analysis: spot diagrams, distortion, field curvature, relative illumination, colour (SVG + JSON)");
-  analyze->add_option("lens", args->lens, "Lens file or shipped lens name")->required();
+  analyze->add_option("lens", args->lens, lens_help)->required();
   analyze->add_option("-o,--output", args->output, "Output directory")->required();
   return [args, list, info, plot, analyze] {
     if (list->parsed()) return RunList();

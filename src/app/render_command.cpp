@@ -51,7 +51,10 @@ int RunRender(const RenderArgs& a) {
       std::fprintf(stderr, "error: -D expects name=value, got '%s'\n", d.c_str());
       return 2;
     }
-    defines[d.substr(0, eq)] = d.substr(eq + 1);
+    if (!defines.emplace(d.substr(0, eq), d.substr(eq + 1)).second) {
+      std::fprintf(stderr, "error: -D %s is given twice\n", d.substr(0, eq).c_str());
+      return 2;
+    }
   }
   namespace fs = std::filesystem;
   fs::path exr = a.output.empty() ? fs::path(fs::path(a.scene).stem().string() + ".exr") : fs::path(a.output);
@@ -113,8 +116,8 @@ std::function<int()> AddRenderCommand(CLI::App& app) {
   cmd->add_option("--crop", args->crop, "Render only pixels x0,y0,x1,y1 (half-open) of the film");
   cmd->add_option("-D,--define", args->defines, "Set a scene parameter: -D name=value (overrides <default>)");
   cmd->add_option("--stats-json", args->stats_json, "Write render statistics as JSON to this file");
-  cmd->add_flag("-q,--quiet", args->quiet, "No progress bar, no summary, warnings only");
-  cmd->add_flag("-v,--verbose", args->verbose, "Debug logging");
+  CLI::Option* quiet = cmd->add_flag("-q,--quiet", args->quiet, "No progress bar, no summary, warnings only");
+  cmd->add_flag("-v,--verbose", args->verbose, "Debug logging")->excludes(quiet);
   return [args] { return RunRender(*args); };
 }
 

@@ -97,6 +97,13 @@ Transform Transform::Rotate(double angle_deg, Vec3d axis) {
   if (!(len > 0)) throw std::invalid_argument("rotation axis of zero length");
   axis = axis / len;
   double t = angle_deg * M_PI / 180.0, s = std::sin(t), c = std::cos(t);
+  // Quarter turns exactly (sin and cos of pi/2 in double are 1 and 6e-17): a wall or floor
+  // turned by 90 degrees stays exactly axis-aligned.
+  if (double q = angle_deg / 90; q == std::round(q) && std::abs(q) < 1e9) {
+    static constexpr double kSin[4] = {0, 1, 0, -1};
+    int k = int(std::fmod(q, 4.0) + 4) % 4;
+    s = kSin[k], c = kSin[(k + 1) % 4];
+  }
   Matrix4 m = Matrix4::Identity();
   // Rodrigues' rotation formula as a matrix.
   m.m[0][0] = axis.x * axis.x + (1 - axis.x * axis.x) * c;

@@ -44,17 +44,25 @@ Svg PlotLensLayout(const LensTracer& tracer, const std::vector<double>& fields, 
     }
     return pts;
   };
+  // A stop inside glass (the same medium on both sides) is no face of the element: it spans
+  // from the surface before the stop to the one after.
+  auto glass_through_stop = [&](int i) {
+    return lens.surfaces[i].is_stop && i > 0 && i + 1 < n &&
+           lens.surfaces[i].IndexAfter(lambda_nm) == lens.surfaces[i - 1].IndexAfter(lambda_nm);
+  };
   for (int i = 0; i + 1 < n; ++i) {
-    if (!lens.surfaces[i].medium) continue;
-    double h = std::max(lens.surfaces[i].semi_diameter, lens.surfaces[i + 1].semi_diameter);
-    std::vector<Vec2d> poly = profile(i, -lens.surfaces[i].semi_diameter, lens.surfaces[i].semi_diameter);
+    if (!lens.surfaces[i].medium || glass_through_stop(i)) continue;
+    const int j = glass_through_stop(i + 1) ? i + 2 : i + 1;  // the element's back face
+    const double semi_i = lens.surfaces[i].semi_diameter, semi_j = lens.surfaces[j].semi_diameter;
+    double h = std::max(semi_i, semi_j);
+    std::vector<Vec2d> poly = profile(i, -semi_i, semi_i);
     // Flat rims out to the larger of the two apertures, as lens elements are ground.
-    poly.push_back(map(tracer.VertexZ(i) + tracer.Sag(i, lens.surfaces[i].semi_diameter), h));
-    poly.push_back(map(tracer.VertexZ(i + 1) + tracer.Sag(i + 1, lens.surfaces[i + 1].semi_diameter), h));
-    std::vector<Vec2d> back = profile(i + 1, lens.surfaces[i + 1].semi_diameter, -lens.surfaces[i + 1].semi_diameter);
+    poly.push_back(map(tracer.VertexZ(i) + tracer.Sag(i, semi_i), h));
+    poly.push_back(map(tracer.VertexZ(j) + tracer.Sag(j, semi_j), h));
+    std::vector<Vec2d> back = profile(j, semi_j, -semi_j);
     poly.insert(poly.end(), back.begin(), back.end());
-    poly.push_back(map(tracer.VertexZ(i + 1) + tracer.Sag(i + 1, lens.surfaces[i + 1].semi_diameter), -h));
-    poly.push_back(map(tracer.VertexZ(i) + tracer.Sag(i, lens.surfaces[i].semi_diameter), -h));
+    poly.push_back(map(tracer.VertexZ(j) + tracer.Sag(j, semi_j), -h));
+    poly.push_back(map(tracer.VertexZ(i) + tracer.Sag(i, semi_i), -h));
     svg.Polygon(poly, "#cfe3f5", "#2b5d8a", 1.2);
   }
   // Optical axis, stop, film.

@@ -1,8 +1,11 @@
 // Builder for <sensor type="realistic">: a camera with a real lens prescription.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
+#include "base/log.h"
 #include "camera/lens_camera_setup.h"
+#include "camera/realistic_camera.h"
 #include "io/image_io.h"
 #include "io/loader_context.h"
 #include "optics/focusing.h"
@@ -31,15 +34,20 @@ std::string FormatKey(const std::string& name) {
   return key;
 }
 
-// A shipped lens by name ("dgauss.50mm"), or else a lens file relative to the scene.
+// A lens file relative to the scene, or a shipped lens by name (see ResolveLens).
 LensPrescription LoadSceneLens(const Properties& p) {
   std::string name = p.String("lens");
+  const Location& loc = p.LocOf("lens");
+  std::string path;
   try {
-    const auto shipped = ShippedLensNames();
-    if (std::find(shipped.begin(), shipped.end(), name) != shipped.end()) return LoadLens(name);
-    return LoadLens(ResolvePath(p.LocOf("lens"), name));
+    path = ResolveLens(name, std::filesystem::path(loc.file).parent_path().string());
   } catch (const InputError& e) {
-    throw ErrorAt(p.LocOf("lens"), "lens '{}': {}", name, e.what());
+    throw ErrorAt(loc, "{}", e.what());
+  }
+  try {
+    return ReadLensFile(path);
+  } catch (const InputError& e) {  // the lens file's own file:line, after the scene's
+    throw ErrorAt(loc, "lens '{}': {}", name, e.what());
   }
 }
 
@@ -64,6 +72,22 @@ Vec2d SensorSize(const Properties& p, int width, int height) {
   }
   double aspect = double(width) / height;
   return w / h > aspect ? Vec2d(h * aspect, h) : Vec2d(w, w / aspect);
+}
+
+// A lens shift that moves the film's corners past the lens's image circle leaves them black
+// (the pupil bounds know where no light passes): say so.
+void WarnIfShiftedPastTheImageCircle(const Properties& p, const LensCameraSettings& s, const Camera& camera) {
+  const auto* real = dynamic_cast<const RealisticCamera*>(&camera);
+  if (!real || (s.shift.x == 0 && s.shift.y == 0)) return;
+  const double corner = std::hypot(s.sensor_width / 2 + std::abs(s.shift.x), s.sensor_height / 2 + std::abs(s.shift.y));
+  if (real->bounds().BoundAt(corner)) return;
+  double circle = 0;  // the largest film radius light reaches, to a thousandth of the corner's
+  for (int k = 999; k > 0 && circle == 0; --k)
+    if (real->bounds().BoundAt(corner * k / 1000)) circle = corner * k / 1000;
+  const Location& at = p.LocOf(p.Has("shift_x") ? "shift_x" : "shift_y");
+  spdlog::warn("{}:{}: the lens shift ({}, {}) mm puts the film's corners {:.1f} mm from the lens's axis, beyond its "
+               "image circle ({:.1f} mm radius): no light reaches them",
+               at.file, at.line, s.shift.x, s.shift.y, corner, circle);
 }
 
 }  // namespace
@@ -112,11 +136,14 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const Transform& to
       throw ErrorAt(p.LocOf("aperture_mask"), "{}", e.what());
     }
   }
+  std::unique_ptr<Camera> camera;
   try {
-    return MakeLensCamera(to_world, width, height, spec);
+    camera = MakeLensCamera(to_world, width, height, spec);
   } catch (const InputError& e) {
     throw ErrorAt(p.loc(), "{}", e.what());
   }
+  WarnIfShiftedPastTheImageCircle(p, s, *camera);
+  return camera;
 }
 
 }  // namespace objektiv

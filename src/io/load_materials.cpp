@@ -191,6 +191,7 @@ std::shared_ptr<Material> MakeConductor(const Properties& p, LoaderContext& ctx,
 }
 
 using MaterialFactory = std::function<std::shared_ptr<Material>(const Properties&, LoaderContext&)>;
+std::shared_ptr<Material> MakeMaterial(const ObjectNode& node, LoaderContext& ctx);
 
 const std::map<std::string, MaterialFactory>& MaterialRegistry() {
   static const std::map<std::string, MaterialFactory> registry = {
@@ -210,38 +211,37 @@ const std::map<std::string, MaterialFactory>& MaterialRegistry() {
                                                   GetTexture(p, "specular_reflectance", SpectrumUsage::kUnbounded, 1, ctx),
                                                   p.Bool("nonlinear", false));
        }},
+      {"twosided",
+       [](const Properties& p, LoaderContext& ctx) -> std::shared_ptr<Material> {
+         auto inner = p.Children("bsdf");
+         if (inner.size() != 1) throw ErrorAt(p.loc(), "twosided needs exactly one nested <bsdf>, got {}", inner.size());
+         const ObjectNode& in = *inner[0];
+         if (in.type == "twosided") throw ErrorAt(in.loc, "twosided cannot wrap another twosided");
+         // A private copy: the same inner BSDF may be used one-sided elsewhere.
+         std::shared_ptr<Material> m = MakeMaterial(in, ctx);
+         m->SetTwoSided(true);
+         return m;
+       }},
   };
   return registry;
+}
+
+// A new material from a <bsdf> (its unused properties warned about).
+std::shared_ptr<Material> MakeMaterial(const ObjectNode& node, LoaderContext& ctx) {
+  const auto& registry = MaterialRegistry();
+  auto it = registry.find(node.type);
+  if (it == registry.end()) UnknownType(node, registry);
+  Properties props(node);
+  std::shared_ptr<Material> material = it->second(props, ctx);
+  props.WarnUnused();
+  return material;
 }
 
 }  // namespace
 
 std::shared_ptr<const Material> BuildMaterial(const ObjectNode& node, LoaderContext& ctx) {
   if (auto it = ctx.materials.find(&node); it != ctx.materials.end()) return it->second;
-  std::shared_ptr<Material> material;
-  Properties props(node);
-  if (node.type == "twosided") {
-    auto inner = props.Children("bsdf");
-    if (inner.size() != 1) throw ErrorAt(node.loc, "twosided needs exactly one nested <bsdf>, got {}", inner.size());
-    const ObjectNode& in = *inner[0];
-    if (in.type == "twosided") throw ErrorAt(in.loc, "twosided cannot wrap another twosided");
-    // A private copy: the same inner BSDF may be used one-sided elsewhere.
-    const auto& registry = MaterialRegistry();
-    auto it = registry.find(in.type);
-    if (it == registry.end()) UnknownType(in, registry);
-    Properties inner_props(in);
-    material = it->second(inner_props, ctx);
-    inner_props.WarnUnused();
-    material->SetTwoSided(true);
-  } else {
-    const auto& registry = MaterialRegistry();
-    auto it = registry.find(node.type);
-    if (it == registry.end()) {
-      if (node.type != "twosided") UnknownType(node, registry);
-    }
-    material = it->second(props, ctx);
-  }
-  props.WarnUnused();
+  std::shared_ptr<const Material> material = MakeMaterial(node, ctx);
   ctx.materials[&node] = material;
   return material;
 }

@@ -2,20 +2,28 @@
 #include <cmath>
 #include <functional>
 
+#include "base/log.h"
 #include "io/loader_context.h"
 
 namespace objektiv {
 namespace {
 
+using FilterFactory = std::function<std::shared_ptr<const Filter>(const Properties&)>;
+
 std::shared_ptr<const Filter> BuildFilter(const ObjectNode* node) {
   if (!node) return std::make_shared<GaussianFilter>(0.5f);  // Mitsuba's default
+  static const std::map<std::string, FilterFactory> registry = {
+      {"box", [](const Properties& p) { return std::make_shared<BoxFilter>(float(p.FloatIn("radius", 0.5, 1e-3, 16))); }},
+      {"tent", [](const Properties& p) { return std::make_shared<TentFilter>(float(p.FloatIn("radius", 1.0, 1e-3, 16))); }},
+      {"gaussian",
+       [](const Properties& p) { return std::make_shared<GaussianFilter>(float(p.FloatIn("stddev", 0.5, 1e-3, 4))); }},
+      {"blackman-harris",
+       [](const Properties& p) { return std::make_shared<BlackmanHarrisFilter>(float(p.FloatIn("radius", 1.5, 1e-3, 16))); }},
+  };
+  auto it = registry.find(node->type);
+  if (it == registry.end()) UnknownType(*node, registry);
   Properties p(*node);
-  std::shared_ptr<const Filter> f;
-  if (node->type == "box") f = std::make_shared<BoxFilter>(float(p.FloatIn("radius", 0.5, 1e-3, 16)));
-  else if (node->type == "tent") f = std::make_shared<TentFilter>(float(p.FloatIn("radius", 1.0, 1e-3, 16)));
-  else if (node->type == "gaussian") f = std::make_shared<GaussianFilter>(float(p.FloatIn("stddev", 0.5, 1e-3, 4)));
-  else if (node->type == "blackman-harris") f = std::make_shared<BlackmanHarrisFilter>(float(p.FloatIn("radius", 1.5, 1e-3, 16)));
-  else throw ErrorAt(node->loc, "unknown rfilter type '{}' (known: box, tent, gaussian, blackman-harris)", node->type);
+  std::shared_ptr<const Filter> f = it->second(p);
   p.WarnUnused();
   return f;
 }
@@ -45,10 +53,14 @@ FilmSettings BuildFilm(const ObjectNode* node) {
   std::string tm = p.Choice("tonemap", "clamp", {"clamp", "filmic"});
   f.tonemap = *ParseToneMap(tm);
   f.color_space = ColorSpace::ByName(p.Choice("color_space", "rec709", {"rec709", "acescg"}));
-  // Mitsuba's output-format properties: only RGB float output is written.
-  p.Choice("pixel_format", "rgb", {"rgb", "rgba"});
-  p.Choice("component_format", "float32", {"float16", "float32"});
+  // Mitsuba's output-format properties: the EXR is always RGB float32 (another choice is warned about).
+  const std::string pixel = p.Choice("pixel_format", "rgb", {"rgb", "rgba"});
+  const std::string component = p.Choice("component_format", "float32", {"float16", "float32"});
   p.Choice("file_format", "openexr", {"openexr", "exr"});
+  if (pixel != "rgb" || component != "float32") {
+    const Location& at = p.LocOf(pixel != "rgb" ? "pixel_format" : "component_format");
+    spdlog::warn("{}:{}: film: the EXR is written as rgb float32, not {} {}", at.file, at.line, pixel, component);
+  }
   f.filter = BuildFilter(OneChild(p, "rfilter"));
   p.WarnUnused();
   return f;
@@ -66,7 +78,9 @@ SamplerSettings BuildSamplerSettings(const ObjectNode* node) {
   s.type = it->second;
   s.spp = int(p.IntIn("sample_count", 4, 1, 1 << 24));
   s.seed = uint64_t(p.IntIn("seed", 0, 0, INT64_MAX));
-  p.Bool("jitter", true);  // stratified/multijitter: always jittered here
+  if (!p.Bool("jitter", true))  // stratified/multijitter: always jittered here
+    spdlog::warn("{}:{}: sampler: jitter = false is not supported; samples are jittered", p.LocOf("jitter").file,
+                 p.LocOf("jitter").line);
   p.WarnUnused();
   return s;
 }
@@ -91,88 +105,121 @@ double FocalLengthMm(const Properties& p) {
   return f;
 }
 
+// What every sensor type is built from besides its own properties.
+struct SensorBase {
+  Transform to_world;
+  int width, height;
+  float far_clip;
+};
+
+// The clip planes, read only by the sensors that use them (the realistic camera starts its
+// rays at the lens's front, so near_clip would be ignored there: it is warned about).
+float NearClip(const Properties& p, float far_clip) {
+  float near_clip = float(p.FloatIn("near_clip", 1e-2, 0, 1e30));
+  if (!(far_clip > near_clip)) throw ErrorAt(p.LocOf("far_clip"), "far_clip must exceed near_clip");
+  return near_clip;
+}
+
+std::unique_ptr<Camera> BuildPerspective(const Properties& p, const SensorBase& b, bool thin) {
+  static const std::map<std::string, FovAxis> axes = {{"x", FovAxis::kX},
+                                                      {"y", FovAxis::kY},
+                                                      {"diagonal", FovAxis::kDiagonal},
+                                                      {"smaller", FovAxis::kSmaller},
+                                                      {"larger", FovAxis::kLarger}};
+  const float near_clip = NearClip(p, b.far_clip);
+  const int w = b.width, h = b.height;
+  float fov;
+  FovAxis axis;
+  // Sensor width in mm relates field of view and focal length (default: 36 mm full frame).
+  double sensor_width = p.FloatIn("sensor_width", 36, 1e-3, 1e4);
+  double focal_mm;
+  if (p.Has("focal_length")) {
+    if (p.Has("fov")) throw ErrorAt(p.LocOf("fov"), "give either fov or focal_length, not both");
+    focal_mm = FocalLengthMm(p);
+    if (p.Has("sensor_width")) {
+      fov = float(2 * std::atan(sensor_width / (2 * focal_mm)) * 180 / M_PI);
+      axis = FovAxis::kX;
+    } else {
+      fov = float(2 * std::atan(std::sqrt(36.0 * 36 + 24 * 24) / (2 * focal_mm)) * 180 / M_PI);
+      axis = FovAxis::kDiagonal;
+    }
+  } else {
+    fov = float(p.FloatIn("fov", 45, 1e-4, 179.9));
+    axis = axes.at(p.Choice("fov_axis", "x", {"x", "y", "diagonal", "smaller", "larger"}));
+    Vec2f t = ScreenTangents(fov, axis, w, h);
+    focal_mm = sensor_width / (2 * t.x);
+  }
+  if (!thin) return std::make_unique<PerspectiveCamera>(b.to_world, w, h, fov, axis, near_clip, b.far_clip);
+  float radius;
+  if (p.Has("fnumber")) {
+    if (p.Has("aperture_radius")) throw ErrorAt(p.LocOf("fnumber"), "give either fnumber or aperture_radius");
+    // Aperture diameter = focal length / N; the focal length in scene units (metres).
+    radius = float(focal_mm * 1e-3 / (2 * p.FloatIn("fnumber", 2.8, 0.1, 1e4)));
+  } else {
+    radius = float(p.FloatIn("aperture_radius", 0.1, 0, 1e30));
+  }
+  float focus = float(p.FloatIn("focus_distance", 0, 1e-6, 1e30));
+  if (!p.Has("focus_distance")) throw ErrorAt(p.loc(), "thinlens needs the property 'focus_distance'");
+  int blades = int(p.IntIn("blades", 0, 0, 64));
+  if (blades == 1 || blades == 2) throw ErrorAt(p.LocOf("blades"), "blades must be 0 (circular) or at least 3");
+  return std::make_unique<ThinLensCamera>(b.to_world, w, h, fov, axis, near_clip, b.far_clip, radius, focus, blades,
+                                          float(p.Float("blade_rotation", 0)));
+}
+
+using SensorFactory = std::function<std::unique_ptr<Camera>(const Properties&, const SensorBase&)>;
+
+const std::map<std::string, SensorFactory>& SensorRegistry() {
+  static const std::map<std::string, SensorFactory> registry = {
+      {"perspective", [](const Properties& p, const SensorBase& b) { return BuildPerspective(p, b, false); }},
+      {"thinlens", [](const Properties& p, const SensorBase& b) { return BuildPerspective(p, b, true); }},
+      {"orthographic",
+       [](const Properties& p, const SensorBase& b) -> std::unique_ptr<Camera> {
+         return std::make_unique<OrthographicCamera>(b.to_world, b.width, b.height, NearClip(p, b.far_clip), b.far_clip);
+       }},
+      {"realistic",
+       [](const Properties& p, const SensorBase& b) {
+         return BuildLensCamera(p, b.to_world, b.width, b.height, b.far_clip);
+       }},
+  };
+  return registry;
+}
+
 }  // namespace
 
 void BuildSensor(const ObjectNode& node, RenderSetup& setup) {
+  const auto& registry = SensorRegistry();
+  auto it = registry.find(node.type);
+  if (it == registry.end()) UnknownType(node, registry);
   Properties p(node);
   setup.film = BuildFilm(OneChild(p, "film"));
   setup.sampler = BuildSamplerSettings(OneChild(p, "sampler"));
-  const int w = setup.film.width, h = setup.film.height;
-  Transform to_world = p.GetTransform("to_world");
-  float near_clip = float(p.FloatIn("near_clip", 1e-2, 0, 1e30));
-  float far_clip = float(p.FloatIn("far_clip", 1e4, 0, 1e30));
-  if (!(far_clip > near_clip)) throw ErrorAt(p.LocOf("far_clip"), "far_clip must exceed near_clip");
-
-  if (node.type == "realistic") {
-    setup.camera = BuildLensCamera(p, to_world, w, h, far_clip);
-  } else if (node.type == "orthographic") {
-    setup.camera = std::make_unique<OrthographicCamera>(to_world, w, h, near_clip, far_clip);
-  } else if (node.type == "perspective" || node.type == "thinlens") {
-    static const std::map<std::string, FovAxis> axes = {{"x", FovAxis::kX},
-                                                        {"y", FovAxis::kY},
-                                                        {"diagonal", FovAxis::kDiagonal},
-                                                        {"smaller", FovAxis::kSmaller},
-                                                        {"larger", FovAxis::kLarger}};
-    float fov;
-    FovAxis axis;
-    // Sensor width in mm relates field of view and focal length (default: 36 mm full frame).
-    double sensor_width = p.FloatIn("sensor_width", 36, 1e-3, 1e4);
-    double focal_mm;
-    if (p.Has("focal_length")) {
-      if (p.Has("fov")) throw ErrorAt(p.LocOf("fov"), "give either fov or focal_length, not both");
-      focal_mm = FocalLengthMm(p);
-      if (p.Has("sensor_width")) {
-        fov = float(2 * std::atan(sensor_width / (2 * focal_mm)) * 180 / M_PI);
-        axis = FovAxis::kX;
-      } else {
-        fov = float(2 * std::atan(std::sqrt(36.0 * 36 + 24 * 24) / (2 * focal_mm)) * 180 / M_PI);
-        axis = FovAxis::kDiagonal;
-      }
-    } else {
-      fov = float(p.FloatIn("fov", 45, 1e-4, 179.9));
-      axis = axes.at(p.Choice("fov_axis", "x", {"x", "y", "diagonal", "smaller", "larger"}));
-      Vec2f t = ScreenTangents(fov, axis, w, h);
-      focal_mm = sensor_width / (2 * t.x);
-    }
-    if (node.type == "perspective") {
-      setup.camera = std::make_unique<PerspectiveCamera>(to_world, w, h, fov, axis, near_clip, far_clip);
-    } else {
-      float radius;
-      if (p.Has("fnumber")) {
-        if (p.Has("aperture_radius")) throw ErrorAt(p.LocOf("fnumber"), "give either fnumber or aperture_radius");
-        // Aperture diameter = focal length / N; the focal length in scene units (metres).
-        radius = float(focal_mm * 1e-3 / (2 * p.FloatIn("fnumber", 2.8, 0.1, 1e4)));
-      } else {
-        radius = float(p.FloatIn("aperture_radius", 0.1, 0, 1e30));
-      }
-      float focus = float(p.FloatIn("focus_distance", 0, 1e-6, 1e30));
-      if (!p.Has("focus_distance")) throw ErrorAt(p.loc(), "thinlens needs the property 'focus_distance'");
-      int blades = int(p.IntIn("blades", 0, 0, 64));
-      if (blades == 1 || blades == 2) throw ErrorAt(p.LocOf("blades"), "blades must be 0 (circular) or at least 3");
-      setup.camera = std::make_unique<ThinLensCamera>(to_world, w, h, fov, axis, near_clip, far_clip, radius, focus, blades,
-                                                      float(p.Float("blade_rotation", 0)));
-    }
-  } else {
-    throw ErrorAt(node.loc, "unknown sensor type '{}' (known: perspective, thinlens, orthographic, realistic)", node.type);
-  }
+  SensorBase base{p.GetTransform("to_world"), setup.film.width, setup.film.height,
+                  float(p.FloatIn("far_clip", 1e4, 1e-30, 1e30))};
+  setup.camera = it->second(p, base);
   p.WarnUnused();
 }
 
 std::unique_ptr<Integrator> BuildIntegrator(const ObjectNode* node, const Scene& scene) {
   if (!node) return std::make_unique<PathIntegrator>(scene, -1, 5);
+  using IntegratorFactory = std::function<std::unique_ptr<Integrator>(const Properties&, const Scene&)>;
+  static const std::map<std::string, IntegratorFactory> registry = {
+      {"path",
+       [](const Properties& p, const Scene& scene) -> std::unique_ptr<Integrator> {
+         int max_depth = int(p.IntIn("max_depth", -1, -1, 1 << 20));
+         if (max_depth == 0) throw ErrorAt(p.LocOf("max_depth"), "max_depth must be -1 (unbounded) or at least 1");
+         return std::make_unique<PathIntegrator>(scene, max_depth, int(p.IntIn("rr_depth", 5, 1, 1 << 20)));
+       }},
+      {"direct",
+       [](const Properties& p, const Scene& scene) -> std::unique_ptr<Integrator> {
+         int shading = int(p.IntIn("shading_samples", 1, 0, 1 << 16));
+         return std::make_unique<DirectIntegrator>(scene, int(p.IntIn("emitter_samples", shading, 0, 1 << 16)),
+                                                   int(p.IntIn("bsdf_samples", shading, 0, 1 << 16)));
+       }},
+  };
+  auto it = registry.find(node->type);
+  if (it == registry.end()) UnknownType(*node, registry);
   Properties p(*node);
-  std::unique_ptr<Integrator> integrator;
-  if (node->type == "path") {
-    int max_depth = int(p.IntIn("max_depth", -1, -1, 1 << 20));
-    if (max_depth == 0) throw ErrorAt(p.LocOf("max_depth"), "max_depth must be -1 (unbounded) or at least 1");
-    integrator = std::make_unique<PathIntegrator>(scene, max_depth, int(p.IntIn("rr_depth", 5, 1, 1 << 20)));
-  } else if (node->type == "direct") {
-    int shading = int(p.IntIn("shading_samples", 1, 0, 1 << 16));
-    integrator = std::make_unique<DirectIntegrator>(scene, int(p.IntIn("emitter_samples", shading, 0, 1 << 16)),
-                                                    int(p.IntIn("bsdf_samples", shading, 0, 1 << 16)));
-  } else {
-    throw ErrorAt(node->loc, "unknown integrator type '{}' (known: path, direct)", node->type);
-  }
+  std::unique_ptr<Integrator> integrator = it->second(p, scene);
   p.WarnUnused();
   return integrator;
 }

@@ -151,11 +151,10 @@ void BuildShape(const ObjectNode& node, LoaderContext& ctx, int group) {
   } catch (const std::invalid_argument& e) {
     throw ErrorAt(node.loc, "{}", e.what());
   }
-  // The BSDF: one nested or referenced <bsdf>, by default Mitsuba's diffuse 0.5.
+  // The BSDF: one nested or referenced <bsdf> (named or not), by default Mitsuba's diffuse 0.5.
   std::shared_ptr<const Material> material;
   auto bsdfs = props.Children("bsdf");
   if (bsdfs.size() > 1) throw ErrorAt(bsdfs[1]->loc, "a shape takes one <bsdf>");
-  if (auto named = props.Object("bsdf")) bsdfs.push_back(named);
   if (!bsdfs.empty()) {
     material = BuildMaterial(*bsdfs[0], ctx);
   } else {
@@ -176,6 +175,8 @@ void BuildShape(const ObjectNode& node, LoaderContext& ctx, int group) {
   }
   if (group >= 0) {
     if (radiance) throw ErrorAt(emitters[0]->loc, "shapes inside a shapegroup cannot emit light");
+    // An instance's bounds are its group's, transformed: the plane's would leave Embree's range.
+    if (node.type == "plane") throw ErrorAt(node.loc, "an infinite plane cannot be part of a shapegroup");
     for (auto& shape : shapes) ctx.scene.AddShapeToGroup(group, std::move(shape), material);
     props.WarnUnused();
     return;

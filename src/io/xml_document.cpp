@@ -1,5 +1,6 @@
 #include "io/xml_document.h"
 
+#include "base/log.h"
 #include "base/text_file.h"
 
 #include <pugixml.hpp>
@@ -10,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace objektiv {
@@ -28,6 +30,31 @@ struct FileContext {
   }
 };
 
+// A pbrt scene file: named .pbrt, or text whose first word (after comments) is a pbrt
+// directive rather than an XML tag.
+bool LooksLikePbrt(const std::string& text, const std::string& name) {
+  std::string ext = fs::path(name).extension().string();
+  if (ext == ".pbrt" || ext == ".PBRT") return true;
+  size_t i = 0;
+  while (i < text.size()) {
+    if (std::isspace(static_cast<unsigned char>(text[i]))) {
+      ++i;
+    } else if (text[i] == '#') {
+      while (i < text.size() && text[i] != '\n') ++i;
+    } else {
+      break;
+    }
+  }
+  size_t j = i;
+  while (j < text.size() && std::isalpha(static_cast<unsigned char>(text[j]))) ++j;
+  static const std::set<std::string> kDirectives = {
+      "LookAt", "Camera", "Film", "Sampler", "Integrator", "PixelFilter", "WorldBegin", "AttributeBegin", "Shape",
+      "LightSource", "Material", "MakeNamedMaterial", "Texture", "Translate", "Rotate", "Scale", "Transform",
+      "ConcatTransform", "CoordinateSystem", "CoordSysTransform", "Option", "ColorSpace", "Accelerator", "Import",
+      "Include", "TransformBegin", "ObjectBegin", "MakeNamedMedium", "ReverseOrientation", "Identity"};
+  return kDirectives.count(text.substr(i, j - i)) > 0;
+}
+
 class Parser {
  public:
   explicit Parser(std::map<std::string, std::string> defines) : params_(std::move(defines)) {
@@ -45,12 +72,20 @@ class Parser {
     pugi::xml_node scene = doc.child("scene");
     if (!scene) throw MakeInputError(name, 1, "the root element must be <scene>");
     root->loc = {name, ctx.LineOf(scene.offset_debug())};
+    CheckAttributes(scene, {"version"}, root->loc);  // Mitsuba 3's version of the language
     Walk(scene, ctx, *root, 0);
+    for (const auto& [key, overridden] : overridden_)
+      if (!declared_.count(key))
+        spdlog::warn("{}: -D {}: the scene declares no parameter '{}' (no <default> and no ${}); ignored", name, key,
+                     key, key);
     return SceneDocument{root};
   }
 
  private:
   FileContext Load(const std::string& text, const std::string& name, pugi::xml_document* doc) {
+    if (LooksLikePbrt(text, name))
+      throw MakeInputError(name, 0, "a pbrt scene: Objektiv reads scenes only in its XML language (Mitsuba 3's), not "
+                                    "in pbrt's format (pbrt's lens files, .dat, it does read)");
     FileContext ctx;
     ctx.path = name;
     ctx.line_starts.push_back(0);
@@ -75,6 +110,7 @@ class Parser {
       while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '_')) ++j;
       std::string key = s.substr(i + 1, j - i - 1);
       if (key.empty()) throw ErrorAt(loc, "'$' not followed by a parameter name in \"{}\"", s);
+      declared_.insert(key);
       auto it = params_.find(key);
       if (it == params_.end()) throw ErrorAt(loc, "undefined parameter ${} (define it with <default> or -D)", key);
       out += it->second;
@@ -134,6 +170,8 @@ class Parser {
 
   Vec3d ParseTriple(const pugi::xml_node& n, const Location& loc, double fallback) const {
     if (n.attribute("value")) {
+      if (n.attribute("x") || n.attribute("y") || n.attribute("z"))
+        throw ErrorAt(loc, "<{}> takes either value or x, y, z, not both", n.name());
       std::vector<double> v = ParseList(Attr(n, "value", loc), loc);
       if (v.size() == 1) return Vec3d(v[0]);
       if (v.size() != 3) throw ErrorAt(loc, "<{}> value needs 1 or 3 numbers, got {}", n.name(), v.size());
@@ -198,12 +236,26 @@ class Parser {
   SpectrumValue ParseSpectrum(const pugi::xml_node& n, const FileContext& ctx, const Location& loc) const {
     SpectrumValue s;
     std::string type = n.attribute("type") ? Attr(n, "type", loc) : "";
+    // What each kind takes: attributes, and nested <float>s by name.
+    const bool blackbody = type == "blackbody", illuminant = type == "d65" || type == "cie_a";
+    if (!type.empty() && !blackbody && !illuminant)
+      throw ErrorAt(loc, "unknown spectrum type '{}' (blackbody, d65, cie_a)", type);
+    if (blackbody) CheckAttributes(n, {"name", "type", "temperature"}, loc);
+    else if (illuminant) CheckAttributes(n, {"name", "type"}, loc);
+    else CheckAttributes(n, {"name", "value", "filename"}, loc);
+    for (pugi::xml_node c : n.children()) {
+      if (c.type() != pugi::node_element) continue;
+      std::string child = c.attribute("name").value();
+      if (std::string(c.name()) != "float" || type.empty() || (child != "scale" && !(blackbody && child == "temperature")))
+        throw ErrorAt(Loc(ctx, c), "a {} spectrum does not take <{} name=\"{}\">", type.empty() ? "sampled" : type, c.name(),
+                      child);
+    }
     auto nested_float = [&](const char* name, double fallback) {
       for (pugi::xml_node c : n.children("float"))
         if (Attr(c, "name", Loc(ctx, c)) == name) return ParseDouble(Attr(c, "value", Loc(ctx, c)), Loc(ctx, c));
       return fallback;
     };
-    if (type == "blackbody") {
+    if (blackbody) {
       s.kind = SpectrumValue::Kind::kBlackbody;
       s.temperature = float(n.attribute("temperature") ? ParseDouble(Attr(n, "temperature", loc), loc)
                                                        : nested_float("temperature", -1));
@@ -211,26 +263,51 @@ class Parser {
       s.value = float(nested_float("scale", 1));
       return s;
     }
-    if (type == "d65" || type == "cie_a") {
+    if (illuminant) {
       s.kind = type == "d65" ? SpectrumValue::Kind::kD65 : SpectrumValue::Kind::kIlluminantA;
       s.value = float(nested_float("scale", 1));
       return s;
     }
-    if (!type.empty()) throw ErrorAt(loc, "unknown spectrum type '{}' (blackbody, d65, cie_a)", type);
-    std::string value = Attr(n, "value", loc);
-    if (value.find(':') == std::string::npos) {
-      s.kind = SpectrumValue::Kind::kConstant;
-      s.value = float(ParseDouble(value, loc));
-      return s;
+    // (wavelength, value) pairs: "l:v, l:v, ..." in the value, or "l v" lines in a file (Mitsuba's .spd).
+    struct Entry {
+      std::string lambda, value;
+      Location at;
+    };
+    std::vector<Entry> entries;
+    if (n.attribute("filename")) {
+      if (n.attribute("value")) throw ErrorAt(loc, "<spectrum> takes either value or filename, not both");
+      fs::path file = fs::path(ctx.path).parent_path() / Attr(n, "filename", loc);
+      if (!fs::exists(file)) throw ErrorAt(loc, "cannot open spectrum file '{}'", file.string());
+      std::istringstream lines(ReadTextFile(file.string(), "spectrum file"));
+      std::string line;
+      int number = 0;
+      while (std::getline(lines, line)) {
+        ++number;
+        if (size_t h = line.find('#'); h != std::string::npos) line.resize(h);
+        std::vector<std::string> f = SplitFields(line);
+        if (f.empty()) continue;
+        if (f.size() != 2) throw MakeInputError(file.string(), number, "a spectrum line is: wavelength value");
+        entries.push_back({f[0], f[1], {file.string(), number}});
+      }
+    } else {
+      std::string value = Attr(n, "value", loc);
+      if (value.find(':') == std::string::npos) {
+        s.kind = SpectrumValue::Kind::kConstant;
+        s.value = float(ParseDouble(value, loc));
+        return s;
+      }
+      std::string token;
+      std::stringstream ss(value);
+      while (std::getline(ss, token, ',')) {
+        size_t colon = token.find(':');
+        if (colon == std::string::npos) throw ErrorAt(loc, "spectrum entry '{}' is not lambda:value", token);
+        entries.push_back({token.substr(0, colon), token.substr(colon + 1), loc});
+      }
     }
     s.kind = SpectrumValue::Kind::kSampled;
-    std::string token;
-    std::stringstream ss(value);
-    while (std::getline(ss, token, ',')) {
-      size_t colon = token.find(':');
-      if (colon == std::string::npos) throw ErrorAt(loc, "spectrum entry '{}' is not lambda:value", token);
-      float l = float(ParseDouble(token.substr(0, colon), loc)), v = float(ParseDouble(token.substr(colon + 1), loc));
-      if (!s.lambdas.empty() && l <= s.lambdas.back()) throw ErrorAt(loc, "spectrum wavelengths must increase");
+    for (const Entry& e : entries) {
+      float l = float(ParseDouble(e.lambda, e.at)), v = float(ParseDouble(e.value, e.at));
+      if (!s.lambdas.empty() && l <= s.lambdas.back()) throw ErrorAt(e.at, "spectrum wavelengths must increase");
       s.lambdas.push_back(l);
       s.values.push_back(v);
     }
@@ -243,8 +320,11 @@ class Parser {
     return std::any_of(std::begin(tags), std::end(tags), [&](const char* x) { return t == x; });
   }
 
+  // A named texture is the property of that name (a BSDF's "reflectance"); any other object's
+  // name is only a key, as in Mitsuba 3, whose plugins find their BSDF, emitter, film or
+  // sampler (and the scene its objects) by kind.
   void Attach(ObjectNode& parent, std::shared_ptr<ObjectNode> obj, const std::string& name, const Location& loc) {
-    if (name.empty()) {
+    if (name.empty() || obj->tag != "texture") {
       parent.children.push_back(std::move(obj));
     } else {
       AddProperty(parent, Property{name, std::move(obj), "object", loc});
@@ -267,6 +347,7 @@ class Parser {
         CheckAttributes(c, {"name", "value"}, loc);
         std::string name = c.attribute("name").value();
         if (name.empty()) throw ErrorAt(loc, "<default> needs a name");
+        declared_.insert(name);
         if (!overridden_.count(name)) params_[name] = Attr(c, "value", loc);
       } else if (tag == "include") {
         CheckAttributes(c, {"filename"}, loc);
@@ -277,6 +358,7 @@ class Parser {
         FileContext sub = Load(ReadTextFile(inc.string(), "included file"), inc.string(), &doc);
         pugi::xml_node scene = doc.child("scene");
         if (!scene) throw MakeInputError(inc.string(), 1, "an included file must have a <scene> root");
+        CheckAttributes(scene, {"version"}, Loc(sub, scene));
         Walk(scene, sub, parent, include_depth + 1);
       } else if (tag == "ref") {
         CheckAttributes(c, {"id", "name"}, loc);
@@ -284,6 +366,13 @@ class Parser {
         auto it = ids_.find(id);
         if (it == ids_.end()) throw ErrorAt(loc, "reference to unknown id '{}'", id);
         Attach(parent, it->second, Attr(c, "name", loc, false), loc);
+      } else if (tag == "alias") {  // Mitsuba 3: the object `id` also known as `as`
+        CheckAttributes(c, {"id", "as"}, loc);
+        std::string id = Attr(c, "id", loc), as = Attr(c, "as", loc);
+        auto it = ids_.find(id);
+        if (it == ids_.end()) throw ErrorAt(loc, "alias of unknown id '{}'", id);
+        if (ids_.count(as)) throw ErrorAt(loc, "id '{}' is used twice", as);
+        ids_[as] = it->second;
       } else if (IsObjectTag(tag)) {
         CheckAttributes(c, {"type", "id", "name"}, loc);
         auto obj = std::make_shared<ObjectNode>();
@@ -312,6 +401,7 @@ class Parser {
         } else if (tag == "boolean") {
           CheckAttributes(c, {"name", "value"}, loc);
           std::string v = Attr(c, "value", loc);
+          for (char& ch : v) ch = char(std::tolower(static_cast<unsigned char>(ch)));  // "True" as Mitsuba
           if (v != "true" && v != "false") throw ErrorAt(loc, "'{}' is not a boolean (true or false)", v);
           p.data = (v == "true");
         } else if (tag == "string") {
@@ -327,8 +417,7 @@ class Parser {
           s.rgb = Vec3f(float(v[0]), float(v[1]), float(v[2]));
           p.data = s;
         } else if (tag == "spectrum") {
-          CheckAttributes(c, {"name", "value", "type", "temperature"}, loc);
-          p.data = ParseSpectrum(c, ctx, loc);
+          p.data = ParseSpectrum(c, ctx, loc);  // checks its attributes by kind
         } else if (tag == "point" || tag == "vector") {
           CheckAttributes(c, {"name", "value", "x", "y", "z"}, loc);
           p.data = ParseTriple(c, loc, 0);
@@ -345,6 +434,7 @@ class Parser {
 
   std::map<std::string, std::string> params_;
   std::map<std::string, bool> overridden_;
+  mutable std::set<std::string> declared_;  // names given a <default> or used as $name
   std::map<std::string, std::shared_ptr<ObjectNode>> ids_;
 };
 

@@ -42,10 +42,16 @@ BatchLensTracer::BatchLensTracer(const LensTracer& tracer)
         // Absorption coefficient per mm from the transmittance over 1 mm.
         alpha[l] = float(-std::log(std::max(s.medium->InternalTransmittance(kTableMin + l, 1.0), 1e-30)));
       }
-      f.medium_after = int(index_tables_.size()) - 1;  // tables[0] is air
-      absorbing_ |= *std::max_element(alpha.begin(), alpha.end()) > 0;
-      index_tables_.push_back(std::move(n));
-      absorption_tables_.push_back(std::move(alpha));
+      // One table per distinct medium: a surface between equal media (a stop inside glass)
+      // then has the same medium on both sides and does not refract.
+      size_t m = 1;
+      while (m < index_tables_.size() && (index_tables_[m] != n || absorption_tables_[m] != alpha)) ++m;
+      f.medium_after = int(m) - 1;  // tables[0] is air
+      if (m == index_tables_.size()) {
+        absorbing_ |= *std::max_element(alpha.begin(), alpha.end()) > 0;
+        index_tables_.push_back(std::move(n));
+        absorption_tables_.push_back(std::move(alpha));
+      }
     }
     surfaces_.push_back(f);
   }
@@ -228,7 +234,7 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
     Step st{sf.z, sf.c, sf.k1, sf.semi2, sf.a2, {}, &rays.media_index[(m_in + 1) * count],
             &rays.media_index[(m_out + 1) * count], &rays.media_alpha[(absorb && absorbing ? m_in + 1 : 0) * count]};
     std::copy(sf.a, sf.a + 7, st.a);
-    const bool refract = !sf.is_stop && m_in != m_out;
+    const bool refract = m_in != m_out;  // the stop too, where it parts two media
     if (sf.plane) {
       if (refract) StepAll<true, false, true>(st, transmission, rays);
       else StepAll<true, false, false>(st, transmission, rays);

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "base/error.h"
+#include "base/log.h"
 #include "base/text_file.h"
 #include "optics/glass_catalog.h"
 #include "optics/pbrt_lens.h"
@@ -58,6 +59,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
   std::istringstream lines(text);
   std::string line;
   int number = 0, stop_line = 0, last_line = 0;
+  std::string coated;  // the surfaces with a coating, for one warning
   while (std::getline(lines, line)) {
     ++number;
     if (size_t h = line.find('#'); h != std::string::npos) line.resize(h);
@@ -112,6 +114,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
         s.conic = ParseFiniteNumber(value, path, number);
       } else if (key == "coating") {
         s.coating = value;
+        coated += fmt::format("{}surface {} (line {}, {})", coated.empty() ? "" : ", ", lens.surfaces.size() + 1, number, value);
       } else if (key.size() >= 2 && key[0] == 'a' && std::all_of(key.begin() + 1, key.end(), ::isdigit)) {
         int order = std::atoi(key.c_str() + 1);
         if (order < 4 || order > 16 || order % 2) throw MakeInputError(path, number, "aspheric terms are a4, a6, ..., a16");
@@ -127,36 +130,62 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
   if (lens.surfaces.empty()) throw MakeInputError(path, 0, "no surfaces");
   if (!stop_line) throw MakeInputError(path, 0, "no stop line");
   if (lens.surfaces.back().medium) throw MakeInputError(path, last_line, "the last surface must leave the lens into air");
+  if (!coated.empty())
+    spdlog::warn("{}: coatings are not simulated yet; these surfaces are traced uncoated: {}", path, coated);
   return lens;
 }
 
+std::string LensFileExtensionList() {
+  std::string list;
+  const size_t n = std::size(kLensFileExtensions);
+  for (size_t i = 0; i < n; ++i) list += std::string(i == 0 ? "" : i + 1 == n ? " or " : ", ") + kLensFileExtensions[i];
+  return list;
+}
+
+namespace {
+std::string LowerExtension(const fs::path& p) {
+  std::string ext = p.extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+bool IsLensExtension(const std::string& ext) {
+  return std::find(std::begin(kLensFileExtensions), std::end(kLensFileExtensions), ext) != std::end(kLensFileExtensions);
+}
+}  // namespace
+
 LensPrescription ReadLensFile(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
+  std::string ext = LowerExtension(path);
   if (ext == ".dat") return ReadPbrtLens(path);
-  if (ext == ".zmx" || ext == ".ZMX") return ReadZemaxLens(path);
-  if (ext != ".lens") throw MakeInputError(path, 0, "unknown lens file type '{}' (.lens, .dat or .zmx)", ext);
+  if (ext == ".zmx") return ReadZemaxLens(path);
+  if (ext != ".lens")
+    throw MakeInputError(path, 0, "unknown lens file type '{}' ({})", fs::path(path).extension().string(), LensFileExtensionList());
   return ParseNativeLens(ReadTextFile(path, "lens file"), path);
 }
 
-LensPrescription LoadLens(const std::string& name) {
-  if (fs::exists(name)) return ReadLensFile(name);
-  for (const char* ext : {".lens", ".dat"}) {
-    fs::path p = fs::path(DataDirectory()) / "lenses" / (name + ext);
-    if (fs::exists(p)) return ReadLensFile(p.string());
-  }
+std::string ResolveLens(const std::string& name, const std::string& base_dir) {
+  fs::path p(name);
+  if (p.is_relative() && !base_dir.empty()) p = fs::path(base_dir) / p;
+  if (fs::is_regular_file(p)) return p.string();
+  const fs::path shipped = fs::path(DataDirectory()) / "lenses";
+  if (IsLensExtension(LowerExtension(name)) && fs::is_regular_file(shipped / name)) return (shipped / name).string();
+  for (const char* ext : kLensFileExtensions)
+    if (fs::is_regular_file(shipped / (name + ext))) return (shipped / (name + ext)).string();
   std::string known;
   for (const std::string& n : ShippedLensNames()) known += (known.empty() ? "" : ", ") + n;
-  throw InputError(fmt::format("{}: no such lens file or shipped lens (shipped: {})", name, known));
+  throw InputError(fmt::format("no lens file '{}'{} and no shipped lens of that name (shipped: {})", name,
+                               fs::path(name).is_relative() && !base_dir.empty() ? " in " + base_dir : "", known));
+}
+
+LensPrescription LoadLens(const std::string& name, const std::string& base_dir) {
+  return ReadLensFile(ResolveLens(name, base_dir));
 }
 
 std::vector<std::string> ShippedLensNames() {
   std::vector<std::string> names;
   fs::path dir = fs::path(DataDirectory()) / "lenses";
   if (!fs::exists(dir)) return names;
-  for (const auto& e : fs::directory_iterator(dir)) {
-    std::string ext = e.path().extension().string();
-    if (ext == ".lens" || ext == ".dat") names.push_back(e.path().stem().string());
-  }
+  for (const auto& e : fs::directory_iterator(dir))
+    if (IsLensExtension(LowerExtension(e.path()))) names.push_back(e.path().stem().string());
   std::sort(names.begin(), names.end());
   names.erase(std::unique(names.begin(), names.end()), names.end());
   return names;

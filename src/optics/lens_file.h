@@ -1,5 +1,5 @@
-// Reading lenses: the native `.lens` format (docs/lens-format.md), pbrt `.dat` files, and
-// the lenses shipped in data/lenses by name.
+// Reading lenses: the native `.lens` format (docs/lens-format.md), pbrt `.dat` files, Zemax
+// `.zmx` files, and the lenses shipped in data/lenses by name.
 #pragma once
 #include <string>
 #include <vector>
@@ -8,10 +8,21 @@
 
 namespace objektiv {
 
-LensPrescription ReadLensFile(const std::string& path);  // by extension: .lens or .dat
+// The lens file formats, by extension, in the order a shipped lens's name tries them.
+inline constexpr const char* kLensFileExtensions[] = {".lens", ".dat", ".zmx"};
+// "`.lens`, `.dat` or `.zmx`"-style list of kLensFileExtensions, for messages and help.
+std::string LensFileExtensionList();
+
+LensPrescription ReadLensFile(const std::string& path);  // by extension (any case)
 LensPrescription ParseNativeLens(const std::string& text, const std::string& path);
-// A path, or the name of a shipped lens ("dgauss.50mm"): data/lenses/NAME.lens, then .dat.
-LensPrescription LoadLens(const std::string& name_or_path);
+// Where a lens named on the command line or in a scene is, the one rule for both: `name` as a
+// file path (relative to `base_dir`; the current directory when empty), else a shipped lens by
+// name, with or without its extension ("dgauss.50mm", "tessar.brendel.100mm.dat"; without one,
+// data/lenses/NAME.lens, then .dat, then .zmx). Throws InputError without a location (the
+// caller knows where the name was written) that lists the shipped lenses.
+std::string ResolveLens(const std::string& name, const std::string& base_dir = "");
+// ReadLensFile(ResolveLens(name, base_dir)).
+LensPrescription LoadLens(const std::string& name, const std::string& base_dir = "");
 // Names of the shipped lenses (without extension), sorted.
 std::vector<std::string> ShippedLensNames();
 

@@ -14,7 +14,7 @@ struct LensSurface {
   bool flat = false;          // a plane surface (radius infinite)
   double thickness = 0;       // mm to the next surface (the last: to the film)
   double semi_diameter = 0;   // clear semi-diameter, mm
-  bool is_stop = false;       // the aperture stop (a plane iris, no refraction)
+  bool is_stop = false;       // the aperture stop: a plane iris (and a flat interface if the media differ)
   double conic = 0;           // k: 0 sphere, -1 paraboloid
   std::array<double, 7> aspheric{};  // even aspheric coefficients a4, a6, ..., a16
   double a2 = 0;              // r^2 aspheric term (Zemax EVENASPH PARM 1); adds 2 a2 to the paraxial curvature

@@ -176,8 +176,8 @@ TraceResult LensTracer::Trace(const LensRay& in, double lambda_nm, bool from_fil
         result.internal_transmittance *= g->InternalTransmittance(lambda_nm, *t);
     }
     ray.o = p;
-    if (s.is_stop) continue;
-    // Indices on the incoming and outgoing sides.
+    // Indices on the incoming and outgoing sides (a stop inside glass has the same on both;
+    // between different media it refracts as the flat interface it is).
     double n_object_side = i > 0 ? lens_.surfaces[i - 1].IndexAfter(lambda_nm) : 1.0;
     double n_film_side = s.IndexAfter(lambda_nm);
     double n1 = from_film ? n_film_side : n_object_side, n2 = from_film ? n_object_side : n_film_side;

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "base/error.h"
+#include "base/log.h"
 #include "base/text_file.h"
 
 namespace objektiv {
@@ -25,6 +26,7 @@ LensPrescription ParsePbrtLens(const std::string& text, const std::string& path)
   // Media are shared between rows with the same index.
   std::map<double, std::shared_ptr<const Glass>> media;
   bool described = false;
+  double index_before = 1;  // the medium in front of the current row (air before the first)
   while (std::getline(lines, line)) {
     ++number;
     size_t hash = line.find('#');
@@ -52,18 +54,22 @@ LensPrescription ParsePbrtLens(const std::string& text, const std::string& path)
     s.semi_diameter = v[3] / 2;
     if (v[3] <= 0) throw MakeInputError(path, number, "aperture diameter must be positive, got {}", v[3]);
     if (s.thickness < 0) throw MakeInputError(path, number, "thickness must not be negative, got {}", s.thickness);
+    if (v[2] != 0 && v[2] < 1) throw MakeInputError(path, number, "index of refraction {} is below 1", v[2]);
+    double n = (v[2] == 0) ? 1 : v[2];
     if (v[0] == 0) {
       if (stop_line) throw MakeInputError(path, number, "a second aperture stop (radius 0; the first is on line {})", stop_line);
       s.is_stop = true;
       stop_line = number;
-      if (v[2] != 0 && v[2] != 1) throw MakeInputError(path, number, "the stop row must have index 0 or 1 (air)");
-    } else {
-      if (s.semi_diameter > std::abs(s.radius))
-        throw MakeInputError(path, number, "semi-diameter {} is larger than the radius {}", s.semi_diameter, s.radius);
-      if (v[2] != 0 && v[2] < 1)
-        throw MakeInputError(path, number, "index of refraction {} is below 1", v[2]);
+      // The index is the medium after the stop, which may lie inside glass. Where it differs
+      // from the medium before, the stop's plane is also a flat interface between them.
+      if (n != index_before)
+        spdlog::warn("{}:{}: the stop row's index {} differs from the medium before it ({}); pbrt-v4 does not "
+                     "refract there, Objektiv refracts at the stop's plane as at any flat interface",
+                     path, number, n, index_before);
+    } else if (s.semi_diameter > std::abs(s.radius)) {
+      throw MakeInputError(path, number, "semi-diameter {} is larger than the radius {}", s.semi_diameter, s.radius);
     }
-    double n = (v[2] == 0) ? 1 : v[2];
+    index_before = n;
     if (n != 1) {
       auto& m = media[n];
       if (!m) m = std::make_shared<const Glass>(Glass::Constant(n));

@@ -166,10 +166,10 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path)
     }
     if (z.stop) {
       have_stop = true;
-      if (s.flat && !s.medium && (i == 1 || !lens.surfaces.back().medium) && !s.HasAsphericTerms()) {
-        s.is_stop = true;  // a plain plane in air: the stop itself
+      if (s.flat && !s.HasAsphericTerms()) {
+        s.is_stop = true;  // a plane: the stop itself (in air, in glass, or between two media)
       } else {
-        // A refracting stop surface: put the iris in a plane at its vertex.
+        // A curved (or aspheric) stop surface: the iris in a plane at its vertex.
         LensSurface iris;
         iris.is_stop = true;
         iris.flat = true;

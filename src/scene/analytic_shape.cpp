@@ -364,6 +364,27 @@ ShapeSample Cylinder::SampleArea(Vec2f u) const {
 InfinitePlane::InfinitePlane(const Transform& to_world, bool flip_normals) : to_world_(to_world), flip_(flip_normals) {
   normal_ = Normalize(to_world.Normal(Vec3f(0, 0, 1)));
   if (flip_) normal_ = -normal_;
+  // The points p of the plane n.(p - p0) = 0 inside the cube |p_j| <= R satisfy, along axis i,
+  // |p_i - p0_i| <= sum over j != i of |n_j| (R + |p0_j|) / |n_i|: a thin slab for a plane
+  // facing an axis (the BVH then skips it for rays that stay on one side), the cube otherwise.
+  const double R = kInfinitePlaneExtent;
+  const auto& inv = to_world.InverseMatrix().m;
+  const Vec3d n(inv[2][0], inv[2][1], inv[2][2]);  // (0, 0, 1) by the inverse transpose
+  const Vec3d p0 = to_world.Point(Vec3d(0, 0, 0));
+  for (int i = 0; i < 3; ++i) {
+    double lo = -R, hi = R;
+    if (n[i] != 0) {
+      double half = 0;
+      for (int j = 0; j < 3; ++j)
+        if (j != i) half += std::abs(n[j]) * (R + std::abs(p0[j])) / std::abs(n[i]);
+      lo = std::max(lo, p0[i] - half);
+      hi = std::min(hi, p0[i] + half);
+    }
+    if (!(lo <= hi)) throw std::invalid_argument("plane: it lies beyond the reach of the scene (1e18 units)");
+    // Widened past the rounding to float (and the double arithmetic above).
+    embree_bounds_.lo[i] = float(lo - 1e-6 * std::abs(lo)) - 1e-30f;
+    embree_bounds_.hi[i] = float(hi + 1e-6 * std::abs(hi)) + 1e-30f;
+  }
 }
 
 bool InfinitePlane::Intersect(const Vec3d& o, const Vec3d& d, double tmax, double* t, Vec2f* param) const {
@@ -374,14 +395,12 @@ bool InfinitePlane::Intersect(const Vec3d& o, const Vec3d& d, double tmax, doubl
 }
 
 SurfaceInteraction InfinitePlane::ComputeInteraction(const Ray& ray, const RTCHit& hit, float t) const {
-  return FlatInteraction(to_world_, normal_, hit.u, hit.v, ray, t, {hit.u, hit.v});
-}
-
-Bounds3f InfinitePlane::EmbreeBounds() const {
-  Bounds3f b;
-  b.lo = Vec3f(-1e30f);
-  b.hi = Vec3f(1e30f);
-  return b;
+  // The hit again in double: far away the float (u, v) Embree carried would put the point off
+  // the plane by more than its error bound.
+  double th;
+  Vec2d xy(hit.u, hit.v);
+  ObjectPlaneHit(to_world_, Vec3d(ray.o), Vec3d(ray.d), std::numeric_limits<double>::infinity(), &th, &xy);
+  return FlatInteraction(to_world_, normal_, xy.x, xy.y, ray, t, {float(xy.x), float(xy.y)});
 }
 
 }  // namespace objektiv

@@ -76,7 +76,13 @@ class Cylinder final : public AnalyticShape {
   bool flip_;
 };
 
+// How far the infinite plane reaches from the world origin along each axis. Embree drops any
+// box beyond about 1.8e18 (its FLT_LARGE), so no geometry reaches farther; hits are computed
+// in double precision, so they are exact wherever a float can tell points apart.
+constexpr double kInfinitePlaneExtent = 1e18;
+
 // The infinite plane z = 0 (object space) facing +z. It cannot be sampled (no emission).
+// Throws std::invalid_argument if it lies wholly beyond kInfinitePlaneExtent.
 class InfinitePlane final : public AnalyticShape {
  public:
   InfinitePlane(const Transform& to_world, bool flip_normals);
@@ -84,13 +90,14 @@ class InfinitePlane final : public AnalyticShape {
   SurfaceInteraction ComputeInteraction(const Ray& ray, const RTCHit& hit, float t) const override;
   float Area() const override { return std::numeric_limits<float>::infinity(); }
   Bounds3f WorldBounds() const override { return {}; }
-  Bounds3f EmbreeBounds() const override;
+  Bounds3f EmbreeBounds() const override { return embree_bounds_; }
   ShapeSample SampleArea(Vec2f) const override { return {}; }
 
  private:
   Transform to_world_;
   Vec3f normal_;
   bool flip_;
+  Bounds3f embree_bounds_;  // the plane inside the cube of half-size kInfinitePlaneExtent
 };
 
 }  // namespace objektiv
