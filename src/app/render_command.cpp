@@ -1,12 +1,12 @@
 // `objektiv render SCENE.xml`: renders a scene to a linear EXR and a tone-mapped PNG.
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <thread>
 
 #include "app/commands.h"
 #include "base/error.h"
 #include "base/log.h"
+#include "base/output_file.h"
 #include "io/image_io.h"
 #include "io/scene_loader.h"
 #include "render/renderer.h"
@@ -23,14 +23,12 @@ struct RenderArgs {
 };
 
 void WriteStatsJson(const std::string& path, const RenderStats& s, int threads) {
-  std::ofstream out(path);
-  if (!out) throw InputError(fmt::format("{}: cannot write the statistics file", path));
-  out << fmt::format(
-      "{{\n  \"seconds\": {:.6f},\n  \"spp\": {},\n  \"width\": {},\n  \"height\": {},\n  \"threads\": {},\n"
-      "  \"samples\": {},\n  \"rays\": {},\n  \"samples_per_second\": {:.3f},\n  \"mrays_per_second\": {:.6f},\n"
-      "  \"nan_count\": {},\n  \"inf_count\": {},\n  \"camera_rays_traced\": {},\n  \"camera_pass_rate\": {:.6f}\n}}\n",
-      s.seconds, s.spp, s.width, s.height, threads, s.samples, s.rays, s.SamplesPerSecond(), s.MraysPerSecond(),
-      s.nan_count, s.inf_count, s.camera_rays_traced, s.CameraPassRate());
+  WriteTextFileAtomically(
+      path, fmt::format("{{\n  \"seconds\": {:.6f},\n  \"spp\": {},\n  \"width\": {},\n  \"height\": {},\n  \"threads\": {},\n"
+                        "  \"samples\": {},\n  \"rays\": {},\n  \"samples_per_second\": {:.3f},\n  \"mrays_per_second\": {:.6f},\n"
+                        "  \"nan_count\": {},\n  \"inf_count\": {},\n  \"camera_rays_traced\": {},\n  \"camera_pass_rate\": {:.6f}\n}}\n",
+                        s.seconds, s.spp, s.width, s.height, threads, s.samples, s.rays, s.SamplesPerSecond(),
+                        s.MraysPerSecond(), s.nan_count, s.inf_count, s.camera_rays_traced, s.CameraPassRate()));
 }
 
 CropWindow ParseCrop(const std::string& text, int width, int height) {
