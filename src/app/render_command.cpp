@@ -5,6 +5,7 @@
 
 #include "app/commands.h"
 #include "base/error.h"
+#include "base/input_files.h"
 #include "base/log.h"
 #include "base/output_file.h"
 #include "io/image_io.h"
@@ -29,6 +30,36 @@ void WriteStatsJson(const std::string& path, const RenderStats& s, int threads) 
                         "  \"nan_count\": {},\n  \"inf_count\": {},\n  \"camera_rays_traced\": {},\n  \"camera_pass_rate\": {:.6f}\n}}\n",
                         s.seconds, s.spp, s.width, s.height, threads, s.samples, s.rays, s.SamplesPerSecond(),
                         s.MraysPerSecond(), s.nan_count, s.inf_count, s.camera_rays_traced, s.CameraPassRate()));
+}
+
+// An output file and what it is, for messages.
+struct Output {
+  std::string what, path;
+};
+
+// Bad outputs are bad command-line values (exit status 2), found before the long work.
+// Before the scene is loaded: every output can be written (its directory exists; it is not
+// created, so that a mistyped path fails instead of growing directories) and no two are one file.
+void CheckOutputsWritable(const std::vector<Output>& outputs) {
+  namespace fs = std::filesystem;
+  for (size_t i = 0; i < outputs.size(); ++i) {
+    try {
+      CheckOutputFile(outputs[i].path);
+    } catch (const InputError& e) {
+      throw CLI::ValidationError(fmt::format("{} cannot be written: {}", outputs[i].what, e.what()));
+    }
+    for (size_t j = 0; j < i; ++j)
+      if (fs::weakly_canonical(outputs[i].path) == fs::weakly_canonical(outputs[j].path))
+        throw CLI::ValidationError(fmt::format("{} {} is also {}", outputs[i].what, outputs[i].path, outputs[j].what));
+  }
+}
+
+// After the scene is loaded: no output replaces a file the scene read.
+void CheckOutputsAreNotInputs(const std::vector<Output>& outputs) {
+  for (const Output& o : outputs)
+    if (std::optional<std::string> input = InputFileAt(o.path))
+      throw CLI::ValidationError(
+          fmt::format("{} {} would overwrite {}, a file the scene reads; choose another name", o.what, o.path, *input));
 }
 
 CropWindow ParseCrop(const std::string& text, int width, int height) {
@@ -59,8 +90,11 @@ int RunRender(const RenderArgs& a) {
     return 2;
   }
   fs::path png = fs::path(exr).replace_extension(".png");
-
+  std::vector<Output> outputs = {{"the EXR", exr.string()}, {"the PNG written beside the EXR", png.string()}};
+  if (!a.stats_json.empty()) outputs.push_back({"--stats-json", a.stats_json});
+  CheckOutputsWritable(outputs);
   RenderSetup setup = LoadScene(a.scene, defines);
+  CheckOutputsAreNotInputs(outputs);
   FilmSettings& fs_ = setup.film;
   if (!a.crop.empty()) {
     try {
@@ -83,7 +117,6 @@ int RunRender(const RenderArgs& a) {
 
   RenderStats stats = Render(*setup.camera, *setup.integrator, *sampler, film, opts);
 
-  if (!exr.parent_path().empty()) fs::create_directories(exr.parent_path());
   Image linear = film.ToImage(*fs_.color_space, fs_.exposure);
   WriteExr(exr.string(), linear);
   WritePng(png.string(), ApplyToneMap(linear, fs_.tonemap));
