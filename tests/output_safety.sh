@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Command-line tests of output safety: unwritable outputs and outputs that would replace one of
-# the scene's own files are refused before rendering (exit 2).
-# Usage: output_safety.sh CASE OBJEKTIV SOURCE_DIR WORK_DIR
-#   CASE: unwritable | inputs
+# the scene's own files are refused before rendering (exit 2); Ctrl-C stops a render and writes
+# a whole, partial image (exit 130); a second Ctrl-C aborts at once.
+# Usage: output_safety.sh CASE OBJEKTIV SOURCE_DIR WORK_DIR IINFO
+#   CASE: unwritable | inputs | interrupt | interrupt-twice
 set -uo pipefail
-case_name=$1 obj=$2 src=$3 work=$4
+case_name=$1 obj=$2 src=$3 work=$4 iinfo=$5
 cornell=$src/scenes/cornell-box/cornell-box.xml
 rm -rf "$work" && mkdir -p "$work" || exit 1
 
@@ -68,6 +69,59 @@ inputs)
   rm "$work/out.txt"
   (cd "$work" && find . -type f -exec md5sum {} + | sort -k2) | diff "$work.sums" - || fail "files were changed or added"
   no_temporaries "$work/lens"
+  ;;
+interrupt)
+  # A render far too long to finish (1024x1024 at 4096 spp), a few ms per pixel. Job control
+  # (set -m) so that the background job does not start with SIGINT ignored.
+  set -m
+  "$obj" render "$cornell" -D res=1024 --spp 4096 -o "$work/int.exr" --stats-json "$work/int.json" \
+    > "$work/out.txt" 2> "$work/err.txt" &
+  pid=$!
+  for _ in $(seq 1200); do grep -q "rendering" "$work/err.txt" && break; kill -0 $pid 2> /dev/null || break; sleep 0.1; done
+  grep -q "rendering" "$work/err.txt" || fail "the render did not start: $(cat "$work/err.txt")"
+  sleep 1
+  kill -INT $pid
+  start=$(date +%s%N)
+  for _ in $(seq 600); do kill -0 $pid 2> /dev/null || break; sleep 0.05; done
+  kill -0 $pid 2> /dev/null && { kill -KILL $pid; fail "still running 30 s after SIGINT"; }
+  wait $pid
+  rc=$?
+  echo "stopped $(( ($(date +%s%N) - start) / 1000000 )) ms after SIGINT (including writing the images), exit $rc"
+  cat "$work/out.txt" "$work/err.txt"
+  if [ $rc = 0 ]; then echo "the render finished before the signal: nothing to check"; exit 0; fi
+  [ $rc = 130 ] || fail "exit $rc, expected 130"
+  grep -q "(partial)" "$work/out.txt" || fail "the summary does not say partial"
+  grep -q '"partial": true' "$work/int.json" || fail "--stats-json lacks \"partial\": true"
+  "$iinfo" -v "$work/int.exr" > "$work/header.txt" || fail "iinfo cannot read the EXR"
+  grep -q 'objektiv:partial: 1' "$work/header.txt" || fail "no objektiv:partial = 1 in the header: $(cat "$work/header.txt")"
+  grep -q 'objektiv:pixels: 1048576' "$work/header.txt" || fail "no objektiv:pixels in the header"
+  done_pixels=$(sed -n 's/.*objektiv:pixels_completed: \([0-9]*\).*/\1/p' "$work/header.txt")
+  [ -n "$done_pixels" ] && [ "$done_pixels" -lt 1048576 ] || fail "pixels_completed '$done_pixels'"
+  # The whole file reads (every pixel decodes), and the PNG is there.
+  "$obj" imgtool diff "$work/int.exr" "$work/int.exr" --threshold 0 > /dev/null || fail "the EXR does not read whole"
+  [ -s "$work/int.png" ] || fail "no PNG"
+  no_temporaries "$work"
+  ;;
+interrupt-twice)
+  # The first Ctrl-C lets each thread finish its pixel; at 16M samples per pixel that takes
+  # seconds, and the second Ctrl-C must end the process at once, writing nothing.
+  set -m
+  "$obj" render "$cornell" -D res=4 --spp 16777216 -o "$work/int.exr" > "$work/out.txt" 2> "$work/err.txt" &
+  pid=$!
+  for _ in $(seq 1200); do grep -q "rendering" "$work/err.txt" && break; kill -0 $pid 2> /dev/null || break; sleep 0.1; done
+  grep -q "rendering" "$work/err.txt" || fail "the render did not start: $(cat "$work/err.txt")"
+  sleep 1  # well inside the first pixel
+  kill -INT $pid
+  for _ in $(seq 300); do grep -q "interrupted" "$work/err.txt" && break; sleep 0.1; done
+  grep -q "interrupted" "$work/err.txt" || fail "no message after the first SIGINT"
+  kill -INT $pid
+  for _ in $(seq 100); do kill -0 $pid 2> /dev/null || break; sleep 0.05; done
+  kill -0 $pid 2> /dev/null && { kill -KILL $pid; fail "still running 5 s after the second SIGINT"; }
+  wait $pid
+  rc=$?
+  [ $rc = 130 ] || fail "exit $rc, expected 130"
+  [ ! -e "$work/int.exr" ] || fail "an image was written after the second SIGINT"
+  no_temporaries "$work"
   ;;
 *) fail "unknown case $case_name" ;;
 esac

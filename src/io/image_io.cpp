@@ -64,13 +64,17 @@ Image ReadImageRgb(const std::string& path, bool raw) {
 }
 
 namespace {
-void Write(const std::string& path, const Image& image, OIIO::TypeDesc format, const char* compression) {
+void Write(const std::string& path, const Image& image, OIIO::TypeDesc format, const char* compression,
+           const std::vector<ImageAttribute>& attributes) {
   // The format follows the target's extension; the pixels go to a temporary file first.
   auto out = OIIO::ImageOutput::create(path);
   if (!out) throw InputError(fmt::format("{}: cannot create image file: {}", path, OIIO::geterror()));
   OIIO::ImageSpec spec(image.width, image.height, image.NumChannels(), format);
   spec.channelnames = image.channels;
   if (compression) spec.attribute("compression", compression);
+  for (const ImageAttribute& a : attributes)
+    std::visit([&](auto v) { spec.attribute(a.name, OIIO::TypeDesc(OIIO::BaseTypeFromC<decltype(v)>::value), &v); },
+               a.value);
   WriteFileAtomically(path, [&](const std::string& temp) {
     if (!out->open(temp, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data()) || !out->close())
       throw InputError(fmt::format("{}: cannot write image: {}", path, out->geterror()));
@@ -78,8 +82,10 @@ void Write(const std::string& path, const Image& image, OIIO::TypeDesc format, c
 }
 }  // namespace
 
-void WriteExr(const std::string& path, const Image& image) { Write(path, image, OIIO::TypeDesc::FLOAT, "zip"); }
+void WriteExr(const std::string& path, const Image& image, const std::vector<ImageAttribute>& attributes) {
+  Write(path, image, OIIO::TypeDesc::FLOAT, "zip", attributes);
+}
 
-void WritePng(const std::string& path, const Image& display) { Write(path, display, OIIO::TypeDesc::UINT8, nullptr); }
+void WritePng(const std::string& path, const Image& display) { Write(path, display, OIIO::TypeDesc::UINT8, nullptr, {}); }
 
 }  // namespace objektiv

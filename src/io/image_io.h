@@ -1,6 +1,8 @@
 // Reading and writing images through OpenImageIO.
 #pragma once
 #include <string>
+#include <variant>
+#include <vector>
 
 #include "base/image.h"
 
@@ -14,10 +16,17 @@ Image ReadImageRgb(const std::string& path, bool raw = false);
 // Every channel as stored (float), for comparisons.
 Image ReadImageAny(const std::string& path);
 
+// A header attribute of an EXR file, e.g. {"objektiv:partial", 1}.
+struct ImageAttribute {
+  using Value = std::variant<int, double>;
+  std::string name;
+  Value value;
+};
+
 // Both writers write atomically (base/output_file.h: a temporary file renamed over `path`)
 // and throw InputError naming `path` on failure.
-// Linear float EXR (ZIP compressed) with the image's channel names.
-void WriteExr(const std::string& path, const Image& image);
+// Linear float EXR (ZIP compressed) with the image's channel names and extra attributes.
+void WriteExr(const std::string& path, const Image& image, const std::vector<ImageAttribute>& attributes = {});
 // 8-bit PNG of an image whose values are already display-encoded in [0, 1].
 void WritePng(const std::string& path, const Image& display);
 
