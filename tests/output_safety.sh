@@ -22,6 +22,26 @@ expect() {
 }
 # No temporary files (".NAME.PID-N.tmp") left in a directory.
 no_temporaries() { ! ls -A "$1" | grep -q '\.tmp$' || fail "temporary files left in $1: $(ls -A "$1")"; }
+# Starts a render in the background (pid in $pid, output in out.txt and err.txt), with job
+# control (set -m) so that it does not start with SIGINT ignored, and waits until it renders.
+start_render() {
+  set -m
+  "$obj" render "$cornell" "$@" > "$work/out.txt" 2> "$work/err.txt" &
+  pid=$!
+  wait_for rendering 1200 || fail "the render did not start: $(cat "$work/err.txt")"
+}
+# wait_for TEXT TENTHS: until err.txt holds TEXT, at most TENTHS tenths of a second.
+wait_for() {
+  for _ in $(seq "$2"); do grep -q "$1" "$work/err.txt" && return 0; kill -0 $pid 2> /dev/null || break; sleep 0.1; done
+  grep -q "$1" "$work/err.txt"
+}
+# wait_exit TENTHS: until the render has ended (else it is killed and the test fails); status in $rc.
+wait_exit() {
+  for _ in $(seq "$1"); do kill -0 $pid 2> /dev/null || break; sleep 0.1; done
+  kill -0 $pid 2> /dev/null && { kill -KILL $pid; fail "still running $(($1 / 10)) s after the signal"; }
+  wait $pid
+  rc=$?
+}
 
 small=(-D res=16 --spp 2)
 case $case_name in
@@ -71,21 +91,12 @@ inputs)
   no_temporaries "$work/lens"
   ;;
 interrupt)
-  # A render far too long to finish (1024x1024 at 4096 spp), a few ms per pixel. Job control
-  # (set -m) so that the background job does not start with SIGINT ignored.
-  set -m
-  "$obj" render "$cornell" -D res=1024 --spp 4096 -o "$work/int.exr" --stats-json "$work/int.json" \
-    > "$work/out.txt" 2> "$work/err.txt" &
-  pid=$!
-  for _ in $(seq 1200); do grep -q "rendering" "$work/err.txt" && break; kill -0 $pid 2> /dev/null || break; sleep 0.1; done
-  grep -q "rendering" "$work/err.txt" || fail "the render did not start: $(cat "$work/err.txt")"
+  # A render far too long to finish (1024x1024 at 4096 spp), a few ms per pixel.
+  start_render -D res=1024 --spp 4096 -o "$work/int.exr" --stats-json "$work/int.json"
   sleep 1
   kill -INT $pid
   start=$(date +%s%N)
-  for _ in $(seq 600); do kill -0 $pid 2> /dev/null || break; sleep 0.05; done
-  kill -0 $pid 2> /dev/null && { kill -KILL $pid; fail "still running 30 s after SIGINT"; }
-  wait $pid
-  rc=$?
+  wait_exit 300
   echo "stopped $(( ($(date +%s%N) - start) / 1000000 )) ms after SIGINT (including writing the images), exit $rc"
   cat "$work/out.txt" "$work/err.txt"
   if [ $rc = 0 ]; then echo "the render finished before the signal: nothing to check"; exit 0; fi
@@ -105,20 +116,12 @@ interrupt)
 interrupt-twice)
   # The first Ctrl-C lets each thread finish its pixel; at 16M samples per pixel that takes
   # seconds, and the second Ctrl-C must end the process at once, writing nothing.
-  set -m
-  "$obj" render "$cornell" -D res=4 --spp 16777216 -o "$work/int.exr" > "$work/out.txt" 2> "$work/err.txt" &
-  pid=$!
-  for _ in $(seq 1200); do grep -q "rendering" "$work/err.txt" && break; kill -0 $pid 2> /dev/null || break; sleep 0.1; done
-  grep -q "rendering" "$work/err.txt" || fail "the render did not start: $(cat "$work/err.txt")"
+  start_render -D res=4 --spp 16777216 -o "$work/int.exr"
   sleep 1  # well inside the first pixel
   kill -INT $pid
-  for _ in $(seq 300); do grep -q "interrupted" "$work/err.txt" && break; sleep 0.1; done
-  grep -q "interrupted" "$work/err.txt" || fail "no message after the first SIGINT"
+  wait_for interrupted 300 || fail "no message after the first SIGINT"
   kill -INT $pid
-  for _ in $(seq 100); do kill -0 $pid 2> /dev/null || break; sleep 0.05; done
-  kill -0 $pid 2> /dev/null && { kill -KILL $pid; fail "still running 5 s after the second SIGINT"; }
-  wait $pid
-  rc=$?
+  wait_exit 50
   [ $rc = 130 ] || fail "exit $rc, expected 130"
   [ ! -e "$work/int.exr" ] || fail "an image was written after the second SIGINT"
   no_temporaries "$work"

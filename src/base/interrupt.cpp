@@ -16,7 +16,8 @@ void OnSignal(int sig) {
   int expected = 0;
   if (first_signal.compare_exchange_strong(expected, sig)) {
     requested.store(true);
-    static const char msg[] = "\ninterrupted: finishing the pixels in progress, then writing what is done (Ctrl-C again aborts at once)\n";
+    static const char msg[] =
+        "\ninterrupted: finishing the pixels in progress, then writing what is done (Ctrl-C again aborts at once)\n";
     ssize_t ignored = write(STDERR_FILENO, msg, sizeof(msg) - 1);
     (void)ignored;
     return;

@@ -80,7 +80,7 @@ void CheckOutputFile(const std::string& path) {
   unlink(temp.c_str());
 }
 
-void WriteFileAtomically(const std::string& path, const std::function<void(const std::string& temp)>& write) {
+void WriteFileAtomically(const std::string& path, const std::function<void(const std::string& temp)>& fill) {
   const fs::path target = Target(path);
   CheckReplaceable(path, target);
   auto [temp, fd] = MakeTemporary(path, target);
@@ -92,7 +92,7 @@ void WriteFileAtomically(const std::string& path, const std::function<void(const
     pending = true;
   }
   try {
-    write(temp.string());
+    fill(temp.string());
     Fsync(temp);
     if (rename(temp.c_str(), target.c_str()) != 0)
       throw InputError(fmt::format("{}: cannot replace the file: {}", path, std::strerror(errno)));

@@ -19,11 +19,11 @@ namespace objektiv {
 // this process has read as input.
 void CheckOutputFile(const std::string& path);
 
-// Writes `path` atomically: `write` fills the temporary file named by its argument (it may
-// open it by name and truncate it); then the temporary replaces `path`. If `write` throws,
+// Writes `path` atomically: `fill` writes the temporary file named by its argument (it may
+// open it by name and truncate it); then the temporary replaces `path`. If `fill` throws,
 // the temporary is removed and the exception passes on. Throws InputError naming `path` if
 // the temporary cannot be made or renamed, or `path` is a file read as input.
-void WriteFileAtomically(const std::string& path, const std::function<void(const std::string& temp)>& write);
+void WriteFileAtomically(const std::string& path, const std::function<void(const std::string& temp)>& fill);
 void WriteTextFileAtomically(const std::string& path, std::string_view text);
 
 // For a signal handler that ends the process: removes the temporary file being written, if
