@@ -1,12 +1,15 @@
 // `objektiv render SCENE.xml`: renders a scene to a linear EXR and a tone-mapped PNG.
 #include <filesystem>
-#include <fstream>
+#include <limits>
 #include <map>
 #include <thread>
 
 #include "app/commands.h"
 #include "base/error.h"
+#include "base/input_files.h"
+#include "base/interrupt.h"
 #include "base/log.h"
+#include "base/output_file.h"
 #include "io/image_io.h"
 #include "io/scene_loader.h"
 #include "render/renderer.h"
@@ -23,14 +26,44 @@ struct RenderArgs {
 };
 
 void WriteStatsJson(const std::string& path, const RenderStats& s, int threads) {
-  std::ofstream out(path);
-  if (!out) throw InputError(fmt::format("{}: cannot write the statistics file", path));
-  out << fmt::format(
-      "{{\n  \"seconds\": {:.6f},\n  \"spp\": {},\n  \"width\": {},\n  \"height\": {},\n  \"threads\": {},\n"
-      "  \"samples\": {},\n  \"rays\": {},\n  \"samples_per_second\": {:.3f},\n  \"mrays_per_second\": {:.6f},\n"
-      "  \"nan_count\": {},\n  \"inf_count\": {},\n  \"camera_rays_traced\": {},\n  \"camera_pass_rate\": {:.6f}\n}}\n",
-      s.seconds, s.spp, s.width, s.height, threads, s.samples, s.rays, s.SamplesPerSecond(), s.MraysPerSecond(),
-      s.nan_count, s.inf_count, s.camera_rays_traced, s.CameraPassRate());
+  WriteTextFileAtomically(
+      path, fmt::format("{{\n  \"seconds\": {:.6f},\n  \"spp\": {},\n  \"width\": {},\n  \"height\": {},\n  \"threads\": {},\n"
+                        "  \"samples\": {},\n  \"rays\": {},\n  \"samples_per_second\": {:.3f},\n  \"mrays_per_second\": {:.6f},\n"
+                        "  \"nan_count\": {},\n  \"inf_count\": {},\n  \"camera_rays_traced\": {},\n  \"camera_pass_rate\": {:.6f},\n"
+                        "  \"partial\": {},\n  \"pixels\": {},\n  \"pixels_completed\": {}\n}}\n",
+                        s.seconds, s.spp, s.width, s.height, threads, s.samples, s.rays, s.SamplesPerSecond(),
+                        s.MraysPerSecond(), s.nan_count, s.inf_count, s.camera_rays_traced, s.CameraPassRate(),
+                        s.Partial(), s.pixels, s.pixels_completed));
+}
+
+// An output file and what it is, for messages.
+struct Output {
+  std::string what, path;
+};
+
+// Bad outputs are bad command-line values (exit status 2), found before the long work.
+// Before the scene is loaded: every output can be written (its directory exists; it is not
+// created, so that a mistyped path fails instead of growing directories) and no two are one file.
+void CheckOutputsWritable(const std::vector<Output>& outputs) {
+  namespace fs = std::filesystem;
+  for (size_t i = 0; i < outputs.size(); ++i) {
+    try {
+      CheckOutputFile(outputs[i].path);
+    } catch (const InputError& e) {
+      throw CLI::ValidationError(fmt::format("{} cannot be written: {}", outputs[i].what, e.what()));
+    }
+    for (size_t j = 0; j < i; ++j)
+      if (fs::weakly_canonical(outputs[i].path) == fs::weakly_canonical(outputs[j].path))
+        throw CLI::ValidationError(fmt::format("{} {} is also {}", outputs[i].what, outputs[i].path, outputs[j].what));
+  }
+}
+
+// After the scene is loaded: no output replaces a file the scene read.
+void CheckOutputsAreNotInputs(const std::vector<Output>& outputs) {
+  for (const Output& o : outputs)
+    if (std::optional<std::string> input = InputFileAt(o.path))
+      throw CLI::ValidationError(
+          fmt::format("{} {} would overwrite {}, a file the scene reads; choose another name", o.what, o.path, *input));
 }
 
 CropWindow ParseCrop(const std::string& text, int width, int height) {
@@ -64,8 +97,11 @@ int RunRender(const RenderArgs& a) {
     return 2;
   }
   fs::path png = fs::path(exr).replace_extension(".png");
-
+  std::vector<Output> outputs = {{"the EXR", exr.string()}, {"the PNG written beside the EXR", png.string()}};
+  if (!a.stats_json.empty()) outputs.push_back({"--stats-json", a.stats_json});
+  CheckOutputsWritable(outputs);
   RenderSetup setup = LoadScene(a.scene, defines);
+  CheckOutputsAreNotInputs(outputs);
   FilmSettings& fs_ = setup.film;
   if (!a.crop.empty()) {
     try {
@@ -86,21 +122,39 @@ int RunRender(const RenderArgs& a) {
   opts.progress = !a.quiet && InteractiveTerminal();
   int threads = a.threads > 0 ? a.threads : int(std::thread::hardware_concurrency());
 
+  // From here on Ctrl-C (or SIGTERM) stops the render and the pixels done so far are written.
+  InstallInterruptHandlers();
+  opts.stop = &InterruptRequested();
+  spdlog::info("rendering {}x{} pixels at {} spp on {} threads", fs_.crop.Width(), fs_.crop.Height(), opts.spp_end,
+               threads);
   RenderStats stats = Render(*setup.camera, *setup.integrator, *sampler, film, opts);
 
-  if (!exr.parent_path().empty()) fs::create_directories(exr.parent_path());
+  // A partial image holds the pixels that got all their samples; the others are zero. EXR has
+  // no 64-bit integers: counts beyond 32 bits are written as doubles.
+  auto count = [](uint64_t n) -> ImageAttribute::Value {
+    if (n <= uint64_t(std::numeric_limits<int>::max())) return int(n);
+    return double(n);
+  };
+  std::vector<ImageAttribute> header = {{"objektiv:partial", int(stats.Partial())},
+                                        {"objektiv:pixels", count(stats.pixels)},
+                                        {"objektiv:pixels_completed", count(stats.pixels_completed)}};
   Image linear = film.ToImage(*fs_.color_space, fs_.exposure);
-  WriteExr(exr.string(), linear);
+  WriteExr(exr.string(), linear, header);
   WritePng(png.string(), ApplyToneMap(linear, fs_.tonemap));
   if (!a.stats_json.empty()) WriteStatsJson(a.stats_json, stats, threads);
   if (!a.quiet)
-    std::printf("%s: %dx%d, %d spp, %.2f s, %.3g samples/s, %.2f Mrays/s, camera pass rate %.1f%%, NaN %llu, Inf %llu -> %s, %s\n",
+    std::printf("%s: %dx%d, %d spp, %.2f s, %.3g samples/s, %.2f Mrays/s, camera pass rate %.1f%%, NaN %llu, Inf %llu -> %s, %s%s\n",
                 a.scene.c_str(), stats.width, stats.height, stats.spp, stats.seconds, stats.SamplesPerSecond(),
                 stats.MraysPerSecond(), 100 * stats.CameraPassRate(), (unsigned long long)stats.nan_count,
-                (unsigned long long)stats.inf_count, exr.string().c_str(), png.string().c_str());
+                (unsigned long long)stats.inf_count, exr.string().c_str(), png.string().c_str(),
+                stats.Partial() ? " (partial)" : "");
+  if (stats.Partial())
+    spdlog::warn("interrupted: the image is partial, {} of {} pixels rendered (the others are black); {} is marked "
+                 "objektiv:partial = 1",
+                 stats.pixels_completed, stats.pixels, exr.string());
   if (stats.nan_count || stats.inf_count)
     spdlog::warn("{} NaN and {} Inf radiance samples were dropped", stats.nan_count, stats.inf_count);
-  return 0;
+  return InterruptSignal() ? 128 + InterruptSignal() : 0;
 }
 
 }  // namespace

@@ -9,10 +9,12 @@
 #include <sstream>
 
 #include "base/error.h"
+#include "base/input_files.h"
 
 namespace objektiv {
 
 std::string ReadTextFile(const std::string& path, const char* what) {
+  RecordInputFile(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw MakeInputError(path, 0, "cannot open {}", what);
   std::stringstream ss;

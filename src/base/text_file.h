@@ -7,7 +7,8 @@
 
 namespace objektiv {
 
-// The file's bytes; throws InputError "PATH: cannot open WHAT" if it cannot be read.
+// The file's bytes; throws InputError "PATH: cannot open WHAT" if it cannot be read. The file
+// is recorded as an input of this run (base/input_files.h).
 std::string ReadTextFile(const std::string& path, const char* what);
 // UTF-16 (either byte order, with a byte-order mark) to ASCII ('?' for other characters);
 // a UTF-8 byte-order mark is dropped; anything else is returned unchanged.

@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "base/error.h"
+#include "base/input_files.h"
+#include "base/output_file.h"
 
 namespace objektiv {
 
@@ -25,6 +27,7 @@ struct RawImage {
 };
 
 RawImage ReadRaw(const std::string& path) {
+  RecordInputFile(path);
   auto in = OIIO::ImageInput::open(path);
   if (!in) throw MakeInputError(path, 0, "cannot read image: {}", OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
@@ -61,19 +64,28 @@ Image ReadImageRgb(const std::string& path, bool raw) {
 }
 
 namespace {
-void Write(const std::string& path, const Image& image, OIIO::TypeDesc format, const char* compression) {
+void Write(const std::string& path, const Image& image, OIIO::TypeDesc format, const char* compression,
+           const std::vector<ImageAttribute>& attributes) {
+  // The format follows the target's extension; the pixels go to a temporary file first.
   auto out = OIIO::ImageOutput::create(path);
   if (!out) throw InputError(fmt::format("{}: cannot create image file: {}", path, OIIO::geterror()));
   OIIO::ImageSpec spec(image.width, image.height, image.NumChannels(), format);
   spec.channelnames = image.channels;
   if (compression) spec.attribute("compression", compression);
-  if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data()) || !out->close())
-    throw InputError(fmt::format("{}: cannot write image: {}", path, out->geterror()));
+  for (const ImageAttribute& a : attributes)
+    std::visit([&](auto v) { spec.attribute(a.name, OIIO::TypeDesc(OIIO::BaseTypeFromC<decltype(v)>::value), &v); },
+               a.value);
+  WriteFileAtomically(path, [&](const std::string& temp) {
+    if (!out->open(temp, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data()) || !out->close())
+      throw InputError(fmt::format("{}: cannot write image: {}", path, out->geterror()));
+  });
 }
 }  // namespace
 
-void WriteExr(const std::string& path, const Image& image) { Write(path, image, OIIO::TypeDesc::FLOAT, "zip"); }
+void WriteExr(const std::string& path, const Image& image, const std::vector<ImageAttribute>& attributes) {
+  Write(path, image, OIIO::TypeDesc::FLOAT, "zip", attributes);
+}
 
-void WritePng(const std::string& path, const Image& display) { Write(path, display, OIIO::TypeDesc::UINT8, nullptr); }
+void WritePng(const std::string& path, const Image& display) { Write(path, display, OIIO::TypeDesc::UINT8, nullptr, {}); }
 
 }  // namespace objektiv

@@ -1,6 +1,8 @@
 // Reading and writing images through OpenImageIO.
 #pragma once
 #include <string>
+#include <variant>
+#include <vector>
 
 #include "base/image.h"
 
@@ -8,13 +10,23 @@ namespace objektiv {
 
 // Linear RGB (3 channels). Grey images are replicated, alpha is dropped. Integer-encoded
 // files (PNG, JPEG, 8/16-bit TIFF) are taken as sRGB and decoded to linear unless `raw`.
-// Throws InputError naming the file if it cannot be read.
+// Throws InputError naming the file if it cannot be read. Records the file as an input of this
+// run (base/input_files.h), as the mesh readers do.
 Image ReadImageRgb(const std::string& path, bool raw = false);
 // Every channel as stored (float), for comparisons.
 Image ReadImageAny(const std::string& path);
 
-// Linear float EXR (ZIP compressed) with the image's channel names.
-void WriteExr(const std::string& path, const Image& image);
+// A header attribute of an EXR file, e.g. {"objektiv:partial", 1}.
+struct ImageAttribute {
+  using Value = std::variant<int, double>;
+  std::string name;
+  Value value;
+};
+
+// Both writers write atomically (base/output_file.h: a temporary file renamed over `path`)
+// and throw InputError naming `path` on failure.
+// Linear float EXR (ZIP compressed) with the image's channel names and extra attributes.
+void WriteExr(const std::string& path, const Image& image, const std::vector<ImageAttribute>& attributes = {});
 // 8-bit PNG of an image whose values are already display-encoded in [0, 1].
 void WritePng(const std::string& path, const Image& display);
 

@@ -2,12 +2,12 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "base/error.h"
+#include "base/output_file.h"
 #include "io/lens_plot.h"
 #include "io/line_plot.h"
 #include "optics/paraxial.h"
@@ -154,8 +154,7 @@ void WriteLensAnalysis(const LensTracer& tracer, const std::string& directory) {
            "pupil height (relative)", lsa)
       .Write((fs::path(directory) / "longitudinal_aberration.svg").string());
 
-  std::ofstream out(fs::path(directory) / "analysis.json");
-  if (!out || !(out << json)) throw InputError(fmt::format("{}: cannot write analysis.json", directory));
+  WriteTextFileAtomically((fs::path(directory) / "analysis.json").string(), json);
 }
 
 }  // namespace objektiv

@@ -80,10 +80,10 @@ void WarnIfShiftedPastTheImageCircle(const Properties& p, const LensCameraSettin
   const auto* real = dynamic_cast<const RealisticCamera*>(&camera);
   if (!real || (s.shift.x == 0 && s.shift.y == 0)) return;
   const double corner = std::hypot(s.sensor_width / 2 + std::abs(s.shift.x), s.sensor_height / 2 + std::abs(s.shift.y));
-  if (real->bounds().BoundAt(corner)) return;
+  if (real->bounds().BoundAt(Vec2d(corner, 0))) return;
   double circle = 0;  // the largest film radius light reaches, to a thousandth of the corner's
   for (int k = 999; k > 0 && circle == 0; --k)
-    if (real->bounds().BoundAt(corner * k / 1000)) circle = corner * k / 1000;
+    if (real->bounds().BoundAt(Vec2d(corner * k / 1000, 0))) circle = corner * k / 1000;
   const Location& at = p.LocOf(p.Has("shift_x") ? "shift_x" : "shift_y");
   spdlog::warn("{}:{}: the lens shift ({}, {}) mm puts the film's corners {:.1f} mm from the lens's axis, beyond its "
                "image circle ({:.1f} mm radius): no light reaches them",

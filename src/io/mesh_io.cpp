@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "base/error.h"
+#include "base/input_files.h"
 
 namespace objektiv {
 
@@ -22,6 +23,7 @@ void CheckFinite(const MeshData& m, const std::string& path) {
 }  // namespace
 
 MeshData LoadObj(const std::string& path, const MeshLoadOptions& options) {
+  RecordInputFile(path);
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
@@ -85,6 +87,7 @@ MeshData LoadObj(const std::string& path, const MeshLoadOptions& options) {
 }
 
 MeshData LoadPly(const std::string& path, const MeshLoadOptions& options) {
+  RecordInputFile(path);
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
   if (!scene || !scene->mRootNode) throw MakeInputError(path, 0, "cannot read PLY: {}", importer.GetErrorString());

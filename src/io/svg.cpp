@@ -1,10 +1,8 @@
 #include "io/svg.h"
 
-#include <fstream>
-
 #include <fmt/format.h>
 
-#include "base/error.h"
+#include "base/output_file.h"
 
 namespace objektiv {
 
@@ -61,9 +59,6 @@ std::string Svg::ToString() const {
   return s + "</svg>\n";
 }
 
-void Svg::Write(const std::string& path) const {
-  std::ofstream out(path);
-  if (!out || !(out << ToString())) throw InputError(fmt::format("{}: cannot write the SVG file", path));
-}
+void Svg::Write(const std::string& path) const { WriteTextFileAtomically(path, ToString()); }
 
 }  // namespace objektiv

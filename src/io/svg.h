@@ -17,7 +17,7 @@ class Svg {
   void Text(Vec2d at, const std::string& text, double size = 12, const std::string& anchor = "start",
             const std::string& fill = "#222");
   std::string ToString() const;
-  // Throws InputError naming the file if it cannot be written.
+  // Written atomically (base/output_file.h); throws InputError naming the file on failure.
   void Write(const std::string& path) const;
 
  private:

@@ -37,6 +37,7 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
     RayCounts rays;
     CameraRayCount camera;
     uint64_t nan = 0, inf = 0;
+    uint64_t pixels = 0;  // completed
   };
   tbb::enumerable_thread_specific<ThreadState> states([&] {
     ThreadState st;
@@ -53,12 +54,15 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
   Progress progress("Rendering", int64_t(tiles_x) * tiles_y, options.progress);
   auto start = std::chrono::steady_clock::now();
 
+  auto stopped = [&] { return options.stop && options.stop->load(std::memory_order_relaxed); };
+
   tbb::parallel_for(0, tiles_x * tiles_y, [&](int tile) {
     ThreadState& st = states.local();
     int tx0 = crop.x0 + (tile % tiles_x) * ts, ty0 = crop.y0 + (tile / tiles_x) * ts;
     int tx1 = std::min(tx0 + ts, crop.x1), ty1 = std::min(ty0 + ts, crop.y1);
     for (int y = ty0; y < ty1; ++y)
       for (int x = tx0; x < tx1; ++x) {
+        if (stopped()) return;
         Vec2i pixel(x, y);
         // Camera rays for a group of samples at once (a lens traces them faster together);
         // each sample's sampler state is kept so that its path goes on where it left off.
@@ -98,6 +102,7 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
             film.AddSample(pixel, L, lambda, st.filter_samples[k].weight);
           }
         }
+        ++st.pixels;
       }
     progress.Update(1);
   });
@@ -108,14 +113,16 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
   stats.spp = spp;
   stats.width = crop.Width();
   stats.height = crop.Height();
-  stats.samples = uint64_t(spp) * crop.Width() * crop.Height();
+  stats.pixels = uint64_t(crop.Width()) * crop.Height();
   for (const ThreadState& st : states) {
+    stats.pixels_completed += st.pixels;
     stats.rays += st.rays.closest + st.rays.shadow;
     stats.camera_rays_traced += st.camera.traced;
     stats.camera_rays_passed += st.camera.passed;
     stats.nan_count += st.nan;
     stats.inf_count += st.inf;
   }
+  stats.samples = uint64_t(spp) * stats.pixels_completed;
   return stats;
 }
 

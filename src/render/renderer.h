@@ -1,5 +1,6 @@
 // Renders an image: tiles over TBB, each pixel's samples in index order (deterministic).
 #pragma once
+#include <atomic>
 #include <cstdint>
 #include <memory>
 
@@ -16,6 +17,9 @@ struct RenderStats {
   uint64_t samples = 0, rays = 0;
   uint64_t camera_rays_traced = 0, camera_rays_passed = 0;  // through a lens (see CameraRayCount)
   uint64_t nan_count = 0, inf_count = 0;
+  // Pixels of the crop window, and those that got all their samples (fewer when stopped).
+  uint64_t pixels = 0, pixels_completed = 0;
+  bool Partial() const { return pixels_completed < pixels; }
   double SamplesPerSecond() const { return seconds > 0 ? samples / seconds : 0; }
   double MraysPerSecond() const { return seconds > 0 ? rays / seconds * 1e-6 : 0; }
   // Camera rays that came out of the lens per camera ray traced (1 for ideal cameras).
@@ -27,6 +31,9 @@ struct RenderOptions {
   int threads = 0;                 // 0: all cores
   bool progress = false;
   int tile_size = 16;
+  // When this turns true, no pixel is started any more: each thread finishes the pixel it is on
+  // (all its samples), the others keep no samples at all (zero on the film).
+  const std::atomic<bool>* stop = nullptr;
 };
 
 RenderStats Render(const Camera& camera, const Integrator& integrator, const Sampler& sampler, Film& film,
