@@ -65,5 +65,52 @@ void BM_CameraSetup(benchmark::State& state) {
 }
 BENCHMARK(BM_CameraSetup)->DenseRange(0, 4)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The same with a stop that is not round, wide open: three straight blades (argument 1 = 0),
+// six curved ones (1), and a mask open on its right half (2); the pass rate of its rays.
+void BM_CameraSetupNotRound(benchmark::State& state) {
+  const char* lens = kLenses[state.range(0)];
+  spdlog::set_level(spdlog::level::warn);
+  LensCameraSpec spec;
+  spec.lens = LoadLens(lens);
+  spec.focus_distance = 5;
+  spec.settings.sensor_width = 36, spec.settings.sensor_height = 24;
+  const char* what = "";
+  switch (state.range(1)) {
+    case 0: spec.blades = 3, spec.blade_rotation = 90, what = "3 straight blades"; break;
+    case 1: spec.blades = 6, spec.blade_curvature = 0.5, what = "6 curved blades"; break;
+    default: {
+      Image half(64, 64, {"R", "G", "B"});
+      for (int y = 0; y < 64; ++y)
+        for (int x = 32; x < 64; ++x)
+          for (int c = 0; c < 3; ++c) half.At(x, y, c) = 1;
+      spec.settings.aperture_mask = std::make_shared<ApertureMask>(half);
+      what = "half-open mask";
+    }
+  }
+  std::unique_ptr<Camera> cam;
+  for (auto _ : state) cam = MakeLensCamera(Transform(), 768, 512, spec);
+  PCG32 rng(2, 9);
+  std::vector<CameraSample> samples(64);
+  std::vector<SampledWavelengths> lambdas(64);
+  std::vector<std::optional<CameraRay>> out(64);
+  CameraRayCount count;
+  uint64_t lit = 0;
+  for (int batch = 0; batch < 500; ++batch) {
+    for (int i = 0; i < 64; ++i) {
+      samples[i] = {Vec2f(768 * rng.UniformFloat(), 512 * rng.UniformFloat()), Vec2f(rng.UniformFloat(), rng.UniformFloat())};
+      lambdas[i] = SampledWavelengths::SampleVisible(rng.UniformFloat());
+    }
+    cam->GenerateRays(samples, lambdas, out, count);
+    for (const auto& r : out) lit += r && r->weight[0] > 0;
+  }
+  state.counters["pass_rate"] = count.traced ? double(lit) / count.traced : 0;
+  state.SetLabel(fmt::format("{} wide open, {}", lens, what));
+}
+BENCHMARK(BM_CameraSetupNotRound)
+    ->ArgsProduct({{0, 1, 2, 3, 4}, {0, 1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
+
 }  // namespace
 }  // namespace objektiv

@@ -1,6 +1,7 @@
 #include "base/convex_polygon.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace objektiv {
 
@@ -44,6 +45,27 @@ bool ConvexPolygon::Contains(Vec2d p) const {
   for (size_t i = 0; i < vertices.size(); ++i)
     if (Cross(vertices[i], vertices[(i + 1) % vertices.size()], p) < 0) return false;
   return true;
+}
+
+ConvexPolygon HullOfGrown(const std::vector<const std::vector<Vec2d>*>& point_sets, double grow) {
+  std::vector<Vec2d> corners;
+  for (const std::vector<Vec2d>* points : point_sets)
+    for (const Vec2d& q : *points)
+      for (double dx : {-grow, grow})
+        for (double dy : {-grow, grow}) corners.push_back({q.x + dx, q.y + dy});
+  return ConvexPolygon::HullOf(std::move(corners));
+}
+
+double DistanceOutside(const ConvexPolygon& poly, Vec2d q) {
+  if (poly.Contains(q)) return 0;
+  double best = INFINITY;
+  const std::vector<Vec2d>& v = poly.vertices;
+  for (size_t i = 0; i < v.size(); ++i) {
+    const Vec2d a = v[i], ab = v[(i + 1) % v.size()] - a, aq = q - a;
+    const double t = std::clamp((aq.x * ab.x + aq.y * ab.y) / std::max(ab.x * ab.x + ab.y * ab.y, 1e-300), 0.0, 1.0);
+    best = std::min(best, std::hypot(aq.x - t * ab.x, aq.y - t * ab.y));
+  }
+  return best;
 }
 
 }  // namespace objektiv

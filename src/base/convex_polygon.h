@@ -21,6 +21,12 @@ struct ConvexPolygon {
   bool Contains(Vec2d p) const;
 };
 
+// The hull of several point sets with every point grown to a square of half-side `grow` (the
+// Minkowski sum of their hull with that square).
+ConvexPolygon HullOfGrown(const std::vector<const std::vector<Vec2d>*>& point_sets, double grow);
+// How far q lies outside the polygon (0 inside).
+double DistanceOutside(const ConvexPolygon& poly, Vec2d q);
+
 // Andrew's monotone chain: the hull's corners, counter-clockwise, without collinear points.
 std::vector<Vec2d> ConvexHull(std::vector<Vec2d> points);
 // Signed area of a simple polygon (positive when counter-clockwise).

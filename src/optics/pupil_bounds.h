@@ -54,6 +54,7 @@ class PupilBounds {
   double film_radius() const { return film_radius_; }
 
  private:
+  class Builder;
   struct Region {
     ConvexPolygon poly;          // empty: no light
     std::vector<double> cdf;     // over the fan triangles from vertex 0

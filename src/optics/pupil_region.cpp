@@ -1,0 +1,194 @@
+#include "optics/pupil_region.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace objektiv {
+
+namespace {
+
+// Probing the region of the sampling plane through which light from one film point (r, 0)
+// at one wavelength leaves the lens.
+class RegionProbe {
+ public:
+  RegionProbe(const BatchLensTracer& fast, const LensTracer& exact, double r, double film_z, double plane_z,
+              double lambda_nm)
+      : fast_(fast), exact_(exact), r_(r), film_z_(film_z), plane_z_(plane_z), lambda_(lambda_nm) {}
+
+  // Whether the rays aimed at each point get through.
+  std::vector<uint8_t> Passes(const std::vector<Vec2d>& points) const {
+    batch_.Resize(points.size());
+    for (size_t n = 0; n < points.size(); ++n) {
+      Vec3d d = Normalize(Vec3d(points[n].x - r_, points[n].y, plane_z_ - film_z_));
+      batch_.ox[n] = float(r_), batch_.oy[n] = 0, batch_.oz[n] = float(film_z_);
+      batch_.dx[n] = float(d.x), batch_.dy[n] = float(d.y), batch_.dz[n] = float(d.z);
+      batch_.lambda[n] = float(lambda_);
+    }
+    fast_.TraceFromFilm(batch_, false);
+    return batch_.alive;
+  }
+
+  // The aim point whose ray crosses the stop's centre (the real chief ray), by the secant
+  // method from the axis; nothing if the ray does not reach the stop.
+  std::optional<Vec2d> ChiefAim() const {
+    auto stop_x = [&](double a) -> std::optional<double> {
+      Vec3d o(r_, 0, film_z_);
+      std::optional<Vec3d> hit = exact_.StopCrossingFromFilm({o, Normalize(Vec3d(a, 0, plane_z_) - o)}, lambda_);
+      return hit ? std::optional<double>(hit->x) : std::nullopt;
+    };
+    double a0 = 0, a1 = 1e-3 * (1 + std::abs(r_));
+    std::optional<double> f0 = stop_x(a0), f1 = stop_x(a1);
+    for (int it = 0; it < 30 && f0 && f1; ++it) {
+      if (std::abs(*f1) < 1e-9 || *f1 == *f0) return Vec2d(a1, 0);
+      double a2 = a1 - *f1 * (a1 - a0) / (*f1 - *f0);
+      a0 = a1, f0 = f1, a1 = a2, f1 = stop_x(a1);
+    }
+    if (f1 && std::abs(*f1) < 1e-6) return Vec2d(a1, 0);
+    return std::nullopt;
+  }
+
+  // A point inside the region: the chief ray's aim if it passes, else the centroid of the
+  // passing probes of a grid over the window |x|, |y| <= half; nothing if none passes.
+  std::optional<Vec2d> Inside(double half) const {
+    if (std::optional<Vec2d> c = ChiefAim(); c && Passes({*c})[0]) return c;
+    const int g = 32;
+    std::vector<Vec2d> grid;
+    for (int i = 0; i < g; ++i)
+      for (int j = 0; j < g; ++j) grid.push_back({half * (2 * (i + 0.5) / g - 1), half * (2 * (j + 0.5) / g - 1)});
+    std::vector<uint8_t> ok = Passes(grid);
+    Vec2d sum(0, 0);
+    int count = 0;
+    for (size_t n = 0; n < grid.size(); ++n)
+      if (ok[n]) sum = sum + grid[n], ++count;
+    if (count == 0) return std::nullopt;
+    Vec2d c = sum * (1.0 / count);
+    if (Passes({c})[0]) return c;
+    for (size_t n = 0; n < grid.size(); ++n)
+      if (ok[n]) return grid[n];
+    return std::nullopt;
+  }
+
+  // A centre well inside the region, seen from c inside it: c itself unless it lies near the
+  // edge (closer than a quarter of the region's reach from it, e.g. the chief ray's aim when a
+  // mask's edge runs through the stop's centre, where rays along the edge find its corners
+  // only by chance), else the mean of 16 edge points around c (inside: the region is convex).
+  Vec2d Centred(Vec2d c, double limit) const {
+    std::vector<Vec2d> dirs;
+    for (int k = 0; k < 16; ++k) dirs.push_back({std::cos(2 * M_PI * k / 16), std::sin(2 * M_PI * k / 16)});
+    std::vector<double> t = EdgeDistances(c, dirs, limit);
+    if (*std::min_element(t.begin(), t.end()) >= 0.25 * *std::max_element(t.begin(), t.end())) return c;
+    Vec2d mean(0, 0);
+    for (size_t k = 0; k < dirs.size(); ++k) mean = mean + (c + dirs[k] * t[k]) * (1.0 / dirs.size());
+    return Passes({mean})[0] ? mean : c;
+  }
+
+  // Distance from c to the region's edge along each direction, at most `limit`, to a relative
+  // precision of 1e-4 (bisection, all directions in one batch per step; tiny regions, such as
+  // a pinhole's, take a few more steps).
+  std::vector<double> EdgeDistances(Vec2d c, const std::vector<Vec2d>& dirs, double limit) const {
+    std::vector<double> lo(dirs.size(), 0), hi(dirs.size(), limit);
+    std::vector<Vec2d> pts(dirs.size());
+    for (int step = 0; step < 60; ++step) {
+      bool done = true;
+      for (size_t k = 0; k < dirs.size(); ++k) {
+        pts[k] = c + dirs[k] * (0.5 * (lo[k] + hi[k]));
+        done &= hi[k] - lo[k] <= 1e-4 * hi[k];
+      }
+      if (done) break;
+      std::vector<uint8_t> ok = Passes(pts);
+      for (size_t k = 0; k < dirs.size(); ++k) (ok[k] ? lo[k] : hi[k]) = 0.5 * (lo[k] + hi[k]);
+    }
+    return hi;  // the blocked side: just outside
+  }
+
+ private:
+  const BatchLensTracer& fast_;
+  const LensTracer& exact_;
+  double r_, film_z_, plane_z_, lambda_;
+  mutable RayBatch batch_;
+};
+
+// The region's edge around a point inside it: directions at even angles first, then, where
+// the edge between two neighbouring points bulges out of their chord by more than `tol`
+// (corners of the blades, tips of a cat's eye), the angle between them is halved, a few
+// levels deep. The edge points are returned.
+std::vector<Vec2d> TraceEdge(const RegionProbe& probe, Vec2d c, double limit, double tol) {
+  struct EdgePoint {
+    double angle;
+    Vec2d p;
+  };
+  auto probe_angles = [&](const std::vector<double>& angles) {
+    std::vector<Vec2d> dirs;
+    for (double a : angles) dirs.push_back({std::cos(a), std::sin(a)});
+    std::vector<double> t = probe.EdgeDistances(c, dirs, limit);
+    std::vector<EdgePoint> out;
+    for (size_t k = 0; k < angles.size(); ++k) out.push_back({angles[k], c + dirs[k] * t[k]});
+    return out;
+  };
+  const int initial = 32;
+  std::vector<double> angles;
+  for (int k = 0; k < initial; ++k) angles.push_back(2 * M_PI * k / initial);
+  std::vector<EdgePoint> edge = probe_angles(angles);
+  std::vector<uint8_t> pending(edge.size(), 1);  // gap k: between edge[k] and edge[k + 1]
+  for (int level = 0; level < 6; ++level) {
+    std::vector<double> mids;
+    for (size_t k = 0; k < edge.size(); ++k)
+      if (pending[k]) {
+        double a = edge[k].angle, b = k + 1 < edge.size() ? edge[k + 1].angle : edge[0].angle + 2 * M_PI;
+        mids.push_back(0.5 * (a + b));
+      }
+    if (mids.empty()) break;
+    std::vector<EdgePoint> found = probe_angles(mids);
+    std::vector<EdgePoint> merged;
+    std::vector<uint8_t> next;
+    size_t m = 0;
+    for (size_t k = 0; k < edge.size(); ++k) {
+      merged.push_back(edge[k]);
+      if (!pending[k]) {
+        next.push_back(0);
+        continue;
+      }
+      const EdgePoint &a = edge[k], &b = edge[(k + 1) % edge.size()], &mid = found[m++];
+      Vec2d ab = b.p - a.p;
+      double len = std::hypot(ab.x, ab.y);
+      double out = len > 0 ? std::abs((mid.p.x - a.p.x) * ab.y - (mid.p.y - a.p.y) * ab.x) / len
+                           : std::hypot(mid.p.x - a.p.x, mid.p.y - a.p.y);
+      merged.push_back(mid);
+      uint8_t again = out > tol;
+      next.push_back(again);
+      next.push_back(again);
+    }
+    edge = std::move(merged);
+    pending = std::move(next);
+  }
+  std::vector<Vec2d> pts;
+  for (const EdgePoint& e : edge) pts.push_back(e.p);
+  return pts;
+}
+
+}  // namespace
+
+PupilRegion TracePupilRegion(const PupilRegionProbe& probe, double r, const std::vector<double>& lambdas,
+                             double turn) {
+  const double c = std::cos(turn), s = std::sin(turn);
+  std::vector<Vec2d> points;
+  double size = 0;
+  for (double lambda : lambdas) {
+    RegionProbe rays(probe.fast, probe.exact, r, probe.film_z, probe.plane_z, lambda);
+    std::optional<Vec2d> centre = rays.Inside(probe.window);
+    if (!centre) continue;
+    if (probe.recentre) centre = rays.Centred(*centre, 2 * probe.window);
+    for (const Vec2d& q : TraceEdge(rays, *centre, 2 * probe.window, probe.tolerance)) {
+      size = std::max(size, std::hypot(q.x - centre->x, q.y - centre->y));
+      points.push_back(turn == 0 ? q : Vec2d(c * q.x - s * q.y, s * q.x + c * q.y));
+    }
+  }
+  PupilRegion region;
+  region.hull = ConvexHull(std::move(points));
+  region.grow = 2e-3 * size;
+  region.area = HullOfGrown({&region.hull}, region.grow).area;
+  return region;
+}
+
+}  // namespace objektiv
