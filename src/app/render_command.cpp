@@ -4,6 +4,8 @@
 #include <map>
 #include <thread>
 
+#include <nlohmann/json.hpp>
+
 #include "app/commands.h"
 #include "base/error.h"
 #include "base/input_files.h"
@@ -26,14 +28,23 @@ struct RenderArgs {
 };
 
 void WriteStatsJson(const std::string& path, const RenderStats& s, int threads) {
-  WriteTextFileAtomically(
-      path, fmt::format("{{\n  \"seconds\": {:.6f},\n  \"spp\": {},\n  \"width\": {},\n  \"height\": {},\n  \"threads\": {},\n"
-                        "  \"samples\": {},\n  \"rays\": {},\n  \"samples_per_second\": {:.3f},\n  \"mrays_per_second\": {:.6f},\n"
-                        "  \"nan_count\": {},\n  \"inf_count\": {},\n  \"camera_rays_traced\": {},\n  \"camera_pass_rate\": {:.6f},\n"
-                        "  \"partial\": {},\n  \"pixels\": {},\n  \"pixels_completed\": {}\n}}\n",
-                        s.seconds, s.spp, s.width, s.height, threads, s.samples, s.rays, s.SamplesPerSecond(),
-                        s.MraysPerSecond(), s.nan_count, s.inf_count, s.camera_rays_traced, s.CameraPassRate(),
-                        s.Partial(), s.pixels, s.pixels_completed));
+  nlohmann::ordered_json j = {{"seconds", s.seconds},
+                              {"spp", s.spp},
+                              {"width", s.width},
+                              {"height", s.height},
+                              {"threads", threads},
+                              {"samples", s.samples},
+                              {"rays", s.rays},
+                              {"samples_per_second", s.SamplesPerSecond()},
+                              {"mrays_per_second", s.MraysPerSecond()},
+                              {"nan_count", s.nan_count},
+                              {"inf_count", s.inf_count},
+                              {"camera_rays_traced", s.camera_rays_traced},
+                              {"camera_pass_rate", s.CameraPassRate()},
+                              {"partial", s.Partial()},
+                              {"pixels", s.pixels},
+                              {"pixels_completed", s.pixels_completed}};
+  WriteTextFileAtomically(path, j.dump(2) + "\n");
 }
 
 // An output file and what it is, for messages.
