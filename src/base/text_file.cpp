@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -12,12 +13,32 @@
 
 namespace objektiv {
 
-std::string ReadTextFile(const std::string& path, const char* what) {
+uintmax_t CheckInputFile(const std::string& path, const char* what, uintmax_t max_bytes) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::file_status st = fs::status(path, ec);
+  if (!fs::exists(st)) throw MakeInputError(path, 0, "cannot read {}: no such file", what);
+  if (!fs::is_regular_file(st)) {
+    const char* kind = fs::is_directory(st) ? "a directory" : fs::is_fifo(st) ? "a pipe" : "a device or special file";
+    throw MakeInputError(path, 0, "cannot read {}: it is {}, not a regular file", what, kind);
+  }
+  uintmax_t size = fs::file_size(path, ec);
+  if (ec) throw MakeInputError(path, 0, "cannot read {}: {}", what, ec.message());
+  if (size > max_bytes)
+    throw MakeInputError(path, 0, "cannot read {}: it has {} bytes, more than the limit of {} MiB", what, size,
+                         max_bytes >> 20);
+  return size;
+}
+
+std::string ReadTextFile(const std::string& path, const char* what, uintmax_t max_bytes) {
+  uintmax_t size = CheckInputFile(path, what, max_bytes);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw MakeInputError(path, 0, "cannot open {}", what);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  std::string text(size_t(size), '\0');
+  in.read(text.data(), std::streamsize(size));
+  if (in.bad()) throw MakeInputError(path, 0, "cannot read {}", what);
+  text.resize(size_t(in.gcount()));  // shorter if the file shrank since
+  return text;
 }
 
 std::string DecodeToAscii(const std::string& raw) {

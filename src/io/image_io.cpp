@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "base/error.h"
+#include "base/text_file.h"
 
 namespace objektiv {
 
@@ -25,6 +26,7 @@ struct RawImage {
 };
 
 RawImage ReadRaw(const std::string& path) {
+  CheckInputFile(path, "image", UINTMAX_MAX);
   auto in = OIIO::ImageInput::open(path);
   if (!in) throw MakeInputError(path, 0, "cannot read image: {}", OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();

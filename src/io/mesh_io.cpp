@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "base/error.h"
+#include "base/text_file.h"
 
 namespace objektiv {
 
@@ -25,9 +26,10 @@ MeshData LoadObj(const std::string& path, const MeshLoadOptions& options) {
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
-  config.mtl_search_path = "";
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path, config)) {
+  // From memory, with no material library: tinyobjloader would otherwise open any file an
+  // 'mtllib' line names (materials come from the scene, not from .mtl files).
+  if (!reader.ParseFromString(ReadTextFile(path, "OBJ mesh", kMaxMeshFileBytes), "", config)) {
     std::string err = reader.Error();
     while (!err.empty() && err.back() == '\n') err.pop_back();
     throw MakeInputError(path, 0, "cannot read OBJ: {}", err.empty() ? "unknown error" : err);
@@ -85,6 +87,7 @@ MeshData LoadObj(const std::string& path, const MeshLoadOptions& options) {
 }
 
 MeshData LoadPly(const std::string& path, const MeshLoadOptions& options) {
+  CheckInputFile(path, "PLY mesh", kMaxMeshFileBytes);
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
   if (!scene || !scene->mRootNode) throw MakeInputError(path, 0, "cannot read PLY: {}", importer.GetErrorString());

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "base/log.h"
+#include "base/text_file.h"
 #include "io/loader_context.h"
 
 namespace objektiv {
@@ -12,6 +13,12 @@ std::string ResolvePath(const Location& loc, const std::string& filename) {
   fs::path p(filename);
   if (p.is_relative()) p = fs::path(loc.file).parent_path() / p;
   if (!fs::exists(p)) throw ErrorAt(loc, "file not found: '{}'", p.string());
+  // Its reader checks it again, with the size limit for its kind.
+  try {
+    CheckInputFile(p.string(), "file", UINTMAX_MAX);
+  } catch (const InputError& e) {
+    throw ErrorAt(loc, "{}", e.what());
+  }
   return p.string();
 }
 

@@ -272,9 +272,14 @@ class Parser {
         CheckAttributes(c, {"filename"}, loc);
         if (include_depth > 16) throw ErrorAt(loc, "includes nested too deeply (a cycle?)");
         fs::path inc = fs::path(ctx.path).parent_path() / Attr(c, "filename", loc);
-        if (!fs::exists(inc)) throw ErrorAt(loc, "cannot open included file '{}'", inc.string());
+        std::string text;
+        try {
+          text = ReadTextFile(inc.string(), "included file");
+        } catch (const InputError& e) {
+          throw ErrorAt(loc, "{}", e.what());
+        }
         pugi::xml_document doc;
-        FileContext sub = Load(ReadTextFile(inc.string(), "included file"), inc.string(), &doc);
+        FileContext sub = Load(text, inc.string(), &doc);
         pugi::xml_node scene = doc.child("scene");
         if (!scene) throw MakeInputError(inc.string(), 1, "an included file must have a <scene> root");
         Walk(scene, sub, parent, include_depth + 1);

@@ -1,0 +1,102 @@
+// Hostile and broken input files (many found by fuzzing, see tests/data/fuzz/README.md): each
+// ends in an InputError naming the file (and the line where there is one), never in a crash,
+// a hang or a runaway allocation.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "base/error.h"
+#include "base/text_file.h"
+#include "io/mesh_io.h"
+#include "io/scene_loader.h"
+#include "optics/glass_catalog.h"
+#include "optics/lens_file.h"
+
+namespace objektiv {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh temporary directory for one test.
+fs::path TempDir(const std::string& name) {
+  fs::path dir = fs::temp_directory_path() / ("objektiv_bad_inputs_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// Runs f, which must throw an InputError whose message starts with `prefix` and contains `part`.
+template <typename F>
+void ExpectInputError(F f, const std::string& prefix, const std::string& part) {
+  try {
+    f();
+    ADD_FAILURE() << "no error; expected '" << prefix << "...'" << part;
+  } catch (const InputError& e) {
+    std::string msg = e.what();
+    EXPECT_EQ(msg.rfind(prefix, 0), 0u) << msg;
+    EXPECT_NE(msg.find(part), std::string::npos) << msg;
+  }
+}
+
+const char* kSensor = R"(<sensor type="perspective"><film type="hdrfilm"><integer name="width" value="4"/>
+<integer name="height" value="4"/></film></sensor>)";
+
+// A scene file in `dir` holding `body` after a small sensor (on line 3 and on).
+std::string WriteScene(const fs::path& dir, const std::string& body) {
+  fs::path p = dir / "scene.xml";
+  std::ofstream(p) << "<scene version=\"3.0.0\">\n" << kSensor << "\n" << body << "\n</scene>\n";
+  return p.string();
+}
+
+TEST(BadInputs, OnlyRegularFilesAreRead) {
+  fs::path dir = TempDir("regular");
+  std::string fifo = (dir / "fifo").string();
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  ExpectInputError([&] { ReadTextFile("/dev/zero", "lens file"); }, "/dev/zero: cannot read lens file", "not a regular file");
+  ExpectInputError([&] { ReadTextFile(fifo, "lens file"); }, fifo + ":", "a pipe, not a regular file");
+  ExpectInputError([&] { ReadTextFile(dir.string(), "lens file"); }, dir.string() + ":", "a directory");
+  ExpectInputError([&] { LoadObj("/dev/zero", {}); }, "/dev/zero:", "not a regular file");
+  ExpectInputError([&] { LoadPly(fifo, {}); }, fifo + ":", "not a regular file");
+  std::string fifo_lens = (dir / "fifo.lens").string();
+  ASSERT_EQ(mkfifo(fifo_lens.c_str(), 0600), 0);
+  ExpectInputError([&] { LoadLens(fifo_lens); }, fifo_lens + ":", "not a regular file");
+  ExpectInputError([&] { GlassCatalog().LoadAgf(fifo, "TEST"); }, fifo + ":", "not a regular file");
+  // A text file beyond the limit is refused before it is read (a sparse file takes no space).
+  fs::path big = dir / "big.lens";
+  std::ofstream(big).put('#');
+  fs::resize_file(big, kMaxTextFileBytes + 1);
+  ExpectInputError([&] { ReadTextFile(big.string(), "lens file"); }, big.string() + ":", "more than the limit of 64 MiB");
+}
+
+TEST(BadInputs, SpecialFilesInScenesAreErrorsAtTheirLine) {
+  fs::path dir = TempDir("special");
+  for (const std::string& element :
+       {std::string(R"(<include filename="/dev/zero"/>)"),
+        std::string(R"(<shape type="obj"><string name="filename" value="/dev/zero"/></shape>)"),
+        std::string(R"(<shape type="ply"><string name="filename" value="/dev/zero"/></shape>)"),
+        std::string(R"(<emitter type="envmap"><string name="filename" value="/dev/zero"/></emitter>)"),
+        std::string(R"(<shape type="rectangle"><bsdf type="diffuse"><texture type="bitmap" name="reflectance">)"
+                    R"(<string name="filename" value="/dev/zero"/></texture></bsdf></shape>)")}) {
+    std::string scene = WriteScene(dir, element);
+    ExpectInputError([&] { LoadScene(scene, {}); }, scene + ":4: /dev/zero:", "not a regular file");
+  }
+  // An included directory.
+  std::string scene = WriteScene(dir, R"(<include filename="."/>)");
+  ExpectInputError([&] { LoadScene(scene, {}); }, scene + ":4:", "a directory");
+}
+
+TEST(BadInputs, ObjMaterialLibrariesAreNotOpened) {
+  // tinyobjloader would read 'mtllib' files, /dev/zero until memory runs out; materials come
+  // from the scene, so the mesh loads without opening it.
+  fs::path dir = TempDir("mtllib");
+  fs::path obj = dir / "tri.obj";
+  std::ofstream(obj) << "mtllib /dev/zero\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  MeshData m = LoadObj(obj.string(), {});
+  EXPECT_EQ(m.positions.size(), 3u);
+  EXPECT_EQ(m.indices.size(), 3u);
+}
+
+}  // namespace
+}  // namespace objektiv
