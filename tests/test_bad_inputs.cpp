@@ -11,6 +11,7 @@
 #include "base/text_file.h"
 #include "io/mesh_io.h"
 #include "io/scene_loader.h"
+#include "io/xml_document.h"
 #include "optics/glass_catalog.h"
 #include "optics/lens_file.h"
 
@@ -96,6 +97,80 @@ TEST(BadInputs, ObjMaterialLibrariesAreNotOpened) {
   MeshData m = LoadObj(obj.string(), {});
   EXPECT_EQ(m.positions.size(), 3u);
   EXPECT_EQ(m.indices.size(), 3u);
+}
+
+// `n` nested objects (one per line from line 2), as repro 01-deep-nesting (6000 levels) had.
+std::string NestedBsdfs(int n) {
+  std::string xml = "<scene version=\"3.0.0\">\n";
+  for (int i = 0; i < n; ++i) xml += "<bsdf type=\"twosided\">\n";
+  for (int i = 0; i < n; ++i) xml += "</bsdf>";
+  return xml + "</scene>\n";
+}
+
+TEST(BadInputs, DeepNestingIsAnError) {
+  EXPECT_NO_THROW(ParseSceneString(NestedBsdfs(kMaxObjectNesting), "deep.xml", {}));
+  // The first object too deep is on line 2 + kMaxObjectNesting. 6000 levels overflowed the stack.
+  for (int n : {kMaxObjectNesting + 1, 6000})
+    ExpectInputError([&] { ParseSceneString(NestedBsdfs(n), "deep.xml", {}); },
+                     "deep.xml:" + std::to_string(2 + kMaxObjectNesting) + ":", "nested more than 100 levels deep");
+}
+
+TEST(BadInputs, ReferenceChainsCountAsNesting) {
+  // Each texture refers to the one before: no element is nested, but every walk over the
+  // objects (building textures, destroying the tree) recursed 20000 deep.
+  std::string xml = "<scene version=\"3.0.0\">\n<texture type=\"checkerboard\" id=\"t0\"/>\n";
+  for (int i = 1; i < 20000; ++i)
+    xml += fmt::format("<texture type=\"checkerboard\" id=\"t{}\"><ref id=\"t{}\" name=\"color0\"/></texture>\n", i, i - 1);
+  xml += "</scene>\n";
+  // Texture t100 (line 102) is the first with 101 levels.
+  ExpectInputError([&] { ParseSceneString(xml, "chain.xml", {}); }, "chain.xml:102:", "counting those <ref>s");
+}
+
+TEST(BadInputs, SharedNestedTexturesLoadInLinearTime) {
+  // Checkerboards whose two colours are one texture, 60 deep: a recursive mean (for the
+  // emitter's power) visited 2^60 leaves.
+  std::string body = "<texture type=\"checkerboard\" id=\"t0\"/>\n";
+  for (int i = 1; i <= 60; ++i)
+    body += fmt::format("<texture type=\"checkerboard\" id=\"t{0}\"><ref id=\"t{1}\" name=\"color0\"/>"
+                        "<ref id=\"t{1}\" name=\"color1\"/></texture>\n", i, i - 1);
+  body += "<shape type=\"rectangle\"><emitter type=\"area\"><ref id=\"t60\" name=\"radiance\"/></emitter></shape>";
+  RenderSetup setup = LoadSceneFromString(std::string("<scene version=\"3.0.0\">") + kSensor + body + "</scene>", "dag.xml", {});
+  EXPECT_EQ(setup.scene->lights().size(), 1u);
+}
+
+TEST(BadInputs, ParameterExpansionIsBounded) {
+  // Each parameter is ten of the one before: $p9 would be 10^10 characters.
+  std::string xml = "<scene version=\"3.0.0\">\n<default name=\"p0\" value=\"0123456789\"/>\n";
+  for (int i = 1; i < 10; ++i)
+    xml += fmt::format("<default name=\"p{}\" value=\"{}\"/>\n", i, [&] {
+      std::string v;
+      for (int k = 0; k < 10; ++k) v += fmt::format("$p{}", i - 1);
+      return v;
+    }());
+  xml += "</scene>\n";
+  ExpectInputError([&] { ParseSceneString(xml, "laughs.xml", {}); }, "laughs.xml:", "more than 64 MiB of text");
+}
+
+TEST(BadInputs, IncludesAreBounded) {
+  fs::path dir = TempDir("includes");
+  // Each level includes the next ten times: 10^6 includes of the last.
+  for (int level = 0; level < 6; ++level) {
+    std::ofstream f(dir / fmt::format("f{}.xml", level));
+    f << "<scene>\n";
+    for (int k = 0; k < 10; ++k) f << fmt::format("<include filename=\"f{}.xml\"/>\n", level + 1);
+    f << "</scene>\n";
+  }
+  std::ofstream(dir / "f6.xml") << "<scene/>\n";
+  std::string f0 = (dir / "f0.xml").string();
+  ExpectInputError([&] { ParseSceneFile(f0, {}); }, dir.string(), "more than 10000 <include>s in all");
+  // A large file included twice: more XML in all than a single file may hold.
+  {
+    std::ofstream big(dir / "big.xml");
+    big << "<scene><!--" << std::string(kMaxTextFileBytes / 2 + 1, '.') << "--></scene>\n";
+  }
+  std::ofstream(dir / "twice.xml") << "<scene>\n<include filename=\"big.xml\"/>\n<include filename=\"big.xml\"/>\n</scene>\n";
+  ExpectInputError([&] { ParseSceneFile((dir / "twice.xml").string(), {}); }, (dir / "big.xml").string() + ":",
+                   "more than 64 MiB of XML in all");
 }
 
 }  // namespace

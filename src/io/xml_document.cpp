@@ -45,12 +45,16 @@ class Parser {
     pugi::xml_node scene = doc.child("scene");
     if (!scene) throw MakeInputError(name, 1, "the root element must be <scene>");
     root->loc = {name, ctx.LineOf(scene.offset_debug())};
-    Walk(scene, ctx, *root, 0);
+    Walk(scene, ctx, *root, 0, 0);
     return SceneDocument{root};
   }
 
  private:
   FileContext Load(const std::string& text, const std::string& name, pugi::xml_document* doc) {
+    xml_bytes_ += text.size();
+    if (xml_bytes_ > kMaxTextFileBytes)
+      throw MakeInputError(name, 0, "the scene and its includes hold more than {} MiB of XML in all",
+                           kMaxTextFileBytes >> 20);
     FileContext ctx;
     ctx.path = name;
     ctx.line_starts.push_back(0);
@@ -77,6 +81,10 @@ class Parser {
       if (key.empty()) throw ErrorAt(loc, "'$' not followed by a parameter name in \"{}\"", s);
       auto it = params_.find(key);
       if (it == params_.end()) throw ErrorAt(loc, "undefined parameter ${} (define it with <default> or -D)", key);
+      // Parameters made of parameters grow exponentially: bound all the text they make.
+      substituted_bytes_ += it->second.size();
+      if (substituted_bytes_ > kMaxTextFileBytes)
+        throw ErrorAt(loc, "parameter substitution has made more than {} MiB of text", kMaxTextFileBytes >> 20);
       out += it->second;
       i = j - 1;
     }
@@ -244,6 +252,10 @@ class Parser {
   }
 
   void Attach(ObjectNode& parent, std::shared_ptr<ObjectNode> obj, const std::string& name, const Location& loc) {
+    // Through <ref>s an object can sit deeper than its element: bound every walk over the tree.
+    parent.height = std::max(parent.height, obj->height + 1);
+    if (parent.height > kMaxObjectNesting)
+      throw ErrorAt(loc, "objects nested more than {} levels deep (counting those <ref>s bring in)", kMaxObjectNesting);
     if (name.empty()) {
       parent.children.push_back(std::move(obj));
     } else {
@@ -258,7 +270,8 @@ class Parser {
     parent.props.push_back(std::move(p));
   }
 
-  void Walk(const pugi::xml_node& node, const FileContext& ctx, ObjectNode& parent, int include_depth) {
+  // `depth`: how many objects enclose the children of `node` (0 at the scene's root).
+  void Walk(const pugi::xml_node& node, const FileContext& ctx, ObjectNode& parent, int include_depth, int depth) {
     for (pugi::xml_node c : node.children()) {
       if (c.type() != pugi::node_element) continue;
       std::string tag = c.name();
@@ -270,7 +283,9 @@ class Parser {
         if (!overridden_.count(name)) params_[name] = Attr(c, "value", loc);
       } else if (tag == "include") {
         CheckAttributes(c, {"filename"}, loc);
-        if (include_depth > 16) throw ErrorAt(loc, "includes nested too deeply (a cycle?)");
+        if (include_depth >= kMaxIncludeDepth)
+          throw ErrorAt(loc, "includes nested more than {} deep (a cycle?)", kMaxIncludeDepth);
+        if (++includes_ > kMaxIncludes) throw ErrorAt(loc, "more than {} <include>s in all", kMaxIncludes);
         fs::path inc = fs::path(ctx.path).parent_path() / Attr(c, "filename", loc);
         std::string text;
         try {
@@ -282,7 +297,7 @@ class Parser {
         FileContext sub = Load(text, inc.string(), &doc);
         pugi::xml_node scene = doc.child("scene");
         if (!scene) throw MakeInputError(inc.string(), 1, "an included file must have a <scene> root");
-        Walk(scene, sub, parent, include_depth + 1);
+        Walk(scene, sub, parent, include_depth + 1, depth);
       } else if (tag == "ref") {
         CheckAttributes(c, {"id", "name"}, loc);
         std::string id = Attr(c, "id", loc);
@@ -291,12 +306,13 @@ class Parser {
         Attach(parent, it->second, Attr(c, "name", loc, false), loc);
       } else if (IsObjectTag(tag)) {
         CheckAttributes(c, {"type", "id", "name"}, loc);
+        if (depth >= kMaxObjectNesting) throw ErrorAt(loc, "objects nested more than {} levels deep", kMaxObjectNesting);
         auto obj = std::make_shared<ObjectNode>();
         obj->tag = tag;
         obj->type = Attr(c, "type", loc);
         obj->id = Attr(c, "id", loc, false);
         obj->loc = loc;
-        Walk(c, ctx, *obj, include_depth);
+        Walk(c, ctx, *obj, include_depth, depth + 1);
         if (!obj->id.empty()) {
           if (ids_.count(obj->id)) throw ErrorAt(loc, "id '{}' is used twice", obj->id);
           ids_[obj->id] = obj;
@@ -351,6 +367,9 @@ class Parser {
   std::map<std::string, std::string> params_;
   std::map<std::string, bool> overridden_;
   std::map<std::string, std::shared_ptr<ObjectNode>> ids_;
+  size_t xml_bytes_ = 0;
+  mutable size_t substituted_bytes_ = 0;  // counted by the const readers of attributes
+  int includes_ = 0;
 };
 
 }  // namespace

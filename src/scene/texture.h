@@ -40,15 +40,18 @@ class ConstantTexture final : public SpectrumTexture {
 // after the to_uv transform.
 class CheckerboardTexture final : public SpectrumTexture {
  public:
+  // The mean is taken once here: the two colours may be one texture (a scene can nest such
+  // checkerboards, and asking each for its mean on every call would take exponential time).
   CheckerboardTexture(std::shared_ptr<const SpectrumTexture> c0, std::shared_ptr<const SpectrumTexture> c1,
                       const Transform& to_uv)
-      : c0_(std::move(c0)), c1_(std::move(c1)), to_uv_(to_uv) {}
+      : c0_(std::move(c0)), c1_(std::move(c1)), to_uv_(to_uv), mean_((c0_->MeanRgb() + c1_->MeanRgb()) * 0.5f) {}
   SampledSpectrum Evaluate(Vec2f uv, const SampledWavelengths& lambda) const override;
-  Vec3f MeanRgb() const override { return (c0_->MeanRgb() + c1_->MeanRgb()) * 0.5f; }
+  Vec3f MeanRgb() const override { return mean_; }
 
  private:
   std::shared_ptr<const SpectrumTexture> c0_, c1_;
   Transform to_uv_;
+  Vec3f mean_;
 };
 
 enum class WrapMode { kRepeat, kMirror, kClamp };
