@@ -57,6 +57,12 @@ class CheckerboardTexture final : public SpectrumTexture {
 enum class WrapMode { kRepeat, kMirror, kClamp };
 enum class FilterMode { kBilinear, kNearest };
 
+// A texel coordinate x (in texels, on an axis of n texels) brought into a range where its
+// floor fits an int, without changing the texel it wraps to: moved by whole periods (n for
+// repeat, 2n for mirror; exact, so the fraction is kept) or clamped to [-1, n]. NaN where
+// there is no answer (x is NaN, or infinite and repeating); the caller then returns NaN.
+float WrapTexelCoordinate(float x, WrapMode wrap, int n);
+
 // An RGB image (linear, already decoded from sRGB by the loader) looked up at uv, v = 0 at
 // the bottom row as in Mitsuba.
 class BitmapTexture final : public SpectrumTexture {

@@ -1,0 +1,16 @@
+# The fuzzing findings of issue 10, run through the command line (inputs and what each broke:
+# data/fuzz/README.md). Each must end in its expected exit status, an error naming the file
+# where it fails, never a signal or a hang.
+set(FUZZ ${CMAKE_CURRENT_SOURCE_DIR}/data/fuzz)
+set(FUZZ_OUT ${CMAKE_CURRENT_BINARY_DIR}/fuzz)
+file(MAKE_DIRECTORY ${FUZZ_OUT})
+
+# fuzz_test(NAME CODE TEXT ARGS...): objektiv ARGS exits with CODE and prints TEXT.
+function(fuzz_test name code text)
+  list(JOIN ARGN "$<SEMICOLON>" args)
+  add_test(NAME fuzz_${name} COMMAND ${CMAKE_COMMAND} -DCMD=${OBJ}$<SEMICOLON>${args}
+    -DEXPECT_CODE=${code} -DEXPECT_TEXT=${text} -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_exit.cmake)
+  set_tests_properties(fuzz_${name} PROPERTIES TIMEOUT 60)
+endfunction()
+
+fuzz_test(texture_uv_huge 0 "NaN 0" render ${FUZZ}/03-texture-to-uv-huge.xml --spp 1 -o ${FUZZ_OUT}/03.exr)
