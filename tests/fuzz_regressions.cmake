@@ -14,3 +14,5 @@ function(fuzz_test name code text)
 endfunction()
 
 fuzz_test(texture_uv_huge 0 "NaN 0" render ${FUZZ}/03-texture-to-uv-huge.xml --spp 1 -o ${FUZZ_OUT}/03.exr)
+fuzz_test(zmx_curv_infinity 1 "05-zmx-curv-infinity.zmx:11: 'INFINITY' is not a finite number"
+  lens info ${FUZZ}/05-zmx-curv-infinity.zmx)

@@ -74,6 +74,12 @@ double ParseFiniteNumber(const std::string& s, const std::string& path, int line
   return *v;
 }
 
+std::optional<int> ParseIntegerIn(const std::string& s, int lo, int hi) {
+  std::optional<double> v = ParseFiniteNumber(s);
+  if (!v || *v != std::floor(*v) || *v < lo || *v > hi) return std::nullopt;
+  return int(*v);
+}
+
 std::vector<std::string> SplitFields(const std::string& line) {
   std::istringstream tok(line);
   std::vector<std::string> fields;

@@ -26,6 +26,10 @@ std::string DecodeToAscii(const std::string& raw);
 std::optional<double> ParseFiniteNumber(const std::string& s);
 // The same, or InputError "PATH:LINE: 'S' is not a finite number".
 double ParseFiniteNumber(const std::string& s, const std::string& path, int line);
+// The integer in [lo, hi] spelled by the whole of `s` ("7", or "7.0" as some files write it),
+// range-checked in floating point before it is converted (a double beyond an int's range
+// must not reach the conversion).
+std::optional<int> ParseIntegerIn(const std::string& s, int lo, int hi);
 // The whitespace-separated fields of one line (a trailing '\r' is whitespace too).
 std::vector<std::string> SplitFields(const std::string& line);
 

@@ -40,15 +40,6 @@ std::shared_ptr<const Glass> ParseMedium(const std::string& m, const std::string
   return std::shared_ptr<const Glass>(std::shared_ptr<const Glass>(), g);
 }
 
-// Largest semi-diameter a conic surface reaches before its sag turns over: r^2 (1+k) c^2 < 1.
-void CheckReachable(const LensSurface& s, const std::string& path, int line) {
-  double c = s.Curvature();
-  if (c == 0 || s.conic <= -1) return;
-  double limit = 1 / (std::abs(c) * std::sqrt(1 + s.conic));
-  if (s.semi_diameter > limit)
-    throw MakeInputError(path, line, "semi-diameter {} is larger than the surface can reach ({:.4g})", s.semi_diameter, limit);
-}
-
 }  // namespace
 
 LensPrescription ParseNativeLens(const std::string& text, const std::string& path) {
@@ -113,9 +104,9 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       } else if (key == "coating") {
         s.coating = value;
       } else if (key.size() >= 2 && key[0] == 'a' && std::all_of(key.begin() + 1, key.end(), ::isdigit)) {
-        int order = std::atoi(key.c_str() + 1);
-        if (order < 4 || order > 16 || order % 2) throw MakeInputError(path, number, "aspheric terms are a4, a6, ..., a16");
-        s.aspheric[(order - 4) / 2] = ParseFiniteNumber(value, path, number);
+        std::optional<int> order = ParseIntegerIn(key.substr(1), 4, 16);
+        if (!order || *order % 2) throw MakeInputError(path, number, "aspheric terms are a4, a6, ..., a16");
+        s.aspheric[(*order - 4) / 2] = ParseFiniteNumber(value, path, number);
       } else {
         throw MakeInputError(path, number, "unknown option '{}' (k, a4..a16, coating)", key);
       }
