@@ -16,3 +16,5 @@ endfunction()
 fuzz_test(texture_uv_huge 0 "NaN 0" render ${FUZZ}/03-texture-to-uv-huge.xml --spp 1 -o ${FUZZ_OUT}/03.exr)
 fuzz_test(zmx_curv_infinity 1 "05-zmx-curv-infinity.zmx:11: 'INFINITY' is not a finite number"
   lens info ${FUZZ}/05-zmx-curv-infinity.zmx)
+fuzz_test(png_header_12000 1 "06-png-header-12000x12000.png: cannot decode image"
+  render ${FUZZ}/06-texture-scene.xml -o ${FUZZ_OUT}/06.exr)
