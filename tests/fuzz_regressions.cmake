@@ -24,3 +24,5 @@ fuzz_test(ply_triangulate_assert 1 "08-ply-triangulate-assert.ply:83: '0.23' is 
   render ${FUZZ}/07-mesh-scene.xml -D meshfile=08-ply-triangulate-assert.ply -o ${FUZZ_OUT}/08.exr)
 fuzz_test(ply_header_hang 1 "09-ply-truncated-header-hang.ply:14: unknown header line"
   render ${FUZZ}/07-mesh-scene.xml -D meshfile=09-ply-truncated-header-hang.ply -o ${FUZZ_OUT}/09.exr)
+fuzz_test(huge_vertex_area_light 1 "02-embree-assert-scene.xml:12: vertex 63 lies at (-0.523986, 9.22337e+18, 0.0906492)"
+  render ${FUZZ}/02-embree-assert-scene.xml -o ${FUZZ_OUT}/02.exr)

@@ -173,5 +173,41 @@ TEST(BadInputs, IncludesAreBounded) {
                    "more than 64 MiB of XML in all");
 }
 
+TEST(BadInputs, GeometryBeyondTheCoordinateLimitIsAnError) {
+  // Repro 02 (a mesh vertex at 9.2e18 as an area light) overflowed light sampling to
+  // non-finite shadow rays; bounded at load, everywhere a position can come from.
+  struct Case {
+    std::string element, part;
+  };
+  const std::vector<Case> cases = {
+      {R"(<shape type="rectangle"><transform name="to_world"><scale value="2e8"/></transform></shape>)",
+       "vertex 0 lies at (-2e+08, -2e+08, 0), beyond the scene's coordinate limit of 1e+08"},
+      {R"(<shape type="sphere"><float name="radius" value="1e9"/></shape>)", "the sphere reaches"},
+      {R"(<shape type="sphere"><point name="center" x="1e20" y="0" z="0"/></shape>)", "the sphere reaches"},
+      {R"(<shape type="disk"><transform name="to_world"><translate x="-3e8"/></transform></shape>)", "the disk reaches"},
+      {R"(<shape type="cylinder"><float name="radius" value="1e9"/></shape>)", "the cylinder reaches"},
+      {R"(<shape type="plane"><transform name="to_world"><translate z="1e30"/></transform></shape>)", "the plane's origin"},
+      {R"(<shape type="shapegroup" id="g"><shape type="cube"/></shape>)"
+       R"(<shape type="instance"><ref id="g"/><transform name="to_world"><translate y="5e8"/></transform></shape>)",
+       "the instance reaches"},
+      {R"(<emitter type="point"><point name="position" x="0" y="1e10" z="0"/></emitter>)", "the point light at (0, 1e+10, 0)"},
+      {R"(<emitter type="spot"><transform name="to_world"><translate x="1e9"/></transform></emitter>)", "the spot light"},
+      {R"(<emitter type="directional"><vector name="direction" x="0" y="0" z="0"/></emitter>)", "direction must be finite and not zero"},
+      // Each scale is finite; composed, they overflow a double.
+      {R"(<shape type="cube"><transform name="to_world"><scale value="1e200"/><scale value="1e200"/></transform></shape>)",
+       "the transform overflows"},
+  };
+  for (const Case& c : cases)
+    ExpectInputError([&] { LoadSceneFromString(std::string("<scene version=\"3.0.0\">") + kSensor + "\n" + c.element + "</scene>", "far.xml", {}); },
+                     "far.xml:3:", c.part);
+  std::string far_sensor = R"(<scene version="3.0.0"><sensor type="perspective">
+<transform name="to_world"><translate x="2e8"/></transform></sensor></scene>)";
+  ExpectInputError([&] { LoadSceneFromString(far_sensor, "cam.xml", {}); }, "cam.xml:2:", "the sensor at (2e+08, 0, 0)");
+  // A direction far from unit length is normalised without overflowing.
+  LoadSceneFromString(std::string("<scene version=\"3.0.0\">") + kSensor +
+                          R"(<emitter type="directional"><vector name="direction" x="0" y="-1e30" z="0"/></emitter></scene>)",
+                      "dir.xml", {});
+}
+
 }  // namespace
 }  // namespace objektiv

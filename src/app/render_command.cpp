@@ -97,6 +97,8 @@ int RunRender(const RenderArgs& a) {
                 (unsigned long long)stats.inf_count, exr.string().c_str(), png.string().c_str());
   if (stats.nan_count || stats.inf_count)
     spdlog::warn("{} NaN and {} Inf radiance samples were dropped", stats.nan_count, stats.inf_count);
+  if (stats.skipped_rays)
+    spdlog::warn("{} rays with non-finite or out-of-range origins or directions were skipped", stats.skipped_rays);
   return 0;
 }
 

@@ -99,6 +99,7 @@ void BuildSensor(const ObjectNode& node, RenderSetup& setup) {
   setup.sampler = BuildSamplerSettings(OneChild(p, "sampler"));
   const int w = setup.film.width, h = setup.film.height;
   Transform to_world = p.GetTransform("to_world");
+  CheckWithinSceneLimit(to_world.Point(Vec3f(0.f)), p.LocOf("to_world"), "the sensor");
   float near_clip = float(p.FloatIn("near_clip", 1e-2, 0, 1e30));
   float far_clip = float(p.FloatIn("far_clip", 1e4, 0, 1e30));
   if (!(far_clip > near_clip)) throw ErrorAt(p.LocOf("far_clip"), "far_clip must exceed near_clip");

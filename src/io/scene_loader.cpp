@@ -22,6 +22,18 @@ std::string ResolvePath(const Location& loc, const std::string& filename) {
   return p.string();
 }
 
+void CheckWithinSceneLimit(const Vec3f& p, const Location& loc, const char* what) {
+  if (!WithinSceneLimit(p))
+    throw ErrorAt(loc, "{} at ({:g}, {:g}, {:g}) lies beyond the scene's coordinate limit of {:g}", what, p.x, p.y, p.z,
+                  kMaxSceneCoordinate);
+}
+
+Vec3f UnitVector(const Vec3f& v, const Location& loc, const char* what) {
+  float m = MaxComponent(Abs(v));
+  if (!(m > 0) || !std::isfinite(m)) throw ErrorAt(loc, "{} must be finite and not zero", what);
+  return Normalize(v / m);
+}
+
 std::unique_ptr<Sampler> MakeSampler(const SamplerSettings& s) {
   SamplerKind kind = s.type == "independent" ? SamplerKind::kIndependent
                     : s.type == "stratified"  ? SamplerKind::kStratified

@@ -196,6 +196,9 @@ class Parser {
           throw ErrorAt(loc, "unknown transform operation <{}>", name);
         }
         t = m * t;  // later operations apply after earlier ones
+        for (const auto& row : t.Matrix().m)
+          for (double v : row)
+            if (!std::isfinite(v)) throw ErrorAt(loc, "the transform overflows (its numbers are too large)");
       } catch (const std::invalid_argument& e) {
         throw ErrorAt(loc, "{}", e.what());
       }

@@ -52,6 +52,7 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
   const bool lens_sample = camera.UsesLensSample();
   Progress progress("Rendering", int64_t(tiles_x) * tiles_y, options.progress);
   auto start = std::chrono::steady_clock::now();
+  const uint64_t skipped_before = integrator.scene().SkippedRays();
 
   tbb::parallel_for(0, tiles_x * tiles_y, [&](int tile) {
     ThreadState& st = states.local();
@@ -109,6 +110,7 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
   stats.width = crop.Width();
   stats.height = crop.Height();
   stats.samples = uint64_t(spp) * crop.Width() * crop.Height();
+  stats.skipped_rays = integrator.scene().SkippedRays() - skipped_before;
   for (const ThreadState& st : states) {
     stats.rays += st.rays.closest + st.rays.shadow;
     stats.camera_rays_traced += st.camera.traced;

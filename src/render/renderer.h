@@ -16,6 +16,7 @@ struct RenderStats {
   uint64_t samples = 0, rays = 0;
   uint64_t camera_rays_traced = 0, camera_rays_passed = 0;  // through a lens (see CameraRayCount)
   uint64_t nan_count = 0, inf_count = 0;
+  uint64_t skipped_rays = 0;  // rays Embree could not take (see Scene::SkippedRays)
   double SamplesPerSecond() const { return seconds > 0 ? samples / seconds : 0; }
   double MraysPerSecond() const { return seconds > 0 ? rays / seconds * 1e-6 : 0; }
   // Camera rays that came out of the lens per camera ray traced (1 for ideal cameras).
