@@ -95,7 +95,9 @@ double FocalLengthMm(const Properties& p) {
 
 void BuildSensor(const ObjectNode& node, RenderSetup& setup) {
   Properties p(node);
-  setup.film = BuildFilm(OneChild(p, "film"));
+  const ObjectNode* film = OneChild(p, "film");
+  setup.film = BuildFilm(film);
+  setup.film.loc = film ? film->loc : node.loc;
   setup.sampler = BuildSamplerSettings(OneChild(p, "sampler"));
   const int w = setup.film.width, h = setup.film.height;
   Transform to_world = p.GetTransform("to_world");
