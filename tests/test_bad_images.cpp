@@ -124,6 +124,46 @@ TEST(BadImages, TruncatedFilesAreErrorsInEveryFormat) {
   EXPECT_NO_THROW(ReadImageRgb(trailing.string()));
 }
 
+TEST(BadImages, ExrAttributeSizesAreCheckedBeforeOpenExrAllocates) {
+  fs::path dir = TempDir("exr");
+  fs::path good = dir / "tagged.exr", bad = dir / "bad.exr";
+  {
+    OIIO::ImageSpec spec(8, 8, 3, OIIO::TypeDesc::HALF);
+    spec.attribute("Software", "objektiv test");
+    auto out = OIIO::ImageOutput::create(good.string());
+    std::vector<float> pixels(8 * 8 * 3, 0.5f);
+    ASSERT_TRUE(out->open(good.string(), spec) && out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) && out->close());
+  }
+  EXPECT_NO_THROW(ReadImageRgb(good.string()));
+  // A mutated size field (found by fuzzing): OpenEXR took 2 GiB for the attribute before it
+  // found the file too short.
+  std::string bytes = ReadBytes(good);
+  size_t at = bytes.find(std::string("Software\0string\0", 16));
+  ASSERT_NE(at, std::string::npos);
+  const uint32_t huge = 0x7f000041;
+  std::memcpy(&bytes[at + 16], &huge, 4);
+  WriteBytes(bad, bytes);
+  const long before = PeakRssKiB();
+  ExpectImageError([&] { ReadImageRgb(bad.string()); }, bad, "attribute 'Software' larger than the file");
+  EXPECT_LT(PeakRssKiB() - before, 100 * 1024);
+  // A multi-part file (its headers in a row) passes the check; part 0 is read.
+  fs::path multi = dir / "multi.exr";
+  {
+    OIIO::ImageSpec specs[2] = {OIIO::ImageSpec(4, 4, 3, OIIO::TypeDesc::FLOAT), OIIO::ImageSpec(2, 2, 1, OIIO::TypeDesc::FLOAT)};
+    specs[1].full_width = specs[1].full_height = 4;  // the parts share one display window
+    auto out = OIIO::ImageOutput::create(multi.string());
+    ASSERT_TRUE(out->supports("multiimage"));
+    ASSERT_TRUE(out->open(multi.string(), 2, specs)) << out->geterror();
+    std::vector<float> a(4 * 4 * 3, 0.25f), b(2 * 2, 1.f);
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, a.data()));
+    ASSERT_TRUE(out->open(multi.string(), specs[1], OIIO::ImageOutput::AppendSubimage));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, b.data()) && out->close());
+  }
+  Image m = ReadImageRgb(multi.string());
+  EXPECT_EQ(m.width, 4);
+  EXPECT_FLOAT_EQ(m.At(3, 3, 2), 0.25f);
+}
+
 TEST(BadImages, FormatsOutsideTheListAreRefused) {
   fs::path dir = TempDir("formats");
   // Read by its extension only: a movie or a Maya IFF (whose reader takes a cut file without

@@ -6,11 +6,11 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <new>
 
 #include "base/error.h"
 #include "base/text_file.h"
+#include "io/image_file_checks.h"
 
 namespace objektiv {
 
@@ -52,31 +52,6 @@ bool ReadPixels(OIIO::ImageInput& in, std::vector<float>& pixels) {
   return true;
 }
 
-// Whether a JPEG file runs to its end-of-image marker. libjpeg decodes a truncated file
-// with a warning only (the missing rows grey), and OpenImageIO reports success. The walk
-// skips each marker segment by its length (an embedded thumbnail's own marker does not
-// count) and, in entropy-coded data, stuffed 0xFF bytes and restart markers.
-bool JpegIsComplete(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::streambuf& in = *file.rdbuf();
-  constexpr int kEof = std::char_traits<char>::eof();
-  if (in.sbumpc() != 0xFF || in.sbumpc() != 0xD8) return false;
-  for (;;) {
-    int b = in.sbumpc();
-    if (b == kEof) return false;
-    if (b != 0xFF) continue;  // entropy-coded data
-    int marker;
-    do marker = in.sbumpc();
-    while (marker == 0xFF);  // fill bytes
-    if (marker == kEof) return false;
-    if (marker == 0xD9) return true;  // end of image
-    if (marker == 0x00 || marker == 0x01 || (marker >= 0xD0 && marker <= 0xD8)) continue;  // no length
-    int hi = in.sbumpc(), lo = in.sbumpc();
-    if (lo == kEof || hi == kEof || (hi << 8 | lo) < 2) return false;
-    if (in.pubseekoff((hi << 8 | lo) - 2, std::ios::cur) == std::streampos(-1)) return false;
-  }
-}
-
 // The formats read, chosen by the file's extension (no other reader is tried): common image
 // formats whose readers report a truncated file as an error (JPEG with the check above).
 // Movies, camera raw files, volumes and the rest of what OpenImageIO can read are refused.
@@ -92,6 +67,7 @@ RawImage ReadRaw(const std::string& path) {
   if (!in || std::none_of(std::begin(kImageFormats), std::end(kImageFormats),
                           [&](const char* f) { return std::string(in->format_name()) == f; }))
     throw MakeInputError(path, 0, "not an image format that is read (by its extension: {})", kImageFormatList);
+  if (std::string(in->format_name()) == "openexr") CheckExrHeaders(path);
   OIIO::ImageSpec opened;
   if (!in->open(path, opened)) throw MakeInputError(path, 0, "cannot read image: {}", in->geterror());
   if (std::string(in->format_name()) == "jpeg" && !JpegIsComplete(path))
