@@ -173,6 +173,19 @@ TEST(BadInputs, IncludesAreBounded) {
                    "more than 64 MiB of XML in all");
 }
 
+TEST(BadInputs, BlackbodyTemperaturesOutsidePlancksRangeAreErrors) {
+  // 1e30 K and 1e-30 K made every sample of the emitter NaN (Planck's law overflowed).
+  for (const char* t : {"1e30", "1e-30", "0.5", "2e9"})
+    ExpectInputError(
+        [&] {
+          LoadSceneFromString(std::string("<scene version=\"3.0.0\">") + kSensor +
+                                  "\n<shape type=\"rectangle\"><emitter type=\"area\"><spectrum name=\"radiance\" "
+                                  "type=\"blackbody\" temperature=\"" + t + "\"/></emitter></shape></scene>",
+                              "bb.xml", {});
+        },
+        "bb.xml:3:", "temperature from 1 to 1e9 K");
+}
+
 TEST(BadInputs, GeometryBeyondTheCoordinateLimitIsAnError) {
   // Repro 02 (a mesh vertex at 9.2e18 as an area light) overflowed light sampling to
   // non-finite shadow rays; bounded at load, everywhere a position can come from.

@@ -218,7 +218,9 @@ class Parser {
       s.kind = SpectrumValue::Kind::kBlackbody;
       s.temperature = float(n.attribute("temperature") ? ParseDouble(Attr(n, "temperature", loc), loc)
                                                        : nested_float("temperature", -1));
-      if (!(s.temperature > 0)) throw ErrorAt(loc, "blackbody spectrum needs a positive temperature (K)");
+      // Beyond this range Planck's law over- or underflows to a NaN spectrum.
+      if (!(s.temperature >= 1 && s.temperature <= 1e9))
+        throw ErrorAt(loc, "blackbody spectrum needs a temperature from 1 to 1e9 K");
       s.value = float(nested_float("scale", 1));
       return s;
     }
