@@ -4,7 +4,6 @@
 #include <fstream>
 
 #include "base/error.h"
-#include "base/text_file.h"
 
 namespace objektiv {
 
@@ -29,8 +28,7 @@ bool JpegIsComplete(const std::string& path) {
   }
 }
 
-void CheckExrHeaders(const std::string& path) {
-  const uintmax_t size = CheckInputFile(path, "image", UINTMAX_MAX);
+void CheckExrHeaders(const std::string& path, uintmax_t file_size) {
   std::ifstream file(path, std::ios::binary);
   auto bad = [&](const char* what) { return MakeInputError(path, 0, "cannot read image: {} in the OpenEXR header", what); };
   // Magic number and version field; bit 12 of the version marks a multi-part file.
@@ -59,7 +57,7 @@ void CheckExrHeaders(const std::string& path) {
     if (!file.read(reinterpret_cast<char*>(b), 4)) throw bad("a cut attribute");
     const int32_t bytes = int32_t(uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16 | uint32_t(b[3]) << 24);
     const std::streamoff at = file.tellg();
-    if (bytes < 0 || uintmax_t(at) + uintmax_t(bytes) > size) throw bad(("attribute '" + attribute + "' larger than the file").c_str());
+    if (bytes < 0 || uintmax_t(at) + uintmax_t(bytes) > file_size) throw bad(("attribute '" + attribute + "' larger than the file").c_str());
     file.seekg(bytes, std::ios::cur);
   }
 }

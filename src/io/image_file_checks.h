@@ -3,6 +3,7 @@
 // and OpenImageIO reports success; OpenEXR allocates whatever size an attribute's header
 // claims (2 GiB from a file of a few kilobytes) before finding the file too short.
 #pragma once
+#include <cstdint>
 #include <string>
 
 namespace objektiv {
@@ -12,9 +13,9 @@ namespace objektiv {
 // data, stuffed 0xFF bytes and restart markers.
 bool JpegIsComplete(const std::string& path);
 
-// Throws InputError "PATH: ..." unless every header of an OpenEXR file (one, or several for
-// a multi-part file) is a list of attributes (name, type, size, value) that each fit in the
-// file.
-void CheckExrHeaders(const std::string& path);
+// Throws InputError "PATH: ..." unless every header of an OpenEXR file of `file_size` bytes
+// (one, or several for a multi-part file) is a list of attributes (name, type, size, value)
+// that each fit in the file.
+void CheckExrHeaders(const std::string& path, uintmax_t file_size);
 
 }  // namespace objektiv

@@ -53,21 +53,22 @@ bool ReadPixels(OIIO::ImageInput& in, std::vector<float>& pixels) {
 }
 
 // The formats read, chosen by the file's extension (no other reader is tried): common image
-// formats whose readers report a truncated file as an error (JPEG with the check above).
+// formats whose readers report a truncated file as an error (JPEG and OpenEXR with the
+// checks of image_file_checks.h).
 // Movies, camera raw files, volumes and the rest of what OpenImageIO can read are refused.
 constexpr const char* kImageFormats[] = {"openexr", "hdr",  "png", "jpeg",     "tiff", "targa",
                                          "bmp",     "pnm",  "webp", "jpeg2000", "gif",  "heif"};
 constexpr const char* kImageFormatList = "EXR, HDR, PNG, JPEG, TIFF, TGA, BMP, PNM, WebP, JPEG 2000, GIF, HEIF/AVIF";
 
 RawImage ReadRaw(const std::string& path) {
-  CheckInputFile(path, "image", UINTMAX_MAX);
+  const uintmax_t file_size = CheckInputFile(path, "image", UINTMAX_MAX);
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
   auto in = ext.size() > 1 ? OIIO::ImageInput::create(ext.substr(1)) : nullptr;
   if (!in || std::none_of(std::begin(kImageFormats), std::end(kImageFormats),
                           [&](const char* f) { return std::string(in->format_name()) == f; }))
     throw MakeInputError(path, 0, "not an image format that is read (by its extension: {})", kImageFormatList);
-  if (std::string(in->format_name()) == "openexr") CheckExrHeaders(path);
+  if (std::string(in->format_name()) == "openexr") CheckExrHeaders(path, file_size);
   OIIO::ImageSpec opened;
   if (!in->open(path, opened)) throw MakeInputError(path, 0, "cannot read image: {}", in->geterror());
   if (std::string(in->format_name()) == "jpeg" && !JpegIsComplete(path))

@@ -24,7 +24,7 @@ int TypeSize(const std::string& t) {
 }
 
 bool IsIntegral(const std::string& t) { return TypeSize(t) > 0 && t.find("float") == std::string::npos && t != "double"; }
-bool IsSigned(const std::string& t) { return t == "char" || t == "short" || t == "int" || (t.rfind("int", 0) == 0); }
+bool IsSigned(const std::string& t) { return t == "char" || t == "short" || t.rfind("int", 0) == 0; }
 
 // A header line for an error message: printable characters only, at most 40.
 std::string Shown(std::string_view s) {
