@@ -69,6 +69,23 @@ TEST(BatchTracer, FollowsTheDoubleTracerFromTheFilm) {
   }
 }
 
+TEST(BatchTracer, EmptyBatchIsTracedAsNothing) {
+  // A pixel outside a fisheye's image circle starts no ray. The tracer took element 0 of its
+  // empty scratch tables (undefined behaviour, reported by UBSan; an abort under
+  // _GLIBCXX_ASSERTIONS, the hardening default of major distributions).
+  for (const LensPrescription& lens : Lenses()) {
+    BatchLensTracer fast(Prepared(lens));
+    for (bool transmission : {false, true}) {
+      RayBatch b;
+      b.record_stop = true;
+      fast.TraceFromFilm(b, transmission);
+      fast.TraceFromObject(b, transmission);
+      EXPECT_EQ(b.Size(), 0u);
+      EXPECT_TRUE(b.stop_x.empty());
+    }
+  }
+}
+
 TEST(BatchTracer, FollowsTheDoubleTracerToTheFilm) {
   for (const LensPrescription& lens : Lenses()) {
     LensTracer exact = Prepared(lens);

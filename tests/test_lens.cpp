@@ -142,6 +142,7 @@ TEST(NativeLens, BadFilesNameTheLine) {
       {stop + "surface 8 5 N-BK7 10\nsurface -50 40 air 10\n", 2, "larger than the surface can reach"},
       {stop + "surface 50 5 N-BK7 10 k=abc\nsurface -50 40 air 10\n", 2, "not a finite number"},
       {stop + "surface 50 5 N-BK7 10 a5=1\nsurface -50 40 air 10\n", 2, "a4, a6"},
+      {stop + "surface 50 5 N-BK7 10 a99999999999999999999=1\nsurface -50 40 air 10\n", 2, "a4, a6"},
       {stop + "surface 50 5 N-BK7 10\nsurface -50 40 N-BK7 10\n", 3, "into air"},
       {"focal: 50\n" + stop, 1, "unknown key"},
       {stop + "lens 50 5 air 10\n", 2, "unknown line"},

@@ -198,6 +198,7 @@ void StepAll(const Step& s, bool transmission, RayBatch& b) {
 
 void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) const {
   const size_t count = rays.Size();
+  if (count == 0) return;  // e.g. a pixel outside a fisheye's image circle: no sample starts a ray
   // Each medium's index and absorption at each ray's wavelength, once for all surfaces (the
   // kernel then reads them as contiguous arrays, which vectorises better than table lookups).
   const size_t media = index_tables_.size();
@@ -212,14 +213,14 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
   };
   rays.media_index.resize(media * count);
   for (size_t m = 0; m < media; ++m) {
-    float* out = &rays.media_index[m * count];
+    float* out = rays.media_index.data() + m * count;
     if (constant_index_[m]) std::fill(out, out + count, index_tables_[m][0]);
     else interpolate(index_tables_[m], out);
   }
   // Absorption coefficients only when some glass absorbs (else one block of zeros, air's).
   rays.media_alpha.assign((absorbing ? media : 1) * count, 0.f);
   if (absorbing)
-    for (size_t m = 1; m < media; ++m) interpolate(absorption_tables_[m], &rays.media_alpha[m * count]);
+    for (size_t m = 1; m < media; ++m) interpolate(absorption_tables_[m], rays.media_alpha.data() + m * count);
   rays.depth.assign(count, 0.f);
   const int n = int(surfaces_.size());
   for (int k = 0; k < n; ++k) {
@@ -231,8 +232,9 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
     // Air is medium 0 (index one, no absorption); the ray starts in air (no absorption before
     // the first surface).
     const bool absorb = k > 0;
-    Step st{sf.z, sf.c, sf.k1, sf.semi2, sf.a2, {}, &rays.media_index[(m_in + 1) * count],
-            &rays.media_index[(m_out + 1) * count], &rays.media_alpha[(absorb && absorbing ? m_in + 1 : 0) * count]};
+    Step st{sf.z, sf.c, sf.k1, sf.semi2, sf.a2, {}, rays.media_index.data() + (m_in + 1) * count,
+            rays.media_index.data() + (m_out + 1) * count,
+            rays.media_alpha.data() + (absorb && absorbing ? m_in + 1 : 0) * count};
     std::copy(sf.a, sf.a + 7, st.a);
     const bool refract = m_in != m_out;  // the stop too, where it parts two media
     if (sf.plane) {

@@ -43,4 +43,8 @@ struct LensPrescription {
   double TotalTrack() const;  // first vertex to the last (without the distance to the film)
 };
 
+// Throws InputError "PATH:LINE: ..." if the surface's semi-diameter lies beyond the largest a
+// conic surface reaches before its sag turns over: r^2 (1+k) c^2 < 1 (for every reader).
+void CheckReachable(const LensSurface& s, const std::string& path, int line);
+
 }  // namespace objektiv

@@ -1,6 +1,7 @@
 // The film accumulates spectral radiance as CIE XYZ, per pixel of the crop window:
 // sum of w * XYZ and sum of w, in double so that sums of sample ranges merge exactly enough.
 #pragma once
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -18,6 +19,11 @@ struct CropWindow {
 };
 
 class Film {
+  struct Pixel {
+    double xyz[3] = {0, 0, 0};
+    double weight = 0;
+  };
+
  public:
   Film(int width, int height, CropWindow crop, std::shared_ptr<const Filter> filter);
 
@@ -25,16 +31,15 @@ class Film {
   // Linear RGB in the given colour space, scaled by 2^exposure; crop-window sized.
   Image ToImage(const ColorSpace& cs, float exposure_stops = 0) const;
 
+  // Bytes of the accumulators for a crop window (allocated by the constructor).
+  static uint64_t AccumulatorBytes(const CropWindow& crop) { return uint64_t(crop.Width()) * crop.Height() * sizeof(Pixel); }
+
   int width() const { return width_; }
   int height() const { return height_; }
   const CropWindow& crop() const { return crop_; }
   const Filter& filter() const { return *filter_; }
 
  private:
-  struct Pixel {
-    double xyz[3] = {0, 0, 0};
-    double weight = 0;
-  };
   Pixel& At(Vec2i p) { return pixels_[size_t(p.y - crop_.y0) * crop_.Width() + (p.x - crop_.x0)]; }
   int width_, height_;
   CropWindow crop_;

@@ -53,6 +53,7 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
   const bool lens_sample = camera.UsesLensSample();
   Progress progress("Rendering", int64_t(tiles_x) * tiles_y, options.progress);
   auto start = std::chrono::steady_clock::now();
+  const uint64_t skipped_before = integrator.scene().SkippedRays();
 
   auto stopped = [&] { return options.stop && options.stop->load(std::memory_order_relaxed); };
 
@@ -114,6 +115,7 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
   stats.width = crop.Width();
   stats.height = crop.Height();
   stats.pixels = uint64_t(crop.Width()) * crop.Height();
+  stats.skipped_rays = integrator.scene().SkippedRays() - skipped_before;
   for (const ThreadState& st : states) {
     stats.pixels_completed += st.pixels;
     stats.rays += st.rays.closest + st.rays.shadow;
