@@ -34,6 +34,13 @@ std::string FormatKey(const std::string& name) {
   return key;
 }
 
+constexpr Named<LensModel> kLensModels[] = {
+    {"real", LensModel::kReal}, {"thick", LensModel::kThick}, {"thin", LensModel::kThin}};
+constexpr Named<Vignetting> kVignettingModes[] = {{"full", Vignetting::kFull},
+                                                  {"cos4", Vignetting::kNatural},
+                                                  {"aperture", Vignetting::kOptical},
+                                                  {"none", Vignetting::kNone}};
+
 // A lens file relative to the scene, or a shipped lens by name (see ResolveLens).
 LensPrescription LoadSceneLens(const Properties& p) {
   std::string name = p.String("lens");
@@ -98,9 +105,7 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const Transform& to
   spec.lens = LoadSceneLens(p);
   // The prescription scaled as a whole to another focal length (radii, thicknesses, apertures).
   if (p.Has("focal_length")) spec.lens = ScaleToFocalLength(spec.lens, p.FloatIn("focal_length", 50, 1e-3, 1e6));
-  static const std::map<std::string, LensModel> models = {
-      {"real", LensModel::kReal}, {"thick", LensModel::kThick}, {"thin", LensModel::kThin}};
-  spec.model = models.at(p.Choice("lens_model", "real", {"real", "thick", "thin"}));
+  spec.model = p.Choice("lens_model", LensModel::kReal, kLensModels);
   if (p.Has("fnumber") && p.Has("aperture_diameter"))
     throw ErrorAt(p.LocOf("aperture_diameter"), "give either fnumber or aperture_diameter, not both");
   if (p.Has("fnumber")) spec.fnumber = p.FloatIn("fnumber", 0, 0.1, 1e4);
@@ -121,11 +126,7 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const Transform& to
   s.shift = Vec2d(p.FloatIn("shift_x", 0, -1e4, 1e4), p.FloatIn("shift_y", 0, -1e4, 1e4));
   s.metres_per_unit = p.FloatIn("metres_per_unit", 1, 1e-12, 1e12);
   s.exposure_scale = p.FloatIn("exposure_scale", 1, 0, 1e30);
-  static const std::map<std::string, Vignetting> modes = {{"full", Vignetting::kFull},
-                                                          {"cos4", Vignetting::kNatural},
-                                                          {"aperture", Vignetting::kOptical},
-                                                          {"none", Vignetting::kNone}};
-  s.vignetting = modes.at(p.Choice("vignetting", "full", {"full", "cos4", "aperture", "none"}));
+  s.vignetting = p.Choice("vignetting", Vignetting::kFull, kVignettingModes);
   s.transmission = p.Bool("transmission", true);
   s.far_clip = far_clip;
   if (p.Has("aperture_mask")) {
@@ -144,6 +145,33 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const Transform& to
   }
   WarnIfShiftedPastTheImageCircle(p, s, *camera);
   return camera;
+}
+
+SensorRegistry::PluginType RealisticSensorPlugin() {
+  return {"realistic",
+          {{"lens", PropType::kString},
+           {"focal_length", PropType::kFloat},
+           {"lens_model", kLensModels},
+           {"fnumber", PropType::kFloat},
+           {"aperture_diameter", PropType::kFloat},
+           {"blades", PropType::kInteger},
+           {"blade_curvature", PropType::kFloat},
+           {"blade_rotation", PropType::kFloat},
+           {"focus_point", PropType::kPoint},
+           {"focus_distance", PropType::kFloat},
+           {"sensor", PropType::kString},
+           {"sensor_width", PropType::kFloat},
+           {"sensor_height", PropType::kFloat},
+           {"shift_x", PropType::kFloat},
+           {"shift_y", PropType::kFloat},
+           {"metres_per_unit", PropType::kFloat},
+           {"exposure_scale", PropType::kFloat},
+           {"vignetting", kVignettingModes},
+           {"transmission", PropType::kBoolean},
+           {"aperture_mask", PropType::kString}},
+          [](const Properties& p, const SensorBase& b) {
+            return BuildLensCamera(p, b.to_world, b.width, b.height, b.far_clip);
+          }};
 }
 
 }  // namespace objektiv
