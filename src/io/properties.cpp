@@ -64,24 +64,15 @@ const Property* Properties::Find(const std::string& name, std::initializer_list<
 std::optional<ValueType> Properties::TypeOf(const std::string& name) const {
   const Property* p = Find(name);
   if (!p) return std::nullopt;
-  switch (p->data.index()) {
-    case 0:
-      return ValueType::kFloat;
-    case 1:
-      return ValueType::kInteger;
-    case 2:
-      return ValueType::kBoolean;
-    case 3:
-      return ValueType::kString;
-    case 4:
-      return p->type_name == "rgb" ? ValueType::kRgb : ValueType::kSpectrum;
-    case 5:
-      return p->type_name == "vector" ? ValueType::kVector : ValueType::kPoint;
-    case 6:
-      return ValueType::kTransform;
-    default:
-      return ValueType::kObject;
-  }
+  const PropertyData& d = p->data;
+  if (std::holds_alternative<double>(d)) return ValueType::kFloat;
+  if (std::holds_alternative<int64_t>(d)) return ValueType::kInteger;
+  if (std::holds_alternative<bool>(d)) return ValueType::kBoolean;
+  if (std::holds_alternative<std::string>(d)) return ValueType::kString;
+  if (std::holds_alternative<SpectrumValue>(d)) return p->type_name == "rgb" ? ValueType::kRgb : ValueType::kSpectrum;
+  if (std::holds_alternative<Vec3d>(d)) return p->type_name == "vector" ? ValueType::kVector : ValueType::kPoint;
+  if (std::holds_alternative<Transform>(d)) return ValueType::kTransform;
+  return ValueType::kObject;
 }
 
 Location Properties::LocOf(const std::string& name) const {
