@@ -10,6 +10,7 @@
 #include "optics/dispersion.h"
 #include "optics/focusing.h"
 #include "optics/lens_file.h"
+#include "optics/lens_setup.h"
 #include "optics/paraxial.h"
 #include "optics/real_ray_analysis.h"
 
@@ -53,14 +54,6 @@ int RunList() {
   return 0;
 }
 
-// The tracer every lens command analyses: film at the paraxial focus for an object at infinity at
-// `wavelength`, whatever back focus the file carries (pbrt files leave it at the last vertex).
-LensTracer TracerFocusedAtInfinity(const LensPrescription& lens, double wavelength) {
-  LensTracer tracer(lens);
-  tracer.SetBackFocus(ComputeParaxial(lens, wavelength).bfl);
-  return tracer;
-}
-
 int RunInfo(const LensArgs& a) {
   LensPrescription lens = LoadImagingLens(a.lens, a.wavelength);
   ParaxialData d = ComputeParaxial(lens, a.wavelength);
@@ -75,9 +68,9 @@ int RunInfo(const LensArgs& a) {
                                    a.lens, a.focus_m));
   }
   auto [sw, sh] = ParseSensor(a.sensor);
-  LensTracer tracer = TracerFocusedAtInfinity(lens, a.wavelength);
-  FieldOfView fov = SensorFieldOfView(tracer, sw, sh, a.wavelength);
-  double real_bfl = RealBackFocus(tracer, a.wavelength);
+  const LensSystem system = AtParaxialInfinityFocus(lens, a.wavelength);
+  FieldOfView fov = SensorFieldOfView(system, sw, sh, a.wavelength);
+  double real_bfl = RealBackFocus(system, a.wavelength);
   nlohmann::ordered_json j = {{"name", lens.name},
                               {"wavelength_nm", a.wavelength},
                               {"efl_mm", d.efl},
@@ -111,7 +104,7 @@ int RunInfo(const LensArgs& a) {
   if (focus) {
     j["focus_distance_m"] = a.focus_m;
     j["back_focus_mm"] = focus->back_focus;
-    j["object_distance_mm"] = focus->object_distance;
+    j["object_distance_mm"] = focus->object_to_first_vertex;
     j["magnification"] = focus->magnification;
     j["working_fnumber"] = focus->working_fnumber;
   }
@@ -137,21 +130,21 @@ int RunInfo(const LensArgs& a) {
   if (focus)
     std::printf("  focused at %.4g m from the film (unit focusing): back focus %.4f mm, object %.2f mm in front of the\n"
                 "  first vertex, magnification %.6f, working f-number %.3f\n",
-                a.focus_m, focus->back_focus, focus->object_distance, focus->magnification, focus->working_fnumber);
+                a.focus_m, focus->back_focus, focus->object_to_first_vertex, focus->magnification, focus->working_fnumber);
   return 0;
 }
 
 int RunAnalyze(const LensArgs& a) {
   LensPrescription lens = LoadImagingLens(a.lens, kLambdad);
-  WriteLensAnalysis(TracerFocusedAtInfinity(lens, kLambdad), a.output);
+  WriteLensAnalysis(AtParaxialInfinityFocus(lens), a.output);
   return 0;
 }
 
 int RunPlot(const LensArgs& a) {
   LensPrescription lens = LoadImagingLens(a.lens, a.wavelength);
-  LensTracer tracer = TracerFocusedAtInfinity(lens, a.wavelength);
-  std::vector<double> fields = a.fields.empty() ? DefaultFields(tracer, a.wavelength) : a.fields;
-  PlotLensLayout(tracer, fields, a.wavelength).Write(a.output);
+  const LensSystem system = AtParaxialInfinityFocus(lens, a.wavelength);
+  std::vector<double> fields = a.fields.empty() ? DefaultFields(system, a.wavelength) : a.fields;
+  PlotLensLayout(system, fields, a.wavelength).Write(a.output);
   return 0;
 }
 

@@ -25,18 +25,18 @@ std::vector<double> FieldSamples(double max_field, int n) {
   return f;
 }
 
-Svg SpotPlot(const LensTracer& tracer, const std::vector<double>& fields, nlohmann::ordered_json* json) {
+Svg SpotPlot(const LensSystem& lens, const std::vector<double>& fields, nlohmann::ordered_json* json) {
   const double lambdas[3] = {kF, kD, kC};
   const char* colours[3] = {"#1f5fd1", "#1a9e3a", "#d12f1f"};
   const double panel = 210, pad = 30;
   Svg svg(pad + 3 * panel + 20, 60 + fields.size() * panel + 40);
-  svg.Text({20, 26}, fmt::format("{}: spot diagrams (object at infinity)", tracer.lens().name), 15);
+  svg.Text({20, 26}, fmt::format("{}: spot diagrams (object at infinity)", lens.prescription().name), 15);
   // One scale for all panels: the largest spot sets it.
   std::vector<std::vector<Spot>> spots(fields.size());
   double extent = 1e-4;
   for (size_t f = 0; f < fields.size(); ++f)
     for (double l : lambdas) {
-      spots[f].push_back(SpotDiagram(tracer, fields[f], l, 31));
+      spots[f].push_back(SpotDiagram(lens, fields[f], l, 31));
       extent = std::max(extent, spots[f].back().geometric_radius * 1.1);
     }
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
@@ -69,23 +69,23 @@ Svg SpotPlot(const LensTracer& tracer, const std::vector<double>& fields, nlohma
 
 }  // namespace
 
-void WriteLensAnalysis(const LensTracer& tracer, const std::string& directory) {
+void WriteLensAnalysis(const LensSystem& lens, const std::string& directory) {
   namespace fs = std::filesystem;
   std::error_code ec;
   fs::create_directories(directory, ec);
   if (ec) throw InputError(fmt::format("{}: cannot create the directory: {}", directory, ec.message()));
-  const LensPrescription& lens = tracer.lens();
-  ParaxialData p = ComputeParaxial(lens, kD, tracer.StopSemiDiameter());
-  std::vector<double> fields3 = DefaultFields(tracer, kD);
+  const LensPrescription& rx = lens.prescription();
+  ParaxialData p = ComputeParaxial(rx, kD, lens.StopSemiDiameter());
+  std::vector<double> fields3 = DefaultFields(lens, kD);
   double max_field = fields3.back();
   // Absent values (rays that do not get through) are null.
   auto value = [](std::optional<double> v, double scale = 1) {
     return v ? nlohmann::ordered_json(*v * scale) : nlohmann::ordered_json(nullptr);
   };
   nlohmann::ordered_json json = {
-      {"name", lens.name}, {"efl_mm", p.efl}, {"bfl_mm", p.bfl}, {"fnumber", p.fnumber}, {"max_field_deg", max_field}};
+      {"name", rx.name}, {"efl_mm", p.efl}, {"bfl_mm", p.bfl}, {"fnumber", p.fnumber}, {"max_field_deg", max_field}};
 
-  SpotPlot(tracer, fields3, &json).Write((fs::path(directory) / "spots.svg").string());
+  SpotPlot(lens, fields3, &json).Write((fs::path(directory) / "spots.svg").string());
 
   std::vector<double> fields = FieldSamples(max_field, 24);
   PlotSeries dist{"distortion", "#1f5fd1", {}}, tan{"tangential", "#d12f1f", {}}, sag{"sagittal", "#1f5fd1", {}};
@@ -93,10 +93,10 @@ void WriteLensAnalysis(const LensTracer& tracer, const std::string& directory) {
   nlohmann::ordered_json field_rows = nlohmann::ordered_json::array();
   for (size_t i = 0; i < fields.size(); ++i) {
     double f = fields[i];
-    std::optional<double> d = f > 0 ? Distortion(tracer, p.efl, f, kD) : std::optional<double>(0.0);
-    std::optional<FieldCurvature> fc = FieldCurvatureAt(tracer, f, kD);
-    std::optional<double> r = RelativeIllumination(tracer, f, kD);
-    std::optional<double> hf = RealImageHeight(tracer, f, kF), hc = RealImageHeight(tracer, f, kC);
+    std::optional<double> d = f > 0 ? Distortion(lens, p.efl, f, kD) : std::optional<double>(0.0);
+    std::optional<FieldCurvature> fc = FieldCurvatureAt(lens, f, kD);
+    std::optional<double> r = RelativeIllumination(lens, f, kD);
+    std::optional<double> hf = RealImageHeight(lens, f, kF), hc = RealImageHeight(lens, f, kC);
     if (d) dist.points.push_back({f, *d * 100});
     if (fc) {
       tan.points.push_back({fc->tangential, f});
@@ -106,7 +106,7 @@ void WriteLensAnalysis(const LensTracer& tracer, const std::string& directory) {
     double c = std::cos(f * M_PI / 180);
     cos4.points.push_back({f, c * c * c * c});
     field_rows.push_back({{"field_deg", f},
-                          {"image_height_mm", value(RealImageHeight(tracer, f, kD))},
+                          {"image_height_mm", value(RealImageHeight(lens, f, kD))},
                           {"paraxial_image_height_mm", p.efl * std::tan(f * M_PI / 180)},
                           {"distortion_percent", value(d, 100)},
                           {"tangential_focus_mm", value(fc ? std::optional(fc->tangential) : std::nullopt)},
@@ -115,11 +115,11 @@ void WriteLensAnalysis(const LensTracer& tracer, const std::string& directory) {
                           {"lateral_colour_um", value(hf && hc ? std::optional(*hf - *hc) : std::nullopt, 1000)}});
   }
   json["fields"] = std::move(field_rows);
-  LinePlot(lens.name + ": distortion", "field angle (deg)", "distortion (%)", {dist})
+  LinePlot(rx.name + ": distortion", "field angle (deg)", "distortion (%)", {dist})
       .Write((fs::path(directory) / "distortion.svg").string());
-  LinePlot(lens.name + ": field curvature", "focus relative to the film (mm)", "field angle (deg)", {tan, sag})
+  LinePlot(rx.name + ": field curvature", "focus relative to the film (mm)", "field angle (deg)", {tan, sag})
       .Write((fs::path(directory) / "field_curvature.svg").string());
-  LinePlot(lens.name + ": relative illumination", "field angle (deg)", "relative illumination", {ri, cos4})
+  LinePlot(rx.name + ": relative illumination", "field angle (deg)", "relative illumination", {ri, cos4})
       .Write((fs::path(directory) / "relative_illumination.svg").string());
 
   // Axial colour: paraxial focus against wavelength, relative to the d line's, and the
@@ -127,12 +127,12 @@ void WriteLensAnalysis(const LensTracer& tracer, const std::string& directory) {
   PlotSeries axial{"paraxial focus shift", "#a31fd1", {}};
   nlohmann::ordered_json colour_rows = nlohmann::ordered_json::array();
   for (int l = 400; l <= 700; l += 10) {
-    double shift = ComputeParaxial(lens, l, tracer.StopSemiDiameter()).bfl - p.bfl;
+    double shift = ComputeParaxial(rx, l, lens.StopSemiDiameter()).bfl - p.bfl;
     axial.points.push_back({shift, double(l)});
     colour_rows.push_back({{"wavelength_nm", l}, {"focus_shift_mm", shift}});
   }
   json["axial_colour"] = std::move(colour_rows);
-  LinePlot(lens.name + ": axial colour", "focus shift from the d-line focus (mm)", "wavelength (nm)", {axial})
+  LinePlot(rx.name + ": axial colour", "focus shift from the d-line focus (mm)", "wavelength (nm)", {axial})
       .Write((fs::path(directory) / "axial_colour.svg").string());
 
   const double lambdas[3] = {kF, kD, kC};
@@ -143,16 +143,16 @@ void WriteLensAnalysis(const LensTracer& tracer, const std::string& directory) {
     PlotSeries s{fmt::format("{:.0f} nm", lambdas[w]), colours[w], {}};
     for (int k = 1; k <= 20; ++k) {
       double h = p.entrance_pupil_diameter / 2 * k / 20;
-      std::optional<double> a = LongitudinalAberration(tracer, h, lambdas[w]);
+      std::optional<double> a = LongitudinalAberration(lens, h, lambdas[w]);
       // Relative to the d-line paraxial focus, so the curves also show axial colour.
-      double shift = ComputeParaxial(lens, lambdas[w], tracer.StopSemiDiameter()).bfl - p.bfl;
+      double shift = ComputeParaxial(rx, lambdas[w], lens.StopSemiDiameter()).bfl - p.bfl;
       if (a) s.points.push_back({*a + shift, double(k) / 20});
       if (a) lsa_rows.push_back({{"wavelength_nm", lambdas[w]}, {"pupil", double(k) / 20}, {"focus_mm", *a + shift}});
     }
     lsa.push_back(s);
   }
   json["longitudinal_aberration"] = std::move(lsa_rows);
-  LinePlot(lens.name + ": longitudinal aberration", "focus relative to the d-line paraxial focus (mm)",
+  LinePlot(rx.name + ": longitudinal aberration", "focus relative to the d-line paraxial focus (mm)",
            "pupil height (relative)", lsa)
       .Write((fs::path(directory) / "longitudinal_aberration.svg").string());
 

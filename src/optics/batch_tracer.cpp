@@ -16,18 +16,18 @@ constexpr float kTableMin = 360.f, kTableMax = 830.f;
 constexpr int kTableSize = 471;  // 1 nm steps
 }  // namespace
 
-BatchLensTracer::BatchLensTracer(const LensTracer& tracer)
-    : film_z_(float(tracer.FilmZ())), stop_shape_(tracer.stop_shape()), stop_semi_(float(tracer.StopSemiDiameter())) {
-  const LensPrescription& lens = tracer.lens();
+BatchLensTracer::BatchLensTracer(const LensSystem& lens_system)
+    : film_z_(float(lens_system.FilmZ())), stop_shape_(lens_system.stop_shape()), stop_semi_(float(lens_system.StopSemiDiameter())) {
+  const LensPrescription& lens = lens_system.prescription();
   index_tables_.push_back(std::vector<float>(kTableSize, 1.f));  // air
   absorption_tables_.push_back(std::vector<float>(kTableSize, 0.f));
   for (size_t i = 0; i < lens.surfaces.size(); ++i) {
     const LensSurface& s = lens.surfaces[i];
     Surface f;
-    f.z = float(tracer.VertexZ(int(i)));
+    f.z = float(lens_system.VertexZ(int(i)));
     f.c = float(s.Curvature());
     f.k1 = float(1 + s.conic);
-    double semi = s.is_stop ? tracer.StopSemiDiameter() : s.semi_diameter;
+    double semi = s.is_stop ? lens_system.StopSemiDiameter() : s.semi_diameter;
     f.semi2 = float(semi * semi);
     f.plane = f.c == 0;
     f.aspheric = s.HasAsphericTerms();
@@ -62,12 +62,6 @@ BatchLensTracer::BatchLensTracer(const LensTracer& tracer)
 void BatchLensTracer::IgnoreRims() {
   for (Surface& s : surfaces_)
     if (!s.is_stop) s.semi2 = INFINITY;
-}
-
-BatchLensTracer BatchLensTracer::WithStopShape(const StopShape& shape) const {
-  BatchLensTracer t = *this;
-  t.stop_shape_ = shape;
-  return t;
 }
 
 void BatchLensTracer::TraceFromFilm(RayBatch& rays, bool transmission) const { Trace(rays, true, transmission); }

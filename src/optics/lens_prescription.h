@@ -32,6 +32,9 @@ struct LensSurface {
     return false;
   }
   double IndexAfter(double lambda_nm) const { return medium ? medium->Index(lambda_nm) : 1.0; }
+  // Sag z(r) relative to the vertex (conic plus even aspheric terms), and dz/dr.
+  double Sag(double r) const;
+  double SagSlope(double r) const;
 };
 
 struct LensPrescription {

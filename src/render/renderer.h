@@ -1,4 +1,5 @@
-// Renders an image: tiles over TBB, each pixel's samples in index order (deterministic).
+// Renders an image: the crop window in tiles over TBB, each tile a block of work for the
+// integrator (render/block_context.h); progress, the stop flag and statistics are kept here.
 #pragma once
 #include <atomic>
 #include <cstdint>
