@@ -64,6 +64,25 @@ TEST(Properties, TellsAValuesType) {
   EXPECT_EQ(p.TypeOf("k"), std::nullopt);
 }
 
+TEST(Properties, TellsEveryValueTypeAsWritten) {
+  SceneDocument doc = ParseSceneString(
+      R"(<scene><bsdf type="t"><float name="f" value="1"/><integer name="i" value="1"/>
+      <boolean name="b" value="true"/><string name="s" value="x"/><rgb name="c" value="1 0 0"/>
+      <spectrum name="l" value="0.5"/><point name="p" value="1 2 3"/><vector name="v" value="0 0 1"/>
+      <transform name="m"><translate x="1"/></transform><texture name="o" type="checkerboard"/></bsdf></scene>)",
+      "x.xml", {});
+  const std::vector<std::pair<std::string, ValueType>> expected = {
+      {"f", ValueType::kFloat},    {"i", ValueType::kInteger}, {"b", ValueType::kBoolean},
+      {"s", ValueType::kString},   {"c", ValueType::kRgb},     {"l", ValueType::kSpectrum},
+      {"p", ValueType::kPoint},    {"v", ValueType::kVector},  {"m", ValueType::kTransform},
+      {"o", ValueType::kObject}};
+  std::vector<PropertyDecl> decls;
+  for (const auto& [name, type] : expected) decls.push_back({name, PropType::kString});
+  ASSERT_EQ(doc.root->children.size(), 1u);
+  Properties p(*doc.root->children[0], kNone, decls);
+  for (const auto& [name, type] : expected) EXPECT_EQ(p.TypeOf(name), type) << name;
+}
+
 TEST(Properties, ChoiceGivesTheValueOrListsTheChoices) {
   const std::vector<PropertyDecl> decls = {{"fruit", kFruits}};
   EXPECT_EQ(decls[0].choices, (std::vector<std::string>{"apple", "pear"}));
