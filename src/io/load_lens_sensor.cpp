@@ -97,10 +97,8 @@ void WarnIfShiftedPastTheImageCircle(const Properties& p, const LensCameraSettin
                at.file, at.line, s.shift.x, s.shift.y, corner, circle);
 }
 
-}  // namespace
-
-std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const Transform& to_world, int width, int height,
-                                        float far_clip) {
+// The camera a <sensor type="realistic"> describes.
+std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b) {
   LensCameraSpec spec;
   spec.lens = LoadSceneLens(p);
   // The prescription scaled as a whole to another focal length (radii, thicknesses, apertures).
@@ -121,14 +119,14 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const Transform& to
   }
   spec.focus_distance = p.FloatIn("focus_distance", INFINITY, 1e-6, INFINITY);
   LensCameraSettings& s = spec.settings;
-  Vec2d sensor = SensorSize(p, width, height);
+  Vec2d sensor = SensorSize(p, b.width, b.height);
   s.sensor_width = sensor.x, s.sensor_height = sensor.y;
   s.shift = Vec2d(p.FloatIn("shift_x", 0, -1e4, 1e4), p.FloatIn("shift_y", 0, -1e4, 1e4));
   s.metres_per_unit = p.FloatIn("metres_per_unit", 1, 1e-12, 1e12);
   s.exposure_scale = p.FloatIn("exposure_scale", 1, 0, 1e30);
   s.vignetting = p.Choice("vignetting", Vignetting::kFull, kVignettingModes);
   s.transmission = p.Bool("transmission", true);
-  s.far_clip = far_clip;
+  s.far_clip = b.far_clip;
   if (p.Has("aperture_mask")) {
     std::string path = ResolvePath(p.LocOf("aperture_mask"), p.String("aperture_mask"));
     try {
@@ -139,13 +137,15 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const Transform& to
   }
   std::unique_ptr<Camera> camera;
   try {
-    camera = MakeLensCamera(to_world, width, height, spec);
+    camera = MakeLensCamera(b.to_world, b.width, b.height, spec);
   } catch (const InputError& e) {
     throw ErrorAt(p.loc(), "{}", e.what());
   }
   WarnIfShiftedPastTheImageCircle(p, s, *camera);
   return camera;
 }
+
+}  // namespace
 
 SensorRegistry::PluginType RealisticSensorPlugin() {
   return {"realistic",
@@ -169,9 +169,7 @@ SensorRegistry::PluginType RealisticSensorPlugin() {
            {"vignetting", kVignettingModes},
            {"transmission", PropType::kBoolean},
            {"aperture_mask", PropType::kString}},
-          [](const Properties& p, const SensorBase& b) {
-            return BuildLensCamera(p, b.to_world, b.width, b.height, b.far_clip);
-          }};
+          BuildLensCamera};
 }
 
 }  // namespace objektiv

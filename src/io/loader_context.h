@@ -82,9 +82,7 @@ const MaterialRegistry& MaterialPlugins();
 const TextureRegistry& TexturePlugins();
 const EmitterRegistry& EmitterPlugins();
 
-// <sensor type="realistic"> (a lens prescription, load_lens_sensor.cpp), and the camera it makes.
+// <sensor type="realistic">: a camera with a real lens prescription (load_lens_sensor.cpp).
 SensorRegistry::PluginType RealisticSensorPlugin();
-std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const Transform& to_world, int width, int height,
-                                        float far_clip);
 
 }  // namespace objektiv
