@@ -37,7 +37,7 @@ TEST(Snell, TotalInternalReflectionBeyondTheCriticalAngle) {
 
 TEST(Fresnel, NormalIncidenceAndBrewsterAngle) {
   for (float n : {1.33f, 1.5f, 2.4f}) {
-    EXPECT_NEAR(FresnelDielectric(1, n), Sqr((n - 1) / (n + 1)), 1e-6);
+    EXPECT_NEAR(FresnelDielectric(1.f, n), Sqr((n - 1) / (n + 1)), 1e-6);
     // At Brewster's angle p-polarised light is fully transmitted: R = Rs / 2.
     float tb = std::atan(n), ci = std::cos(tb), st = std::sin(tb) / n, ct = std::sqrt(1 - st * st);
     float rs = Sqr((ci - n * ct) / (ci + n * ct));

@@ -291,7 +291,7 @@ TEST(Focusing, UnitFocusObeysNewtonsEquation) {
 
 TEST(Focusing, ScalingKeepsTheFNumberAndHitsTheFocalLength) {
   LensPrescription lens = LoadLens("tessar.brendel.100mm");
-  LensPrescription s = ScaleToFocalLength(lens, 35);
+  LensPrescription s = ScaledToFocalLength(lens, 35);
   ParaxialData a = ComputeParaxial(lens), b = ComputeParaxial(s);
   EXPECT_NEAR(b.efl, 35, 1e-9);
   EXPECT_NEAR(b.fnumber, a.fnumber, 1e-9);
@@ -299,7 +299,7 @@ TEST(Focusing, ScalingKeepsTheFNumberAndHitsTheFocalLength) {
   // Aspheric terms scale so that the sag scales with the lens.
   LensPrescription asph = ParseNativeLens("stop 1 air 4\nsurface 50 5 N-BK7 10 k=-0.5 a4=1e-5 a6=-1e-8\n"
                                           "surface inf 40 air 10\n", "a.lens");
-  EXPECT_NEAR(ScaleLens(asph, 3).surfaces[1].Sag(3 * 7.0), 3 * asph.surfaces[1].Sag(7.0), 1e-12);
+  EXPECT_NEAR(asph.Scaled(3).surfaces[1].Sag(3 * 7.0), 3 * asph.surfaces[1].Sag(7.0), 1e-12);
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ namespace {
 struct LensArgs {
   std::string lens, output;
   std::vector<double> fields;
-  double wavelength = 587.5618;
+  double wavelength = kLambdad;
   double focus_m = 0;  // 0: infinity
   std::string sensor = "36x24";
   bool json = false;

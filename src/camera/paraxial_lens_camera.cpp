@@ -12,7 +12,7 @@ namespace objektiv {
 ParaxialLensModel MakeParaxialModel(const LensSystem& lens, double distance_from_film, bool thin) {
   const LensPrescription& rx = lens.prescription();
   const int last = int(rx.surfaces.size()) - 1;
-  ParaxialData p = ComputeParaxial(rx, kLambdad, lens.StopSemiDiameter());
+  const ParaxialData& p = lens.paraxial();
   const bool infinite = !(distance_from_film < 1e12);
   ParaxialLensModel m;
   m.efl = p.efl;

@@ -37,7 +37,7 @@ RealisticCamera::RealisticCamera(const Transform& to_world, int width, int heigh
     : LensCamera(to_world, width, height, settings), fast_(MakeFastTracer(lens, settings.vignetting)),
       bounds_(lens, FilmRadius(), BoundsOptions(lens, settings.vignetting)), film_z_(lens.FilmZ()),
       stop_radius_(float(lens.StopSemiDiameter())), dispersive_(IsDispersive(lens.prescription())) {
-  ParaxialData p = ComputeParaxial(lens.prescription(), kLambdad, lens.StopSemiDiameter());
+  const ParaxialData& p = lens.paraxial();
   SetOriginZ(lens.VertexZ(0) + p.entrance_pupil_position);
 }
 

@@ -9,6 +9,7 @@
 #include "base/error.h"
 #include "base/output_file.h"
 #include "io/lens_plot.h"
+#include "optics/dispersion.h"
 #include "io/line_plot.h"
 #include "optics/paraxial.h"
 #include "optics/real_ray_analysis.h"
@@ -17,7 +18,6 @@ namespace objektiv {
 
 namespace {
 
-constexpr double kF = 486.1327, kD = 587.5618, kC = 656.2725;
 
 std::vector<double> FieldSamples(double max_field, int n) {
   std::vector<double> f;
@@ -26,7 +26,7 @@ std::vector<double> FieldSamples(double max_field, int n) {
 }
 
 Svg SpotPlot(const LensSystem& lens, const std::vector<double>& fields, nlohmann::ordered_json* json) {
-  const double lambdas[3] = {kF, kD, kC};
+  const double lambdas[3] = {kLambdaF, kLambdad, kLambdaC};
   const char* colours[3] = {"#1f5fd1", "#1a9e3a", "#d12f1f"};
   const double panel = 210, pad = 30;
   Svg svg(pad + 3 * panel + 20, 60 + fields.size() * panel + 40);
@@ -75,8 +75,8 @@ void WriteLensAnalysis(const LensSystem& lens, const std::string& directory) {
   fs::create_directories(directory, ec);
   if (ec) throw InputError(fmt::format("{}: cannot create the directory: {}", directory, ec.message()));
   const LensPrescription& rx = lens.prescription();
-  ParaxialData p = ComputeParaxial(rx, kD, lens.StopSemiDiameter());
-  std::vector<double> fields3 = DefaultFields(lens, kD);
+  const ParaxialData& p = lens.paraxial();
+  std::vector<double> fields3 = DefaultFields(lens, kLambdad);
   double max_field = fields3.back();
   // Absent values (rays that do not get through) are null.
   auto value = [](std::optional<double> v, double scale = 1) {
@@ -93,10 +93,10 @@ void WriteLensAnalysis(const LensSystem& lens, const std::string& directory) {
   nlohmann::ordered_json field_rows = nlohmann::ordered_json::array();
   for (size_t i = 0; i < fields.size(); ++i) {
     double f = fields[i];
-    std::optional<double> d = f > 0 ? Distortion(lens, p.efl, f, kD) : std::optional<double>(0.0);
-    std::optional<FieldCurvature> fc = FieldCurvatureAt(lens, f, kD);
-    std::optional<double> r = RelativeIllumination(lens, f, kD);
-    std::optional<double> hf = RealImageHeight(lens, f, kF), hc = RealImageHeight(lens, f, kC);
+    std::optional<double> d = f > 0 ? Distortion(lens, p.efl, f, kLambdad) : std::optional<double>(0.0);
+    std::optional<FieldCurvature> fc = FieldCurvatureAt(lens, f, kLambdad);
+    std::optional<double> r = RelativeIllumination(lens, f, kLambdad);
+    std::optional<double> hf = RealImageHeight(lens, f, kLambdaF), hc = RealImageHeight(lens, f, kLambdaC);
     if (d) dist.points.push_back({f, *d * 100});
     if (fc) {
       tan.points.push_back({fc->tangential, f});
@@ -106,7 +106,7 @@ void WriteLensAnalysis(const LensSystem& lens, const std::string& directory) {
     double c = std::cos(f * M_PI / 180);
     cos4.points.push_back({f, c * c * c * c});
     field_rows.push_back({{"field_deg", f},
-                          {"image_height_mm", value(RealImageHeight(lens, f, kD))},
+                          {"image_height_mm", value(RealImageHeight(lens, f, kLambdad))},
                           {"paraxial_image_height_mm", p.efl * std::tan(f * M_PI / 180)},
                           {"distortion_percent", value(d, 100)},
                           {"tangential_focus_mm", value(fc ? std::optional(fc->tangential) : std::nullopt)},
@@ -127,7 +127,7 @@ void WriteLensAnalysis(const LensSystem& lens, const std::string& directory) {
   PlotSeries axial{"paraxial focus shift", "#a31fd1", {}};
   nlohmann::ordered_json colour_rows = nlohmann::ordered_json::array();
   for (int l = 400; l <= 700; l += 10) {
-    double shift = ComputeParaxial(rx, l, lens.StopSemiDiameter()).bfl - p.bfl;
+    double shift = lens.Paraxial(l).bfl - p.bfl;
     axial.points.push_back({shift, double(l)});
     colour_rows.push_back({{"wavelength_nm", l}, {"focus_shift_mm", shift}});
   }
@@ -135,7 +135,7 @@ void WriteLensAnalysis(const LensSystem& lens, const std::string& directory) {
   LinePlot(rx.name + ": axial colour", "focus shift from the d-line focus (mm)", "wavelength (nm)", {axial})
       .Write((fs::path(directory) / "axial_colour.svg").string());
 
-  const double lambdas[3] = {kF, kD, kC};
+  const double lambdas[3] = {kLambdaF, kLambdad, kLambdaC};
   const char* colours[3] = {"#1f5fd1", "#1a9e3a", "#d12f1f"};
   std::vector<PlotSeries> lsa;
   nlohmann::ordered_json lsa_rows = nlohmann::ordered_json::array();
@@ -145,7 +145,7 @@ void WriteLensAnalysis(const LensSystem& lens, const std::string& directory) {
       double h = p.entrance_pupil_diameter / 2 * k / 20;
       std::optional<double> a = LongitudinalAberration(lens, h, lambdas[w]);
       // Relative to the d-line paraxial focus, so the curves also show axial colour.
-      double shift = ComputeParaxial(rx, lambdas[w], lens.StopSemiDiameter()).bfl - p.bfl;
+      double shift = lens.Paraxial(lambdas[w]).bfl - p.bfl;
       if (a) s.points.push_back({*a + shift, double(k) / 20});
       if (a) lsa_rows.push_back({{"wavelength_nm", lambdas[w]}, {"pupil", double(k) / 20}, {"focus_mm", *a + shift}});
     }

@@ -11,7 +11,7 @@
 namespace objektiv {
 
 std::vector<double> DefaultFields(const LensSystem& lens, double lambda_nm) {
-  ParaxialData p = ComputeParaxial(lens.prescription(), lambda_nm);
+  ParaxialData p = lens.Paraxial(lambda_nm);
   double max_field = std::atan(21.63 / std::abs(p.efl)) * 180 / M_PI;
   while (max_field > 0.5 && !RealImageHeight(lens, max_field, lambda_nm)) max_field *= 0.95;
   return {0.0, 0.7 * max_field, max_field};
@@ -20,7 +20,7 @@ std::vector<double> DefaultFields(const LensSystem& lens, double lambda_nm) {
 Svg PlotLensLayout(const LensSystem& lens, const std::vector<double>& fields, double lambda_nm) {
   const LensPrescription& rx = lens.prescription();
   const int n = int(rx.surfaces.size());
-  ParaxialData p = ComputeParaxial(rx, lambda_nm, lens.StopSemiDiameter());
+  ParaxialData p = lens.Paraxial(lambda_nm);
   double max_semi = 0;
   for (const LensSurface& s : rx.surfaces) max_semi = std::max(max_semi, s.semi_diameter);
   // The drawing spans the elements and the image of the largest field on the film.

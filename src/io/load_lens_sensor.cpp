@@ -8,7 +8,7 @@
 #include "camera/realistic_camera.h"
 #include "io/image_io.h"
 #include "io/loader_context.h"
-#include "optics/focusing.h"
+#include "optics/paraxial.h"
 #include "optics/lens_file.h"
 
 namespace objektiv {
@@ -102,7 +102,7 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b
   LensCameraSpec spec;
   spec.lens = LoadSceneLens(p);
   // The prescription scaled as a whole to another focal length (radii, thicknesses, apertures).
-  if (p.Has("focal_length")) spec.lens = ScaleToFocalLength(spec.lens, p.FloatIn("focal_length", 50, 1e-3, 1e6));
+  if (p.Has("focal_length")) spec.lens = ScaledToFocalLength(spec.lens, p.FloatIn("focal_length", 50, 1e-3, 1e6));
   spec.model = p.Choice("lens_model", LensModel::kReal, kLensModels);
   if (p.Has("fnumber") && p.Has("aperture_diameter"))
     throw ErrorAt(p.LocOf("aperture_diameter"), "give either fnumber or aperture_diameter, not both");

@@ -75,27 +75,4 @@ std::optional<FocusSolution> FocusAtDistance(const LensPrescription& lens, doubl
   return f;
 }
 
-LensPrescription ScaleLens(const LensPrescription& lens, double factor) {
-  LensPrescription out = lens;
-  for (LensSurface& s : out.surfaces) {
-    s.radius *= factor;
-    s.thickness *= factor;
-    s.semi_diameter *= factor;
-    // z = a r^2k scales as z' = factor z at r' = factor r: a' = a / factor^(2k - 1).
-    s.a2 /= factor;
-    double scale = factor * factor * factor;  // 2k - 1 = 3 for a4
-    for (double& a : s.aspheric) {
-      a /= scale;
-      scale *= factor * factor;
-    }
-  }
-  if (out.design_focal_length > 0) out.design_focal_length *= factor;
-  if (out.image_circle > 0) out.image_circle *= factor;
-  return out;
-}
-
-LensPrescription ScaleToFocalLength(const LensPrescription& lens, double focal_length) {
-  return ScaleLens(lens, focal_length / ComputeParaxial(lens).efl);
-}
-
 }  // namespace objektiv

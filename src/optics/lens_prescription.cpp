@@ -63,4 +63,22 @@ void CheckReachable(const LensSurface& s, const std::string& path, int line) {
     throw MakeInputError(path, line, "semi-diameter {} is larger than the surface can reach ({:.4g})", s.semi_diameter, limit);
 }
 
+LensPrescription LensPrescription::Scaled(double factor) const {
+  LensPrescription out = *this;
+  for (LensSurface& s : out.surfaces) {
+    s.radius *= factor;
+    s.thickness *= factor;
+    s.semi_diameter *= factor;
+    s.a2 /= factor;
+    double scale = factor * factor * factor;  // 2k - 1 = 3 for a4
+    for (double& a : s.aspheric) {
+      a /= scale;
+      scale *= factor * factor;
+    }
+  }
+  if (out.design_focal_length > 0) out.design_focal_length *= factor;
+  if (out.image_circle > 0) out.image_circle *= factor;
+  return out;
+}
+
 }  // namespace objektiv

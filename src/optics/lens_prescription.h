@@ -44,6 +44,10 @@ struct LensPrescription {
 
   int StopIndex() const;  // -1 if none
   double TotalTrack() const;  // first vertex to the last (without the distance to the film)
+  // The same lens `factor` times larger: radii, thicknesses, apertures, the metadata lengths
+  // and the aspheric terms (a sag a r^2k scales to factor a r^2k at factor r, so a' = a /
+  // factor^(2k - 1)).
+  LensPrescription Scaled(double factor) const;
 };
 
 // Throws InputError "PATH:LINE: ..." if the surface's semi-diameter lies beyond the largest a

@@ -28,6 +28,10 @@ void LensSystem::SetStopSemiDiameter(double mm) {
   paraxial_ = ComputeParaxial(prescription_, kLambdad, stop_semi_);
 }
 
+ParaxialData LensSystem::Paraxial(double lambda_nm) const {
+  return lambda_nm == kLambdad ? paraxial_ : ComputeParaxial(prescription_, lambda_nm, stop_semi_);
+}
+
 bool LensSystem::InsideStop(double x, double y) const {
   if (x * x + y * y > stop_semi_ * stop_semi_) return false;
   return stop_shape_.IsRound() || stop_shape_.Contains(x / stop_semi_, y / stop_semi_);

@@ -44,6 +44,8 @@ class LensSystem {
 
   // First-order data at the d line, object at infinity, for the stop as set.
   const ParaxialData& paraxial() const { return paraxial_; }
+  // The same at another wavelength (computed on each call; the d line's is kept).
+  ParaxialData Paraxial(double lambda_nm) const;
   // Lens-space z of the entrance and exit pupils (paraxial, d line).
   double EntrancePupilZ() const { return vertex_z_.front() + paraxial_.entrance_pupil_position; }
   double ExitPupilZ() const { return vertex_z_.back() + paraxial_.exit_pupil_position; }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "base/fresnel_dielectric.h"
+
 namespace objektiv {
 
 std::optional<Vec3d> StopCrossingFromFilm(const LensSystem& lens, const LensRay& ray, double lambda_nm) {
@@ -18,13 +20,7 @@ std::optional<Vec3d> StopCrossingFromFilm(const LensSystem& lens, const LensRay&
 }
 
 double FresnelReflectance(double n1, double n2, double cos_i) {
-  cos_i = std::clamp(cos_i, 0.0, 1.0);
-  double eta = n1 / n2, sin2_t = eta * eta * (1 - cos_i * cos_i);
-  if (sin2_t >= 1) return 1;
-  double cos_t = std::sqrt(1 - sin2_t);
-  double rs = (n1 * cos_i - n2 * cos_t) / (n1 * cos_i + n2 * cos_t);
-  double rp = (n2 * cos_i - n1 * cos_t) / (n2 * cos_i + n1 * cos_t);
-  return 0.5 * (rs * rs + rp * rp);
+  return FresnelDielectric(std::clamp(cos_i, 0.0, 1.0), n2 / n1);
 }
 
 namespace {

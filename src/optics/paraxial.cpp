@@ -84,4 +84,8 @@ ParaxialData ComputeParaxial(const LensPrescription& lens, double lambda_nm, dou
   return d;
 }
 
+LensPrescription ScaledToFocalLength(const LensPrescription& lens, double focal_length) {
+  return lens.Scaled(focal_length / ComputeParaxial(lens).efl);
+}
+
 }  // namespace objektiv

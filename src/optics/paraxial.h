@@ -1,5 +1,6 @@
 // First-order (paraxial) optics of a prescription, by y-nu ray tracing at one wavelength.
 #pragma once
+#include "optics/dispersion.h"
 #include "optics/lens_prescription.h"
 
 namespace objektiv {
@@ -20,6 +21,9 @@ struct ParaxialData {
 
 // Object at infinity. Surfaces are refracted with their indices at lambda_nm.
 // stop_semi_diameter < 0: the prescription's stop.
-ParaxialData ComputeParaxial(const LensPrescription& lens, double lambda_nm = 587.5618, double stop_semi_diameter = -1);
+ParaxialData ComputeParaxial(const LensPrescription& lens, double lambda_nm = kLambdad, double stop_semi_diameter = -1);
+
+// The lens scaled so that its paraxial EFL at the d line is `focal_length` mm.
+LensPrescription ScaledToFocalLength(const LensPrescription& lens, double focal_length);
 
 }  // namespace objektiv

@@ -52,7 +52,7 @@ class PupilBounds::Builder {
     // Sample on the exit pupil's plane: light from every film point passes the same image of
     // the stop there, trimmed slowly by vignetting, so the region changes little across an
     // annulus (on the rear vertex plane it slides with the film position).
-    ParaxialData p = ComputeParaxial(lens, lambdas_.front(), lens_system.StopSemiDiameter());
+    ParaxialData p = lens_system.Paraxial(lambdas_.front());
     t_.rear_z_ = lens_system.VertexZ(last) + p.exit_pupil_position;
     // The window searched: wide enough for the rear element and the exit pupil; the edge's
     // tolerance a thousandth of the region's size (its first estimate: the exit pupil).

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "optics/dispersion.h"
 #include "base/convex_polygon.h"
 #include "base/vec.h"
 #include "optics/lens_system.h"
@@ -30,7 +31,7 @@ struct PupilBoundsOptions {
   int bins = 128;  // radial film bins (half as many for an opening that is not round)
   // A probe passes if it passes at any of these wavelengths: a dispersive lens's pupil
   // changes a little with wavelength, and the bound must hold the light of every one.
-  std::vector<double> wavelengths = {587.5618};
+  std::vector<double> wavelengths = {kLambdad};
   bool rims = true;  // false: only the stop clips (a lens without optical vignetting)
 };
 

@@ -9,7 +9,7 @@ namespace objektiv {
 namespace {
 LensSystem AtInfinityFocus(const LensSystem& lens, double lambda_nm) {
   LensSystem t = lens;
-  t.SetBackFocus(ComputeParaxial(t.prescription(), lambda_nm, t.StopSemiDiameter()).bfl);
+  t.SetBackFocus(t.Paraxial(lambda_nm).bfl);
   return t;
 }
 

@@ -5,16 +5,17 @@
 #pragma once
 #include <optional>
 
+#include "optics/dispersion.h"
 #include "optics/lens_tracer.h"
 
 namespace objektiv {
 
 // With the tracer's stop as it is (film at the paraxial infinity focus).
-double RealFNumber(const LensSystem& lens, double lambda_nm = 587.5618);
+double RealFNumber(const LensSystem& lens, double lambda_nm = kLambdad);
 
 // The stop semi-diameter that gives f-number `fnumber`; nothing if the cone cannot reach the
 // stop (a rim behind it cuts it first) or needs a stop larger than the lens's.
 std::optional<double> StopSemiDiameterForFNumber(const LensSystem& lens, double fnumber,
-                                                 double lambda_nm = 587.5618);
+                                                 double lambda_nm = kLambdad);
 
 }  // namespace objektiv

@@ -97,7 +97,7 @@ LensFocus ParaxialFocus(const LensPrescription& rx, double distance_from_film, d
 
 LensFocus FocusLens(const LensSystem& lens, double distance_from_film, double lambda_nm) {
   const LensPrescription& rx = lens.prescription();
-  ParaxialData p = ComputeParaxial(rx, lambda_nm, lens.StopSemiDiameter());
+  ParaxialData p = lens.Paraxial(lambda_nm);
   LensFocus focus = ParaxialFocus(rx, distance_from_film, lambda_nm);
   const bool infinite = std::isinf(focus.plane_of_focus_to_film);
   // Real rays: the object stays at its distance from the film while the lens moves, so the

@@ -4,6 +4,7 @@
 #pragma once
 #include <string>
 
+#include "optics/dispersion.h"
 #include "optics/lens_tracer.h"
 
 namespace objektiv {
@@ -18,14 +19,14 @@ struct LensFocus {
 
 // `distance_from_film` in mm; infinity (or anything beyond 1e12) focuses at infinity.
 // Never fails: too close gives the closest focus, too few real rays the paraxial focus.
-LensFocus FocusLens(const LensSystem& lens, double distance_from_film, double lambda_nm = 587.5618);
+LensFocus FocusLens(const LensSystem& lens, double distance_from_film, double lambda_nm = kLambdad);
 
 // The paraxial part of the above: the back focus that images the object sharp by first-order
 // optics (the closest focus if it is too close).
-LensFocus ParaxialFocus(const LensPrescription& lens, double distance_from_film, double lambda_nm = 587.5618);
+LensFocus ParaxialFocus(const LensPrescription& lens, double distance_from_film, double lambda_nm = kLambdad);
 
 // The film-to-object distance of the closest focus by unit focusing (paraxial, mm).
-double ClosestFocusDistance(const LensPrescription& lens, double lambda_nm = 587.5618);
+double ClosestFocusDistance(const LensPrescription& lens, double lambda_nm = kLambdad);
 
 // One line for the log: where the lens went and how it was found.
 std::string DescribeFocus(const LensFocus& focus, double infinity_back_focus);

@@ -35,7 +35,7 @@ std::optional<LensRay> ChiefRay(const LensSystem& lens, double field_deg, double
   LensSystem front = Unclipped(lens, lens.prescription().StopIndex());
   auto make = [&](double y) { return LensRay{{0, y, kStartZ}, {0, std::sin(theta), std::cos(theta)}}; };
   // Secant iteration from the paraxial entrance pupil.
-  ParaxialData p = ComputeParaxial(lens.prescription(), lambda_nm);
+  ParaxialData p = lens.Paraxial(lambda_nm);
   double y_a = -std::tan(theta) * (p.entrance_pupil_position - kStartZ), y_b = y_a + 1e-3;
   std::optional<double> h_a = HeightAtStop(front, theta, y_a, lambda_nm), h_b = HeightAtStop(front, theta, y_b, lambda_nm);
   for (int it = 0; it < 60 && h_a && h_b && *h_b != *h_a; ++it) {
@@ -122,14 +122,14 @@ Beam TraceBeam(const LensSystem& lens, double field_deg, double lambda_nm, doubl
 double BeamCentre(const LensSystem& lens, double field_deg, double lambda_nm) {
   std::optional<LensRay> chief = ChiefRay(lens, field_deg, lambda_nm);
   if (chief) return chief->o.y;
-  ParaxialData p = ComputeParaxial(lens.prescription(), lambda_nm, lens.StopSemiDiameter());
+  ParaxialData p = lens.Paraxial(lambda_nm);
   return -std::tan(field_deg * M_PI / 180) * (p.entrance_pupil_position - kStartZ);
 }
 }  // namespace
 
 std::optional<double> RelativeIllumination(const LensSystem& lens, double field_deg, double lambda_nm) {
   const int n = 61;
-  ParaxialData p = ComputeParaxial(lens.prescription(), lambda_nm, lens.StopSemiDiameter());
+  ParaxialData p = lens.Paraxial(lambda_nm);
   // Beam cross-section that gets through, in a disk widened until its rim is blocked
   // (real pupils grow off axis, strongly so in fisheyes).
   auto beam_area = [&](double field) {
@@ -159,7 +159,7 @@ std::optional<double> RelativeIllumination(const LensSystem& lens, double field_
 std::optional<FieldCurvature> FieldCurvatureAt(const LensSystem& lens, double field_deg, double lambda_nm) {
   std::optional<LensRay> chief = ChiefRay(lens, field_deg, lambda_nm);
   if (!chief) return std::nullopt;
-  ParaxialData p = ComputeParaxial(lens.prescription(), lambda_nm, lens.StopSemiDiameter());
+  ParaxialData p = lens.Paraxial(lambda_nm);
   double theta = field_deg * M_PI / 180, eps = 1e-4 * p.entrance_pupil_diameter;
   auto trace = [&](double dx, double dy) -> std::optional<LensRay> {
     LensRay r{{dx, chief->o.y + dy / std::cos(theta), kStartZ}, chief->d};
@@ -184,7 +184,7 @@ std::optional<FieldCurvature> FieldCurvatureAt(const LensSystem& lens, double fi
 
 Spot SpotDiagram(const LensSystem& lens, double field_deg, double lambda_nm, int n) {
   Spot spot;
-  ParaxialData p = ComputeParaxial(lens.prescription(), lambda_nm, lens.StopSemiDiameter());
+  ParaxialData p = lens.Paraxial(lambda_nm);
   double theta = field_deg * M_PI / 180;
   std::optional<LensRay> chief = ChiefRay(lens, field_deg, lambda_nm);
   // Centre the grid on the chief ray's entrance (the real entrance pupil's centre).
@@ -261,7 +261,7 @@ FieldOfView SensorFieldOfView(const LensSystem& lens, double width, double heigh
 }
 
 double RealBackFocus(const LensSystem& lens, double lambda_nm) {
-  ParaxialData p = ComputeParaxial(lens.prescription(), lambda_nm, lens.StopSemiDiameter());
+  ParaxialData p = lens.Paraxial(lambda_nm);
   LensSystem t = lens;
   auto rms = [&](double back_focus) {
     t.SetBackFocus(back_focus);
@@ -284,7 +284,7 @@ double RealBackFocus(const LensSystem& lens, double lambda_nm) {
 }
 
 std::optional<double> LongitudinalAberration(const LensSystem& lens, double height, double lambda_nm) {
-  ParaxialData p = ComputeParaxial(lens.prescription(), lambda_nm);
+  ParaxialData p = lens.Paraxial(lambda_nm);
   TraceResult t = TraceFromObject(lens, {{0, height, kStartZ}, {0, 0, 1}}, lambda_nm);
   if (!t.ray || t.ray->d.y == 0) return std::nullopt;
   double z = t.ray->o.z - t.ray->o.y * t.ray->d.z / t.ray->d.y;

@@ -4,21 +4,6 @@
 
 namespace objektiv {
 
-float FresnelDielectric(float cos_i, float eta) {
-  cos_i = Clamp(cos_i, -1, 1);
-  if (cos_i < 0) {
-    eta = 1 / eta;
-    cos_i = -cos_i;
-  }
-  float sin2_i = 1 - cos_i * cos_i;
-  float sin2_t = sin2_i / (eta * eta);
-  if (sin2_t >= 1) return 1.f;
-  float cos_t = SafeSqrt(1 - sin2_t);
-  float r_parl = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-  float r_perp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-  return (r_parl * r_parl + r_perp * r_perp) / 2;
-}
-
 float FresnelComplex(float cos_i, std::complex<float> eta) {
   using C = std::complex<float>;
   cos_i = Clamp(cos_i, 0, 1);

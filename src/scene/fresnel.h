@@ -2,15 +2,13 @@
 #pragma once
 #include <complex>
 
+#include "base/fresnel_dielectric.h"
 #include "base/sampled_spectrum.h"
 #include "base/vec.h"
 
 namespace objektiv {
 
-// Unpolarised Fresnel reflectance of a dielectric interface; eta = n_transmitted / n_incident
-// for light arriving from the side the normal points to (cos_i > 0). cos_i < 0 means the light
-// arrives from the other side, where the relative index is 1/eta. Returns 1 at total internal reflection.
-float FresnelDielectric(float cos_i, float eta);
+// FresnelDielectric(cos_i, eta): base/fresnel_dielectric.h.
 
 // Fresnel reflectance of a conductor with complex relative index eta + i k.
 float FresnelComplex(float cos_i, std::complex<float> eta);

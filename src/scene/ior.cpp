@@ -1,5 +1,6 @@
 #include "scene/ior.h"
 
+#include "optics/dispersion.h"
 #include "optics/glass.h"
 
 #include <cmath>
@@ -26,7 +27,7 @@ IorModel IorModel::FromGlass(const Glass* glass) {
   IorModel m;
   m.kind_ = glass->IsDispersive() ? Kind::kGlass : Kind::kConstant;
   m.glass_ = glass;
-  m.n_ = glass->Index(587.5618);
+  m.n_ = glass->Index(kLambdad);
   return m;
 }
 
