@@ -134,7 +134,7 @@ TEST(Fresnel, SpectralConductorFormulaMatchesComplexArithmetic) {
 }  // namespace
 }  // namespace objektiv
 
-#include "scene/ray.h"
+#include "base/ray.h"
 
 namespace objektiv {
 namespace {

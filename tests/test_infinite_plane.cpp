@@ -9,7 +9,7 @@
 #include "base/error.h"
 #include "render_helpers.h"
 #include "scene/analytic_shape.h"
-#include "scene/ray.h"
+#include "base/ray.h"
 #include "scene/scene.h"
 
 namespace objektiv {

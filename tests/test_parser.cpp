@@ -59,6 +59,13 @@ TEST(Parser, BadInputNamesFileAndLine) {
        5, "catalog glass"},
       {Wrap("<shape type=\"sphere\"><bsdf type=\"conductor\">\n<string name=\"material\" value=\"Zz\"/></bsdf></shape>"), 5,
        "unknown conductor"},
+      // A Sellmeier pole at 500 nm (c1 = 0.25 um^2) and a Cauchy index that turns negative.
+      {Wrap("<shape type=\"sphere\"><bsdf type=\"dielectric\">\n<float name=\"sellmeier_b1\" value=\"1\"/>"
+            "<float name=\"sellmeier_c1\" value=\"0.25\"/></bsdf></shape>"),
+       5, "Sellmeier coefficients give no real positive index of refraction at"},
+      {Wrap("<shape type=\"sphere\"><bsdf type=\"dielectric\">\n<float name=\"cauchy_a\" value=\"1.5\"/>"
+            "<float name=\"cauchy_b\" value=\"-1\"/></bsdf></shape>"),
+       5, "Cauchy coefficients give no real positive index of refraction at 360 nm"},
       {Wrap("<shape type=\"sphere\">\n<transform name=\"to_world\"><scale x=\"0\"/></transform></shape>"), 5,
        "scale factor of zero"},
       {Wrap("<shape type=\"sphere\">\n<float name=\"radius\" value=\"1\"/>\n<float name=\"radius\" value=\"2\"/></shape>"), 6,

@@ -35,30 +35,32 @@ std::pair<double, double> ParseSensor(const std::string& s) {
   return {w, h};
 }
 
-// The lens commands describe imaging lenses: an afocal system has no finite first-order data.
-LensPrescription LoadImagingLens(const std::string& name, double lambda_nm) {
+// The lens commands describe imaging lenses (an afocal system has no finite first-order data),
+// set up as AtParaxialInfinityFocus takes them: fully open, at the paraxial focus.
+LensSystem LoadImagingLens(const std::string& name, double lambda_nm) {
   LensPrescription lens = LoadLens(name);
   double efl = ComputeParaxial(lens, lambda_nm).efl;
   if (!std::isfinite(efl) || std::abs(efl) > 1e12)
     throw InputError(fmt::format("{}: the lens has no optical power (afocal): it forms no image", name));
-  return lens;
+  return AtParaxialInfinityFocus(std::move(lens), lambda_nm);
 }
 
 int RunList() {
   std::printf("%-24s %10s %8s  %s\n", "name", "EFL (mm)", "f/", "source");
   for (const std::string& name : ShippedLensNames()) {
-    LensPrescription lens = LoadLens(name);
-    ParaxialData d = ComputeParaxial(lens);
-    std::printf("%-24s %10.3f %8.2f  %s\n", name.c_str(), d.efl, d.fnumber, lens.source.c_str());
+    const LensSystem lens(LoadLens(name));
+    std::printf("%-24s %10.3f %8.2f  %s\n", name.c_str(), lens.paraxial().efl, lens.paraxial().fnumber,
+                lens.prescription().source.c_str());
   }
   return 0;
 }
 
 int RunInfo(const LensArgs& a) {
-  LensPrescription lens = LoadImagingLens(a.lens, a.wavelength);
-  ParaxialData d = ComputeParaxial(lens, a.wavelength);
-  int stop = lens.StopIndex();
-  double stop_diameter = 2 * lens.surfaces[stop].semi_diameter;
+  const LensSystem system = LoadImagingLens(a.lens, a.wavelength);
+  const LensPrescription& lens = system.prescription();
+  ParaxialData d = system.Paraxial(a.wavelength);
+  int stop = system.StopIndex();
+  double stop_diameter = 2 * system.StopSemiDiameter();
   std::optional<FocusSolution> focus;
   if (a.focus_m > 0) {
     focus = FocusAtDistance(lens, a.focus_m * 1000, a.wavelength);
@@ -68,7 +70,6 @@ int RunInfo(const LensArgs& a) {
                                    a.lens, a.focus_m));
   }
   auto [sw, sh] = ParseSensor(a.sensor);
-  const LensSystem system = AtParaxialInfinityFocus(lens, a.wavelength);
   FieldOfView fov = SensorFieldOfView(system, sw, sh, a.wavelength);
   double real_bfl = RealBackFocus(system, a.wavelength);
   nlohmann::ordered_json j = {{"name", lens.name},
@@ -135,14 +136,12 @@ int RunInfo(const LensArgs& a) {
 }
 
 int RunAnalyze(const LensArgs& a) {
-  LensPrescription lens = LoadImagingLens(a.lens, kLambdad);
-  WriteLensAnalysis(AtParaxialInfinityFocus(lens), a.output);
+  WriteLensAnalysis(LoadImagingLens(a.lens, kLambdad), a.output);
   return 0;
 }
 
 int RunPlot(const LensArgs& a) {
-  LensPrescription lens = LoadImagingLens(a.lens, a.wavelength);
-  const LensSystem system = AtParaxialInfinityFocus(lens, a.wavelength);
+  const LensSystem system = LoadImagingLens(a.lens, a.wavelength);
   std::vector<double> fields = a.fields.empty() ? DefaultFields(system, a.wavelength) : a.fields;
   PlotLensLayout(system, fields, a.wavelength).Write(a.output);
   return 0;

@@ -8,7 +8,7 @@
 
 #include "base/sampled_spectrum.h"
 #include "base/transform.h"
-#include "scene/ray.h"
+#include "base/ray.h"
 
 namespace objektiv {
 

@@ -1,4 +1,7 @@
 // The <bsdf> plugins (materials).
+#include <cmath>
+
+#include "base/cie.h"
 #include "io/loader_context.h"
 #include "optics/glass_catalog.h"
 #include "scene/conductor_data.h"
@@ -20,20 +23,33 @@ double GetIor(const Properties& p, const std::string& name, double fallback) {
   return v;
 }
 
+// Coefficients must give a real, positive index at every wavelength rendered (1 nm steps over
+// [kLambdaMin, kLambdaMax]); a Sellmeier pole or a negative n^2 inside it is an error.
+IorModel CheckedDispersion(IorModel ior, const Location& loc, const char* formula) {
+  for (int l = int(kLambdaMin); l <= int(kLambdaMax); ++l) {
+    double n = ior(l);
+    if (!(n > 0) || !std::isfinite(n))
+      throw ErrorAt(loc, "the {} coefficients give no real positive index of refraction at {} nm", formula, l);
+  }
+  return ior;
+}
+
 // The interior index of a dielectric: constant, Cauchy or Sellmeier coefficients.
 IorModel GetInteriorIor(const Properties& p) {
   bool cauchy = p.Has("cauchy_a"), sellmeier = p.Has("sellmeier_b1");
   if (cauchy && sellmeier) throw ErrorAt(p.loc(), "give either Cauchy or Sellmeier coefficients, not both");
   if ((cauchy || sellmeier) && p.Has("int_ior"))
     throw ErrorAt(p.LocOf("int_ior"), "int_ior and dispersion coefficients exclude each other");
-  if (cauchy) return IorModel::Cauchy(p.Float("cauchy_a"), p.Float("cauchy_b", 0), p.Float("cauchy_c", 0));
+  if (cauchy)
+    return CheckedDispersion(IorModel::Cauchy(p.Float("cauchy_a"), p.Float("cauchy_b", 0), p.Float("cauchy_c", 0)),
+                             p.LocOf("cauchy_a"), "Cauchy");
   if (sellmeier) {
     std::array<double, 3> b{}, c{};
     for (int i = 0; i < 3; ++i) {
       b[i] = p.Float(fmt::format("sellmeier_b{}", i + 1), 0);
       c[i] = p.Float(fmt::format("sellmeier_c{}", i + 1), 0);
     }
-    return IorModel::Sellmeier(b, c);
+    return CheckedDispersion(IorModel::Sellmeier(b, c), p.LocOf("sellmeier_b1"), "Sellmeier");
   }
   // A name that is not one of Mitsuba's constants is looked up in the glass catalogs.
   if (p.TypeOf("int_ior") == ValueType::kString) {

@@ -15,13 +15,22 @@ Glass Glass::Model(double nd, double vd) {
   // Solve n = A + B / l^2 through n(d) = nd and nF - nC = (nd - 1) / vd (l in um).
   double lf = kLambdaF * 1e-3, lc = kLambdaC * 1e-3, ld = kLambdad * 1e-3;
   double b = (nd - 1) / vd / (1 / (lf * lf) - 1 / (lc * lc));
-  Glass g(fmt::format("model {:.6f}/{:.2f}", nd, vd), "MODEL", DispersionFormula::kConrady, {});
-  g.kind_ = Kind::kModel;
-  g.c_[0] = nd - b / (ld * ld);
-  g.c_[1] = b;
+  Glass g = Cauchy(nd - b / (ld * ld), b);
+  g.name_ = fmt::format("model {:.6f}/{:.2f}", nd, vd);
+  g.catalog_ = "MODEL";
   g.catalog_nd = nd;
   g.catalog_vd = vd;
   return g;
+}
+
+Glass Glass::Cauchy(double a, double b, double c) {
+  Glass g(fmt::format("cauchy {}/{}/{}", a, b, c), "FORMULA", DispersionFormula::kConrady, {a, b, c});
+  g.kind_ = Kind::kCauchy;
+  return g;
+}
+
+Glass Glass::Sellmeier(const std::array<double, 3>& b, const std::array<double, 3>& c) {
+  return Glass("sellmeier", "FORMULA", DispersionFormula::kSellmeier1, {b[0], c[0], b[1], c[1], b[2], c[2]});
 }
 
 Glass Glass::Constant(double n) {
@@ -37,8 +46,10 @@ double Glass::Index(double lambda_nm) const {
   switch (kind_) {
     case Kind::kConstant:
       return c_[0];
-    case Kind::kModel:
-      return c_[0] + c_[1] / (l * l);
+    case Kind::kCauchy: {
+      double l2 = l * l;
+      return c_[0] + c_[1] / l2 + c_[2] / (l2 * l2);
+    }
     case Kind::kCatalog:
       return EvaluateDispersion(formula_, c_, l);
   }

@@ -1,5 +1,6 @@
 // Optical glasses: refractive index by wavelength and internal transmittance, from a catalog
-// formula, a "model glass" (nd, Vd), or a constant index.
+// formula, a "model glass" (nd, Vd), Cauchy or Sellmeier coefficients, or a constant index.
+// The one index-of-refraction model of the renderer: lens media and the scene's dielectrics.
 #pragma once
 #include <array>
 #include <string>
@@ -16,6 +17,11 @@ class Glass {
   // A model glass through nd and Vd: n = A + B / l^2 (two-term Cauchy), so that n(d) = nd and
   // (nd - 1) / (nF - nC) = Vd exactly. Used when a prescription gives only nd and Vd.
   static Glass Model(double nd, double vd);
+  // n = a + b / l^2 + c / l^4, l in micrometres.
+  static Glass Cauchy(double a, double b, double c = 0);
+  // n^2 = 1 + sum_i b_i l^2 / (l^2 - c_i), l in micrometres, c_i in um^2 (Schott's form, AGF
+  // formula 2).
+  static Glass Sellmeier(const std::array<double, 3>& b, const std::array<double, 3>& c);
   static Glass Constant(double n);
 
   double Index(double lambda_nm) const;
@@ -39,7 +45,7 @@ class Glass {
   void AddTransmission(double lambda_um, double tau, double thickness_mm);
 
  private:
-  enum class Kind { kCatalog, kModel, kConstant } kind_ = Kind::kCatalog;
+  enum class Kind { kCatalog, kCauchy, kConstant } kind_ = Kind::kCatalog;
   std::string name_, catalog_;
   DispersionFormula formula_ = DispersionFormula::kSchott;
   std::array<double, 10> c_{};

@@ -1,7 +1,7 @@
 // What a ray hit: position with its error bound, normals, shading frame, texture coordinates.
 #pragma once
 #include "base/frame.h"
-#include "scene/ray.h"
+#include "base/ray.h"
 
 namespace objektiv {
 

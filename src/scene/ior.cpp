@@ -3,50 +3,13 @@
 #include "optics/dispersion.h"
 #include "optics/glass.h"
 
-#include <cmath>
 #include <utility>
 
 namespace objektiv {
 
-IorModel IorModel::Cauchy(double a, double b, double c) {
-  IorModel m;
-  m.kind_ = Kind::kCauchy;
-  m.a_ = {a, b, c};
-  return m;
-}
-
-IorModel IorModel::Sellmeier(std::array<double, 3> b, std::array<double, 3> c) {
-  IorModel m;
-  m.kind_ = Kind::kSellmeier;
-  m.a_ = b;
-  m.b_ = c;
-  return m;
-}
-
-IorModel IorModel::FromGlass(const Glass* glass) {
-  IorModel m;
-  m.kind_ = glass->IsDispersive() ? Kind::kGlass : Kind::kConstant;
-  m.glass_ = glass;
-  m.n_ = glass->Index(kLambdad);
-  return m;
-}
-
-double IorModel::operator()(double lambda_nm) const {
-  double l = lambda_nm * 1e-3, l2 = l * l;
-  switch (kind_) {
-    case Kind::kConstant:
-      return n_;
-    case Kind::kCauchy:
-      return a_[0] + a_[1] / l2 + a_[2] / (l2 * l2);
-    case Kind::kGlass:
-      return glass_->Index(lambda_nm);
-    case Kind::kSellmeier: {
-      double n2 = 1;
-      for (int i = 0; i < 3; ++i) n2 += a_[i] * l2 / (l2 - b_[i]);
-      return std::sqrt(std::max(n2, 1e-6));
-    }
-  }
-  return 1;
+IorModel::IorModel(std::shared_ptr<const Glass> glass) {
+  if (glass->IsDispersive()) glass_ = std::move(glass);
+  else n_ = glass->Index(kLambdad);
 }
 
 std::optional<double> NamedIor(std::string_view name) {

@@ -1,33 +1,35 @@
-// Refractive index as a function of wavelength: constant, Cauchy, Sellmeier, or named.
+// The index of refraction of a scene's dielectric: a constant, or a glass of the optics library
+// (a catalog glass, or Cauchy or Sellmeier coefficients: optics/glass.h, the one dispersion
+// model the lens and the scene share).
 #pragma once
 #include <array>
+#include <memory>
 #include <optional>
-#include <string>
 #include <string_view>
 
-namespace objektiv {
+#include "optics/glass.h"
 
-class Glass;
+namespace objektiv {
 
 class IorModel {
  public:
   IorModel() = default;
-  explicit IorModel(double n) : kind_(Kind::kConstant), n_(n) {}
-  // n = A + B / l^2 + C / l^4, l in micrometres.
-  static IorModel Cauchy(double a, double b, double c = 0);
-  // n^2 = 1 + sum B_i l^2 / (l^2 - C_i), l in micrometres, C_i in um^2 (Schott's form).
-  static IorModel Sellmeier(std::array<double, 3> b, std::array<double, 3> c);
-  // A glass of the lens library's catalogs (it must outlive the model).
-  static IorModel FromGlass(const Glass* glass);
+  explicit IorModel(double n) : n_(n) {}
+  // Dispersive: n(lambda) from the glass (a constant glass gives a constant model).
+  explicit IorModel(std::shared_ptr<const Glass> glass);
+  static IorModel Cauchy(double a, double b, double c = 0) { return IorModel(std::make_shared<const Glass>(Glass::Cauchy(a, b, c))); }
+  static IorModel Sellmeier(const std::array<double, 3>& b, const std::array<double, 3>& c) {
+    return IorModel(std::make_shared<const Glass>(Glass::Sellmeier(b, c)));
+  }
+  // A glass of the lens library's catalogs (not owned: it must outlive the model).
+  static IorModel FromGlass(const Glass* glass) { return IorModel(std::shared_ptr<const Glass>(std::shared_ptr<const Glass>(), glass)); }
 
-  double operator()(double lambda_nm) const;
-  bool IsDispersive() const { return kind_ != Kind::kConstant; }
+  double operator()(double lambda_nm) const { return glass_ ? glass_->Index(lambda_nm) : n_; }
+  bool IsDispersive() const { return glass_ != nullptr; }
 
  private:
-  enum class Kind { kConstant, kCauchy, kSellmeier, kGlass } kind_ = Kind::kConstant;
-  const Glass* glass_ = nullptr;
+  std::shared_ptr<const Glass> glass_;  // null: the constant n_
   double n_ = 1;
-  std::array<double, 3> a_{}, b_{};
 };
 
 // Mitsuba's table of named indices ("bk7", "water", "air", "diamond", ...).
