@@ -16,7 +16,7 @@ const char* const kLenses[] = {"dgauss.50mm", "wide.22mm", "fisheye.10mm", "tele
 
 std::unique_ptr<Camera> MakeCamera(const char* lens, double fnumber) {
   LensCameraSpec spec;
-  spec.lens = LoadLens(lens);
+  spec.lens = LoadLens(lens, GlassCatalog::Default());
   spec.fnumber = fnumber;
   spec.focus_distance = 5;
   return MakeLensCamera(Transform(), 768, 512, spec);
@@ -26,7 +26,7 @@ void BM_CameraRays(benchmark::State& state) {
   const char* lens = kLenses[state.range(0)];
   spdlog::set_level(spdlog::level::warn);
   // The f-number (0: wide open), or wide open for the lenses that do not open that far.
-  const double fnumber = std::max(state.range(1) / 10.0, WideOpenFNumber(LoadLens(lens)));
+  const double fnumber = std::max(state.range(1) / 10.0, WideOpenFNumber(LoadLens(lens, GlassCatalog::Default())));
   auto cam = MakeCamera(lens, fnumber);
   PCG32 rng(2, 9);
   const int n = 64;
@@ -71,7 +71,7 @@ void BM_CameraSetupNotRound(benchmark::State& state) {
   const char* lens = kLenses[state.range(0)];
   spdlog::set_level(spdlog::level::warn);
   LensCameraSpec spec;
-  spec.lens = LoadLens(lens);
+  spec.lens = LoadLens(lens, GlassCatalog::Default());
   spec.focus_distance = 5;
   spec.settings.sensor_width = 36, spec.settings.sensor_height = 24;
   const char* what = "";

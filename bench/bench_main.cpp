@@ -162,7 +162,7 @@ struct LensBenchRays {
   LensSystem tracer;
   std::vector<LensRay> rays;
   std::vector<float> lambdas;
-  LensBenchRays() : tracer(LoadLens("dgauss.50mm")) {
+  LensBenchRays() : tracer(LoadLens("dgauss.50mm", GlassCatalog::Default())) {
     tracer.SetBackFocus(ComputeParaxial(tracer.prescription()).bfl);
     PCG32 rng(5, 5);
     const LensSurface& rear = tracer.prescription().surfaces.back();

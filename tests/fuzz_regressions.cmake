@@ -34,3 +34,8 @@ fuzz_test(film_budget_option 1 "rendering 64x64 pixels needs 0.000317 GiB, more 
   render ${CORNELL} -D res=64 --max-memory 0.0001 -o ${FUZZ_OUT}/film.exr)
 fuzz_test(film_crop_within_budget 0 "4x4, 1 spp" render ${CORNELL} -D res=65536 --crop 0,0,4,4 --spp 1 -o ${FUZZ_OUT}/film.exr)
 fuzz_test(film_budget_not_positive 2 "--max-memory" render ${CORNELL} --max-memory 0 -o ${FUZZ_OUT}/film.exr)
+# OBJ values tinyobjloader read silently as 0 (or as no index): refused with their line.
+fuzz_test(obj_word_for_number 1 "10-obj-word-for-number.obj:3: 'abc' in a vertex (v) is not a finite number"
+  render ${FUZZ}/07-mesh-scene.xml -D meshtype=obj -D meshfile=10-obj-word-for-number.obj -o ${FUZZ_OUT}/10.exr)
+fuzz_test(obj_bad_corner 1 "10-obj-bad-corner.obj:4: 'x3' is not a corner"
+  render ${FUZZ}/07-mesh-scene.xml -D meshtype=obj -D meshfile=10-obj-bad-corner.obj -o ${FUZZ_OUT}/10.exr)

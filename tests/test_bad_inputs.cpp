@@ -62,7 +62,7 @@ TEST(BadInputs, OnlyRegularFilesAreRead) {
   ExpectInputError([&] { LoadPly(fifo, {}); }, fifo + ":", "not a regular file");
   std::string fifo_lens = (dir / "fifo.lens").string();
   ASSERT_EQ(mkfifo(fifo_lens.c_str(), 0600), 0);
-  ExpectInputError([&] { LoadLens(fifo_lens); }, fifo_lens + ":", "not a regular file");
+  ExpectInputError([&] { LoadLens(fifo_lens, GlassCatalog::Default()); }, fifo_lens + ":", "not a regular file");
   ExpectInputError([&] { GlassCatalog().LoadAgf(fifo, "TEST"); }, fifo + ":", "not a regular file");
   // A text file beyond the limit is refused before it is read (a sparse file takes no space).
   fs::path big = dir / "big.lens";

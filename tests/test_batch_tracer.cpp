@@ -19,10 +19,10 @@ LensSystem Prepared(const LensPrescription& lens) {
 std::vector<LensPrescription> Lenses() {
   std::vector<LensPrescription> l;
   for (const char* n : {"dgauss.50mm", "wide.22mm", "fisheye.10mm", "telephoto.250mm", "tessar.brendel.100mm"})
-    l.push_back(LoadLens(n));
+    l.push_back(LoadLens(n, GlassCatalog::Default()));
   l.push_back(ParseNativeLens("stop 2 air 6\nsurface 30 6 N-LAK9 10 k=-0.8 a4=-2e-6 a6=3e-9\n"
                               "surface -80 0.5 air 10\nsurface 40 3 N-SF5 9 a4=1e-6\nsurface 25 35 air 9\n",
-                              "asphere.lens"));
+                              "asphere.lens", GlassCatalog::Default()));
   return l;
 }
 

@@ -24,7 +24,7 @@ constexpr float kLambda = 587.5618f;
 
 // The lens with its stop set to the paraxial f-number, focused at infinity.
 LensSystem StoppedLens(const char* name, double fnumber) {
-  LensPrescription lens = LoadLens(name);
+  LensPrescription lens = LoadLens(name, GlassCatalog::Default());
   LensSystem t(lens);
   ParaxialData p = ComputeParaxial(lens);
   t.SetBackFocus(p.bfl);
@@ -269,7 +269,7 @@ TEST(BladedStop, FewCameraRaysAreWasted) {
   // corners) and six curved ones: at least 95% of the rays traced get through, as for the
   // round stop.
   for (const char* name : {"dgauss.50mm", "wide.22mm", "fisheye.10mm", "telephoto.250mm", "tessar.brendel.100mm"}) {
-    LensPrescription lens = LoadLens(name);
+    LensPrescription lens = LoadLens(name, GlassCatalog::Default());
     for (auto [fnumber, blades, curvature] : {std::tuple{0.0, 3, 0.0}, std::tuple{8.0, 6, 0.5}}) {
       LensCameraSpec s;
       s.lens = lens;
@@ -301,7 +301,7 @@ TEST(BladedStop, RaysAreAimedOnlyWhereTheApertureMaskIsOpen) {
     for (int x = 32; x < 64; ++x)
       for (int c = 0; c < 3; ++c) quarter.At(x, y, c) = 1;
   LensCameraSpec s;
-  s.lens = LoadLens("dgauss.50mm");
+  s.lens = LoadLens("dgauss.50mm", GlassCatalog::Default());
   s.fnumber = 4;
   s.settings.sensor_width = s.settings.sensor_height = kSensor;
   s.settings.transmission = false;

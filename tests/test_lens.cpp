@@ -109,7 +109,7 @@ namespace {
 TEST(NativeLens, TessarWithCatalogGlassesHasItsPatentFocalLength) {
   // data/lenses/README.md: with HIKARI LAK9, OHARA PBL7 and HIKARI SF7, EFL 100.00 mm and
   // BFL 79.82 mm at the d line.
-  LensPrescription t = LoadLens("tessar.brendel.100mm");
+  LensPrescription t = LoadLens("tessar.brendel.100mm", GlassCatalog::Default());
   ASSERT_EQ(t.surfaces.size(), 8u);
   EXPECT_EQ(t.StopIndex(), 3);
   ParaxialData d = ComputeParaxial(t, 587.5618);
@@ -125,7 +125,7 @@ TEST(NativeLens, ShippedLensesAreFoundByName) {
   std::vector<std::string> names = ShippedLensNames();
   for (const char* n : {"dgauss.50mm", "wide.22mm", "fisheye.10mm", "telephoto.250mm", "tessar.brendel.100mm"})
     EXPECT_NE(std::find(names.begin(), names.end(), n), names.end()) << n;
-  EXPECT_THROW(LoadLens("no.such.lens"), InputError);
+  EXPECT_THROW(LoadLens("no.such.lens", GlassCatalog::Default()), InputError);
 }
 
 TEST(NativeLens, BadFilesNameTheLine) {
@@ -151,7 +151,7 @@ TEST(NativeLens, BadFilesNameTheLine) {
   };
   for (const Bad& b : cases) {
     try {
-      ParseNativeLens(b.text, "bad.lens");
+      ParseNativeLens(b.text, "bad.lens", GlassCatalog::Default());
       ADD_FAILURE() << "no error for:\n" << b.text;
     } catch (const InputError& e) {
       std::string msg = e.what();
@@ -166,7 +166,7 @@ TEST(NativeLens, ConicsAspheresCurvaturesAndModelGlasses) {
   LensPrescription l = ParseNativeLens(
       "stop 1 air 4\nsurface c=0.02 5 nd=1.5168,vd=64.17 10 k=-1 a4=1e-6 a6=-2e-9 coating=MgF2\n"
       "surface inf 40 air 10\n",
-      "ok.lens");
+      "ok.lens", GlassCatalog::Default());
   ASSERT_EQ(l.surfaces.size(), 3u);
   EXPECT_NEAR(l.surfaces[1].radius, 50, 1e-12);
   EXPECT_EQ(l.surfaces[1].conic, -1);
@@ -261,7 +261,7 @@ TEST(Focusing, UnitFocusObeysNewtonsEquation) {
   // x x' = f^2 with x the object's distance from the front focal point and x' the image's
   // from the back focal point: true for any thick lens in air.
   for (const char* name : {"dgauss.50mm", "tessar.brendel.100mm", "telephoto.250mm"}) {
-    LensPrescription lens = LoadLens(name);
+    LensPrescription lens = LoadLens(name, GlassCatalog::Default());
     ParaxialData p = ComputeParaxial(lens);
     for (double distance_m : {0.8, 2.0, 10.0}) {
       double D = distance_m * 1000 * (p.efl / 50);  // keep closer than minimum focus away
@@ -290,7 +290,7 @@ TEST(Focusing, UnitFocusObeysNewtonsEquation) {
 }
 
 TEST(Focusing, ScalingKeepsTheFNumberAndHitsTheFocalLength) {
-  LensPrescription lens = LoadLens("tessar.brendel.100mm");
+  LensPrescription lens = LoadLens("tessar.brendel.100mm", GlassCatalog::Default());
   LensPrescription s = ScaledToFocalLength(lens, 35);
   ParaxialData a = ComputeParaxial(lens), b = ComputeParaxial(s);
   EXPECT_NEAR(b.efl, 35, 1e-9);
@@ -298,7 +298,7 @@ TEST(Focusing, ScalingKeepsTheFNumberAndHitsTheFocalLength) {
   EXPECT_NEAR(b.bfl, a.bfl * 35 / a.efl, 1e-9);
   // Aspheric terms scale so that the sag scales with the lens.
   LensPrescription asph = ParseNativeLens("stop 1 air 4\nsurface 50 5 N-BK7 10 k=-0.5 a4=1e-5 a6=-1e-8\n"
-                                          "surface inf 40 air 10\n", "a.lens");
+                                          "surface inf 40 air 10\n", "a.lens", GlassCatalog::Default());
   EXPECT_NEAR(asph.Scaled(3).surfaces[1].Sag(3 * 7.0), 3 * asph.surfaces[1].Sag(7.0), 1e-12);
 }
 

@@ -9,7 +9,7 @@
 namespace objektiv {
 namespace {
 
-LensPrescription Parse(const std::string& text) { return ParseNativeLens(text, "test.lens"); }
+LensPrescription Parse(const std::string& text) { return ParseNativeLens(text, "test.lens", GlassCatalog::Default()); }
 
 TEST(LensSystem, PlaneParallelPlateDeviatesNoRay) {
   LensSystem plate(Parse("stop 1 air 20\nsurface inf 10 N-SF11 20\nsurface inf 5 air 20\n"));
@@ -28,7 +28,7 @@ TEST(LensSystem, PlaneParallelPlateDeviatesNoRay) {
 
 TEST(LensSystem, SmallHeightRaysMeetTheParaxialFocus) {
   for (const char* name : {"dgauss.50mm", "wide.22mm", "fisheye.10mm", "telephoto.250mm", "tessar.brendel.100mm"}) {
-    LensPrescription lens = LoadLens(name);
+    LensPrescription lens = LoadLens(name, GlassCatalog::Default());
     ParaxialData p = ComputeParaxial(lens, 587.5618);
     LensSystem tracer(lens);
     // A ray parallel to the axis at a height far below the aperture: aberrations ~ h^2 vanish.
@@ -45,7 +45,7 @@ TEST(LensSystem, SmallHeightRaysMeetTheParaxialFocus) {
 
 TEST(LensSystem, FilmToObjectAndBackReturnsTheRay) {
   for (const char* name : {"dgauss.50mm", "tessar.brendel.100mm", "wide.22mm"}) {
-    LensPrescription lens = LoadLens(name);
+    LensPrescription lens = LoadLens(name, GlassCatalog::Default());
     LensSystem tracer(lens);
     tracer.SetBackFocus(ComputeParaxial(lens).bfl);  // pbrt files leave the film at the last vertex
     int got = 0;
@@ -94,7 +94,7 @@ TEST(LensSystem, HyperbolicSingletFocusesPerfectly) {
 }
 
 TEST(LensSystem, AperturesClipAndTotalInternalReflectionStops) {
-  LensSystem t(LoadLens("dgauss.50mm"));
+  LensSystem t(LoadLens("dgauss.50mm", GlassCatalog::Default()));
   // Far outside the front element: clipped at the first surface.
   TraceResult r = TraceFromObject(t, {{20, 0, -10}, {0, 0, 1}}, 550);
   EXPECT_FALSE(r.ray);
@@ -154,7 +154,7 @@ TEST(LensSystem, FresnelAndAbsorptionThroughAPlate) {
 }
 
 TEST(LensSystem, BladedStops) {
-  LensSystem t(LoadLens("dgauss.50mm"));
+  LensSystem t(LoadLens("dgauss.50mm", GlassCatalog::Default()));
   double r = t.StopSemiDiameter();
   EXPECT_TRUE(t.InsideStop(0.99 * r, 0));
   t.SetStopShape(StopShape::Iris(6, 0, 0));  // corners at 0, 60, 120 ... degrees

@@ -35,7 +35,7 @@ double FilmRadius(const LensSystem& t) {
 
 TEST(PupilBounds, NinetyFivePercentOfCameraRaysGetThrough) {
   for (const char* name : {"dgauss.50mm", "wide.22mm", "fisheye.10mm", "telephoto.250mm", "tessar.brendel.100mm"}) {
-    LensPrescription lens = LoadLens(name);
+    LensPrescription lens = LoadLens(name, GlassCatalog::Default());
     double wide_open = ComputeParaxial(lens).fnumber;
     for (double n : {0.0, 2.8, 4.0, 5.6, 8.0, 16.0}) {
       double fnumber = n == 0 ? wide_open : n;
@@ -65,7 +65,7 @@ TEST(PupilBounds, TheBoundContainsAllTheLight) {
   // element, and through the bound (area x pass rate). A bound missing part of the passing
   // region would make the second smaller.
   for (const char* name : {"dgauss.50mm", "wide.22mm", "tessar.brendel.100mm"}) {
-    LensPrescription lens = LoadLens(name);
+    LensPrescription lens = LoadLens(name, GlassCatalog::Default());
     LensSystem t = AtFNumber(lens, ComputeParaxial(lens).fnumber);
     double radius = FilmRadius(t);
     PupilBounds bounds(t, radius);

@@ -10,7 +10,7 @@ namespace objektiv {
 namespace {
 
 LensSystem Focused(const std::string& name) {
-  LensPrescription lens = LoadLens(name);
+  LensPrescription lens = LoadLens(name, GlassCatalog::Default());
   LensSystem t(lens);
   t.SetBackFocus(ComputeParaxial(lens).bfl);
   return t;
@@ -69,7 +69,7 @@ TEST(RealRays, SpotsShrinkWhenStoppingDownAndAreTinyForAnIdealSurface) {
   Spot axis = SpotDiagram(t, 0, 587.6), edge = SpotDiagram(t, 20, 587.6);
   EXPECT_LT(edge.transmitted, axis.transmitted);
 
-  LensSystem hyperbola(ParseNativeLens("stop 0 air 12\nsurface inf 8 n=1.5 12\nsurface -50 100 air 12 k=-2.25\n", "h.lens"));
+  LensSystem hyperbola(ParseNativeLens("stop 0 air 12\nsurface inf 8 n=1.5 12\nsurface -50 100 air 12 k=-2.25\n", "h.lens", GlassCatalog::Default()));
   Spot ideal = SpotDiagram(hyperbola, 0, 587.6);
   ASSERT_GT(ideal.points.size(), 100u);
   EXPECT_LT(ideal.geometric_radius, 1e-3);  // below 1 um
@@ -77,7 +77,7 @@ TEST(RealRays, SpotsShrinkWhenStoppingDownAndAreTinyForAnIdealSurface) {
 
 TEST(RealRays, AxialColourOfAThinSingletIsFOverV) {
   // Thin N-BK7 biconvex lens: the F and C foci are f / Vd apart (to first order).
-  LensPrescription l = ParseNativeLens("stop 0 air 5\nsurface 100 0.001 N-BK7 10\nsurface -100 200 air 10\n", "s.lens");
+  LensPrescription l = ParseNativeLens("stop 0 air 5\nsurface 100 0.001 N-BK7 10\nsurface -100 200 air 10\n", "s.lens", GlassCatalog::Default());
   ParaxialData d = ComputeParaxial(l, 587.5618);
   double lca = ComputeParaxial(l, 656.2725).bfl - ComputeParaxial(l, 486.1327).bfl;
   EXPECT_NEAR(lca, d.efl / 64.17, 0.01 * d.efl / 64.17);
@@ -115,7 +115,7 @@ namespace {
 
 // A thin biconvex N-BK7 lens with a small stop in contact (f ~ 193 mm).
 LensSystem ThinLensAtStop() {
-  LensPrescription l = ParseNativeLens("stop 0 air 2\nsurface 200 0.01 N-BK7 30\nsurface -200 190 air 30\n", "thin.lens");
+  LensPrescription l = ParseNativeLens("stop 0 air 2\nsurface 200 0.01 N-BK7 30\nsurface -200 190 air 30\n", "thin.lens", GlassCatalog::Default());
   LensSystem t(l);
   t.SetBackFocus(ComputeParaxial(l).bfl);
   return t;
@@ -157,7 +157,7 @@ namespace {
 TEST(RealRays, BallLensMatchesItsClosedForm) {
   // A glass sphere of radius R: EFL = n R / (2 (n - 1)) from its centre, BFL = EFL - R.
   const double R = 5, n = 1.5;
-  LensPrescription ball = ParseNativeLens("stop 0 air 3\nsurface 5 10 n=1.5 5\nsurface -5 5 air 5\n", "ball.lens");
+  LensPrescription ball = ParseNativeLens("stop 0 air 3\nsurface 5 10 n=1.5 5\nsurface -5 5 air 5\n", "ball.lens", GlassCatalog::Default());
   ParaxialData d = ComputeParaxial(ball);
   EXPECT_NEAR(d.efl, n * R / (2 * (n - 1)), 1e-12);
   EXPECT_NEAR(d.bfl, n * R / (2 * (n - 1)) - R, 1e-12);
@@ -166,10 +166,10 @@ TEST(RealRays, BallLensMatchesItsClosedForm) {
 TEST(RealRays, RealBackFocusAndFieldOfView) {
   // Spherical aberration of a plain singlet pulls the best focus in front of the paraxial one;
   // an aberration-free surface keeps it there.
-  LensSystem sphere(ParseNativeLens("stop 0 air 10\nsurface inf 8 n=1.5 12\nsurface -50 100 air 12\n", "s.lens"));
+  LensSystem sphere(ParseNativeLens("stop 0 air 10\nsurface inf 8 n=1.5 12\nsurface -50 100 air 12\n", "s.lens", GlassCatalog::Default()));
   ParaxialData p = ComputeParaxial(sphere.prescription());
   EXPECT_LT(RealBackFocus(sphere, 587.6), p.bfl - 0.1);
-  LensSystem hyperbola(ParseNativeLens("stop 0 air 10\nsurface inf 8 n=1.5 12\nsurface -50 100 air 12 k=-2.25\n", "h.lens"));
+  LensSystem hyperbola(ParseNativeLens("stop 0 air 10\nsurface inf 8 n=1.5 12\nsurface -50 100 air 12 k=-2.25\n", "h.lens", GlassCatalog::Default()));
   EXPECT_NEAR(RealBackFocus(hyperbola, 587.6), ComputeParaxial(hyperbola.prescription()).bfl, 1e-4);
   // Field of view of the double Gauss on full frame: close to 2 atan(21.63 / 50.36) = 46.5
   // degrees diagonally, a little more with its slight barrel distortion.

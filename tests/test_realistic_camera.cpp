@@ -22,7 +22,7 @@ constexpr int kRes = 1000;  // film pixels per side in these tests
 
 LensCameraSpec Spec(const std::string& lens, double fnumber, double sensor = 36) {
   LensCameraSpec s;
-  s.lens = LoadLens(lens);
+  s.lens = LoadLens(lens, GlassCatalog::Default());
   s.fnumber = fnumber;
   s.settings.sensor_width = s.settings.sensor_height = sensor;
   return s;
@@ -208,7 +208,7 @@ TEST(RealisticCamera, NoRingsAtTheBinEdges) {
 
 TEST(RealisticCamera, PassRateAtLeastNinetyFivePercent) {
   for (const char* name : {"dgauss.50mm", "wide.22mm", "fisheye.10mm", "telephoto.250mm", "tessar.brendel.100mm"}) {
-    LensPrescription lens = LoadLens(name);
+    LensPrescription lens = LoadLens(name, GlassCatalog::Default());
     double wide_open = WideOpenFNumber(lens);
     for (double n : {0.0, 2.8, 8.0, 16.0}) {
       if (n != 0 && n < wide_open) continue;
@@ -319,7 +319,7 @@ TEST(RealisticCamera, RealGlassShowsLateralColourConstantIndexNone) {
 
 TEST(RealisticCamera, FocusNeverFailsOrHangs) {
   for (const std::string& name : ShippedLensNames()) {
-    LensPrescription lens = LoadLens(name);
+    LensPrescription lens = LoadLens(name, GlassCatalog::Default());
     for (double n : {0.0, 22.0}) {
       LensSystem t(lens);
       if (n > 0) t.SetStopSemiDiameter(t.StopSemiDiameter() * WideOpenFNumber(lens) / n);

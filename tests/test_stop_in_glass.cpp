@@ -129,14 +129,14 @@ TEST(StopInGlass, RealRaysNearTheAxisMeetTheParaxialFocus) {
 // The same doublet written as a native .lens file and as a Zemax file: each reader makes the
 // plane stop surface the stop itself, in its medium, with the same first-order data.
 TEST(StopInGlass, NativeAndZemaxFilesExpressTheSameLens) {
-  LensPrescription native = ParseNativeLens("surface 50 4 n=1.5 12\nstop 4 n=1.7 10\nsurface -60 0 air 12\n", "b.lens");
+  LensPrescription native = ParseNativeLens("surface 50 4 n=1.5 12\nstop 4 n=1.7 10\nsurface -60 0 air 12\n", "b.lens", GlassCatalog::Default());
   ExpectParaxial(native, DoubletByHand(), "native");
   // Zemax model glasses (nd 1.5 and 1.7) at the d line, where the paraxial data are taken.
   LensPrescription zemax = ParseZemaxLens(
       "SURF 0\n DISZ INFINITY\nSURF 1\n CURV 0.02\n DISZ 4\n GLAS ___BLANK 1 0 1.5 50\n DIAM 12\n"
       "SURF 2\n STOP\n DISZ 4\n GLAS ___BLANK 1 0 1.7 50\n DIAM 10\nSURF 3\n CURV -0.016666666666666666\n DISZ 0\n DIAM 12\n"
       "SURF 4\n DISZ 0\n DIAM 12\n",
-      "b.zmx");
+      "b.zmx", GlassCatalog::Default());
   ASSERT_EQ(zemax.surfaces.size(), 3u) << "no extra iris for a plane stop surface";
   EXPECT_EQ(zemax.StopIndex(), 1);
   ExpectParaxial(zemax, DoubletByHand(), "zemax");

@@ -36,7 +36,7 @@ TEST(LensNames, ByNameNamePlusExtensionOrPath) {
   EXPECT_TRUE(EndsWith(ResolveLens("tessar.brendel.100mm"), "tessar.brendel.100mm.lens"));  // .lens first
   EXPECT_TRUE(EndsWith(ResolveLens("tessar.brendel.100mm.dat"), "tessar.brendel.100mm.dat"));
   EXPECT_TRUE(EndsWith(ResolveLens("tessar.brendel.100mm.lens"), "tessar.brendel.100mm.lens"));
-  EXPECT_NO_THROW(LoadLens("dgauss.50mm.dat"));
+  EXPECT_NO_THROW(LoadLens("dgauss.50mm.dat", GlassCatalog::Default()));
   // A path: absolute, or relative to the base directory (a scene's folder).
   fs::path dir = fs::temp_directory_path() / "objektiv_lens_names";
   fs::create_directories(dir / "lenses");
@@ -47,7 +47,7 @@ TEST(LensNames, ByNameNamePlusExtensionOrPath) {
   EXPECT_NE(msg.find("no lens file 'no.such.lens'"), std::string::npos) << msg;
   EXPECT_NE(msg.find("dgauss.50mm"), std::string::npos) << "lists the shipped lenses: " << msg;
   // A file type nobody reads is named with the ones that are.
-  msg = ErrorOf([&] { ReadLensFile((dir / "lenses" / "x.txt").string()); });
+  msg = ErrorOf([&] { ReadLensFile((dir / "lenses" / "x.txt").string(), GlassCatalog::Default()); });
   EXPECT_NE(msg.find(".lens, .dat or .zmx"), std::string::npos) << msg;
 }
 
@@ -117,7 +117,7 @@ TEST(KnownTypes, ErrorsListEveryRegisteredType) {
 
 TEST(Coatings, AreWarnedAboutOncePerLens) {
   test::LogCapture log;
-  ParseNativeLens("surface 40 5 N-BK7 10 coating=MgF2\nstop 2 air 8\nsurface -40 40 air 10 coating=V-coat\n", "c.lens");
+  ParseNativeLens("surface 40 5 N-BK7 10 coating=MgF2\nstop 2 air 8\nsurface -40 40 air 10 coating=V-coat\n", "c.lens", GlassCatalog::Default());
   EXPECT_EQ(log.Count("c.lens: coatings are not simulated yet"), 1) << log.Text();
   EXPECT_TRUE(log.Has("surface 1 (line 1, MgF2), surface 3 (line 3, V-coat)")) << log.Text();
 }

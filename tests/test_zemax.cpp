@@ -15,7 +15,7 @@ namespace {
 // dgauss.50mm.dat written as a Zemax file: the indices become model glasses (nd = the file's
 // index), so at the d line the lens is the same.
 std::string DoubleGaussZmx(const std::string& unit = "MM", double scale = 1) {
-  LensPrescription dat = LoadLens("dgauss.50mm");
+  LensPrescription dat = LoadLens("dgauss.50mm", GlassCatalog::Default());
   std::string z = fmt::format("VERS 140101\nMODE SEQ\nNAME Double Gauss test\nUNIT {} X W X CM MR CPMM\n", unit);
   z += "SURF 0\n  TYPE STANDARD\n  CURV 0.0 0 0 0 0 \"\"\n  DISZ INFINITY\n";
   int i = 1;
@@ -32,14 +32,14 @@ std::string DoubleGaussZmx(const std::string& unit = "MM", double scale = 1) {
 }
 
 TEST(Zemax, ReadsASequentialLensAsItsPbrtTwin) {
-  ParaxialData ref = ComputeParaxial(LoadLens("dgauss.50mm"));
-  LensPrescription z = ParseZemaxLens(DoubleGaussZmx(), "dg.zmx");
+  ParaxialData ref = ComputeParaxial(LoadLens("dgauss.50mm", GlassCatalog::Default()));
+  LensPrescription z = ParseZemaxLens(DoubleGaussZmx(), "dg.zmx", GlassCatalog::Default());
   EXPECT_EQ(z.name, "Double Gauss test");
   EXPECT_EQ(z.StopIndex(), 5);
   EXPECT_NEAR(ComputeParaxial(z).efl, ref.efl, 1e-9 * ref.efl);
   EXPECT_NEAR(ComputeParaxial(z).bfl, ref.bfl, 1e-9 * ref.efl);
   // Lens units: the same file in centimetres describes the same lens.
-  LensPrescription cm = ParseZemaxLens(DoubleGaussZmx("CM", 10), "dg_cm.zmx");
+  LensPrescription cm = ParseZemaxLens(DoubleGaussZmx("CM", 10), "dg_cm.zmx", GlassCatalog::Default());
   EXPECT_NEAR(ComputeParaxial(cm).efl, ref.efl, 1e-9 * ref.efl);
 }
 
@@ -49,7 +49,7 @@ TEST(Zemax, ReadsUtf16) {
     utf16 += c;
     utf16 += '\0';
   }
-  EXPECT_NEAR(ComputeParaxial(ParseZemaxLens(utf16, "u.zmx")).efl, ComputeParaxial(LoadLens("dgauss.50mm")).efl, 1e-9);
+  EXPECT_NEAR(ComputeParaxial(ParseZemaxLens(utf16, "u.zmx", GlassCatalog::Default())).efl, ComputeParaxial(LoadLens("dgauss.50mm", GlassCatalog::Default())).efl, 1e-9);
 }
 
 TEST(Zemax, EvenAsphereCoefficientsBecomeTheSag) {
@@ -57,7 +57,7 @@ TEST(Zemax, EvenAsphereCoefficientsBecomeTheSag) {
       "UNIT MM\nSURF 0\n DISZ INFINITY\nSURF 1\n STOP\n DISZ 1\n DIAM 4\n"
       "SURF 2\n TYPE EVENASPH\n CURV 0.02\n CONI -0.5\n PARM 1 0.001\n PARM 2 1e-6\n PARM 3 -2e-9\n GLAS N-BK7\n"
       " DISZ 5\n DIAM 10\nSURF 3\n CURV 0\n DISZ 40\n DIAM 10\nSURF 4\n DISZ 0\n DIAM 10\n";
-  LensPrescription l = ParseZemaxLens(z, "a.zmx");
+  LensPrescription l = ParseZemaxLens(z, "a.zmx", GlassCatalog::Default());
   double r = 6, c = 0.02, k = -0.5;
   double expected = c * r * r / (1 + std::sqrt(1 - (1 + k) * c * c * r * r)) + 0.001 * r * r + 1e-6 * std::pow(r, 4) -
                     2e-9 * std::pow(r, 6);
@@ -69,17 +69,17 @@ TEST(Zemax, EvenAsphereCoefficientsBecomeTheSag) {
 TEST(Zemax, UnsupportedThingsAreNamed) {
   std::string bad_type = "SURF 0\n DISZ INFINITY\nSURF 1\n STOP\n TYPE TOROIDAL\n DISZ 1\n DIAM 4\nSURF 2\n DISZ 0\n DIAM 4\n";
   try {
-    ParseZemaxLens(bad_type, "t.zmx");
+    ParseZemaxLens(bad_type, "t.zmx", GlassCatalog::Default());
     ADD_FAILURE();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("t.zmx:5: surface type TOROIDAL"), std::string::npos) << e.what();
   }
   std::string no_stop = "SURF 0\n DISZ INFINITY\nSURF 1\n DISZ 1\n DIAM 4\nSURF 2\n DISZ 0\n DIAM 4\n";
-  EXPECT_THROW(ParseZemaxLens(no_stop, "n.zmx"), InputError);
+  EXPECT_THROW(ParseZemaxLens(no_stop, "n.zmx", GlassCatalog::Default()), InputError);
   std::string unknown_glass = "SURF 0\n DISZ INFINITY\nSURF 1\n STOP\n DISZ 1\n DIAM 4\nSURF 2\n CURV 0.01\n GLAS NOPE\n"
                               " DISZ 3\n DIAM 4\nSURF 3\n DISZ 10\n DIAM 4\nSURF 4\n DISZ 0\n DIAM 4\n";
   try {
-    ParseZemaxLens(unknown_glass, "g.zmx");
+    ParseZemaxLens(unknown_glass, "g.zmx", GlassCatalog::Default());
     ADD_FAILURE();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("g.zmx:9: unknown glass 'NOPE'"), std::string::npos) << e.what();
@@ -87,7 +87,7 @@ TEST(Zemax, UnsupportedThingsAreNamed) {
   // An unknown keyword is a warning, not an error.
   std::string odd = "WEIRD 1 2 3\nSURF 0\n DISZ INFINITY\nSURF 1\n STOP\n DISZ 1\n DIAM 4\n ODDITY 5\nSURF 2\n CURV 0.01\n"
                     " GLAS N-BK7\n DISZ 3\n DIAM 4\nSURF 3\n DISZ 10\n DIAM 4\nSURF 4\n DISZ 0\n DIAM 4\n";
-  EXPECT_NO_THROW(ParseZemaxLens(odd, "o.zmx"));
+  EXPECT_NO_THROW(ParseZemaxLens(odd, "o.zmx", GlassCatalog::Default()));
 }
 
 TEST(Zemax, NonFiniteValuesAndIndicesBelowOneNameTheLine) {
@@ -134,7 +134,7 @@ TEST(Zemax, NonFiniteValuesAndIndicesBelowOneNameTheLine) {
     std::string text;
     for (const std::string& l : lines) text += l + "\n";
     try {
-      ParseZemaxLens(text, "bad.zmx");
+      ParseZemaxLens(text, "bad.zmx", GlassCatalog::Default());
       ADD_FAILURE() << "no error for line " << b.line << ": " << b.text;
     } catch (const InputError& e) {
       std::string msg = e.what();
@@ -146,7 +146,7 @@ TEST(Zemax, NonFiniteValuesAndIndicesBelowOneNameTheLine) {
   for (const char* word : {"INFINITY", "Infinity", "inf"}) {
     std::string text = DoubleGaussZmx();
     text.replace(text.find("DISZ INFINITY"), 13, std::string("DISZ ") + word);
-    EXPECT_NO_THROW(ParseZemaxLens(text, "ok.zmx")) << word;
+    EXPECT_NO_THROW(ParseZemaxLens(text, "ok.zmx", GlassCatalog::Default())) << word;
   }
 }
 

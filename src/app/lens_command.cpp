@@ -38,7 +38,7 @@ std::pair<double, double> ParseSensor(const std::string& s) {
 // The lens commands describe imaging lenses (an afocal system has no finite first-order data),
 // set up as AtParaxialInfinityFocus takes them: fully open, at the paraxial focus.
 LensSystem LoadImagingLens(const std::string& name, double lambda_nm) {
-  LensPrescription lens = LoadLens(name);
+  LensPrescription lens = LoadLens(name, GlassCatalog::Default());
   double efl = ComputeParaxial(lens, lambda_nm).efl;
   if (!std::isfinite(efl) || std::abs(efl) > 1e12)
     throw InputError(fmt::format("{}: the lens has no optical power (afocal): it forms no image", name));
@@ -48,7 +48,7 @@ LensSystem LoadImagingLens(const std::string& name, double lambda_nm) {
 int RunList() {
   std::printf("%-24s %10s %8s  %s\n", "name", "EFL (mm)", "f/", "source");
   for (const std::string& name : ShippedLensNames()) {
-    const LensSystem lens(LoadLens(name));
+    const LensSystem lens(LoadLens(name, GlassCatalog::Default()));
     std::printf("%-24s %10.3f %8.2f  %s\n", name.c_str(), lens.paraxial().efl, lens.paraxial().fnumber,
                 lens.prescription().source.c_str());
   }

@@ -52,7 +52,7 @@ LensPrescription LoadSceneLens(const Properties& p) {
     throw ErrorAt(loc, "{}", e.what());
   }
   try {
-    return ReadLensFile(path);
+    return ReadLensFile(path, GlassCatalog::Default());
   } catch (const InputError& e) {  // the lens file's own file:line, after the scene's
     throw ErrorAt(loc, "lens '{}': {}", name, e.what());
   }

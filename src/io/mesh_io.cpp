@@ -12,6 +12,7 @@
 #include "base/input_files.h"
 #include "base/log.h"
 #include "base/text_file.h"
+#include "io/obj_check.h"
 #include "io/ply_check.h"
 
 namespace objektiv {
@@ -43,7 +44,9 @@ MeshData LoadObj(const std::string& path, const MeshLoadOptions& options) {
   tinyobj::ObjReader reader;
   // From memory, with no material library: tinyobjloader would otherwise open any file an
   // 'mtllib' line names (materials come from the scene, not from .mtl files).
-  if (!reader.ParseFromString(ReadTextFile(path, "OBJ mesh", kMaxMeshFileBytes), "", config)) {
+  const std::string text = ReadTextFile(path, "OBJ mesh", kMaxMeshFileBytes);
+  CheckObjText(text, path);
+  if (!reader.ParseFromString(text, "", config)) {
     std::string err = reader.Error();
     while (!err.empty() && err.back() == '\n') err.pop_back();
     throw MakeInputError(path, 0, "cannot read OBJ: {}", err.empty() ? "unknown error" : err);

@@ -20,7 +20,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::shared_ptr<const Glass> ParseMedium(const std::string& m, const std::string& path, int line) {
+std::shared_ptr<const Glass> ParseMedium(const std::string& m, const GlassCatalog& glasses, const std::string& path,
+                                         int line) {
   if (m == "air") return nullptr;
   if (m.rfind("n=", 0) == 0) {
     double n = ParseFiniteNumber(m.substr(2), path, line);
@@ -35,7 +36,7 @@ std::shared_ptr<const Glass> ParseMedium(const std::string& m, const std::string
     if (nd < 1 || vd <= 0) throw MakeInputError(path, line, "model glass needs nd >= 1 and vd > 0");
     return std::make_shared<const Glass>(Glass::Model(nd, vd));
   }
-  const Glass* g = GlassCatalog::Default().Find(m);
+  const Glass* g = glasses.Find(m);
   if (!g) throw MakeInputError(path, line, "unknown glass '{}' (a catalog glass, air, n=..., or nd=...,vd=...)", m);
   // Catalog glasses live as long as the program: share without owning.
   return std::shared_ptr<const Glass>(std::shared_ptr<const Glass>(), g);
@@ -43,7 +44,7 @@ std::shared_ptr<const Glass> ParseMedium(const std::string& m, const std::string
 
 }  // namespace
 
-LensPrescription ParseNativeLens(const std::string& text, const std::string& path) {
+LensPrescription ParseNativeLens(const std::string& text, const std::string& path, const GlassCatalog& glasses) {
   LensPrescription lens;
   lens.name = fs::path(path).stem().string();
   lens.source = path;
@@ -93,7 +94,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
     }
     s.thickness = ParseFiniteNumber(f[next], path, number);
     if (s.thickness < 0) throw MakeInputError(path, number, "thickness must not be negative");
-    s.medium = ParseMedium(f[next + 1], path, number);
+    s.medium = ParseMedium(f[next + 1], glasses, path, number);
     s.semi_diameter = ParseFiniteNumber(f[next + 2], path, number);
     if (!(s.semi_diameter > 0)) throw MakeInputError(path, number, "semi-diameter must be positive");
     for (size_t i = next + 3; i < f.size(); ++i) {
@@ -144,13 +145,13 @@ bool IsLensExtension(const std::string& ext) {
 }
 }  // namespace
 
-LensPrescription ReadLensFile(const std::string& path) {
+LensPrescription ReadLensFile(const std::string& path, const GlassCatalog& glasses) {
   std::string ext = LowerExtension(path);
   if (ext == ".dat") return ReadPbrtLens(path);
-  if (ext == ".zmx") return ReadZemaxLens(path);
+  if (ext == ".zmx") return ReadZemaxLens(path, glasses);
   if (ext != ".lens")
     throw MakeInputError(path, 0, "unknown lens file type '{}' ({})", fs::path(path).extension().string(), LensFileExtensionList());
-  return ParseNativeLens(ReadTextFile(path, "lens file"), path);
+  return ParseNativeLens(ReadTextFile(path, "lens file"), path, glasses);
 }
 
 std::string ResolveLens(const std::string& name, const std::string& base_dir) {
@@ -169,8 +170,8 @@ std::string ResolveLens(const std::string& name, const std::string& base_dir) {
                                fs::path(name).is_relative() && !base_dir.empty() ? " in " + base_dir : "", known));
 }
 
-LensPrescription LoadLens(const std::string& name, const std::string& base_dir) {
-  return ReadLensFile(ResolveLens(name, base_dir));
+LensPrescription LoadLens(const std::string& name, const GlassCatalog& glasses, const std::string& base_dir) {
+  return ReadLensFile(ResolveLens(name, base_dir), glasses);
 }
 
 std::vector<std::string> ShippedLensNames() {

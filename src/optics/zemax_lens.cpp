@@ -36,9 +36,11 @@ double Thickness(const std::string& s, const std::string& path, int line) {
 
 }  // namespace
 
-LensPrescription ReadZemaxLens(const std::string& path) { return ParseZemaxLens(ReadTextFile(path, "Zemax file"), path); }
+LensPrescription ReadZemaxLens(const std::string& path, const GlassCatalog& glasses) {
+  return ParseZemaxLens(ReadTextFile(path, "Zemax file"), path, glasses);
+}
 
-LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path) {
+LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path, const GlassCatalog& glasses) {
   std::string text = DecodeToAscii(raw);
   std::istringstream lines(text);
   std::string line;
@@ -154,7 +156,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path)
     }
     if (!z.glass.empty() && z.glass != "AIR") {
       if (z.glass == "MIRROR") throw MakeInputError(path, z.line, "mirrors are not supported by the sequential refracting tracer");
-      const Glass* g = z.glass == "___BLANK" ? nullptr : GlassCatalog::Default().Find(z.glass);
+      const Glass* g = z.glass == "___BLANK" ? nullptr : glasses.Find(z.glass);
       if (g) {
         s.medium = std::shared_ptr<const Glass>(std::shared_ptr<const Glass>(), g);
       } else if (z.glass == "___BLANK" || (z.model_nd > 0 && z.model_vd > 0)) {

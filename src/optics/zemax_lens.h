@@ -5,11 +5,13 @@
 #pragma once
 #include <string>
 
+#include "optics/glass_catalog.h"
 #include "optics/lens_prescription.h"
 
 namespace objektiv {
 
-LensPrescription ReadZemaxLens(const std::string& path);
-LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path);
+// GLAS names are looked up in `glasses`.
+LensPrescription ReadZemaxLens(const std::string& path, const GlassCatalog& glasses);
+LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path, const GlassCatalog& glasses);
 
 }  // namespace objektiv
