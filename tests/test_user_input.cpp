@@ -154,5 +154,21 @@ TEST(IgnoredInput, IsWarnedAbout) {
   EXPECT_TRUE(log.Has("i.xml:6: film: the EXR is written as rgb float32, not rgba float32")) << log.Text();
 }
 
+// Text between tags and elements beside the root mean nothing in the language: said so.
+TEST(IgnoredInput, TextAndElementsOutsideTheLanguageAreWarnedAbout) {
+  test::LogCapture log;
+  LoadSceneFromString(R"(<scene version="3.0.0">
+<sensor type="perspective"><float name="fov" value="40">wide</float>
+<film type="hdrfilm"><integer name="width" value="6"/><integer name="height" value="4"/></film></sensor>
+stray words <![CDATA[more]]>
+</scene>
+<scene/>)",
+                      "t.xml", {});
+  EXPECT_TRUE(log.Has("t.xml:2: text inside <float> is ignored: \"wide\"")) << log.Text();
+  EXPECT_TRUE(log.Has("t.xml:4: text inside <scene> is ignored: \"stray words\"")) << log.Text();
+  EXPECT_TRUE(log.Has("inside <scene> is ignored: \"more\"")) << log.Text();
+  EXPECT_TRUE(log.Has("t.xml:6: <scene> beside the root <scene> is ignored")) << log.Text();
+}
+
 }  // namespace
 }  // namespace objektiv

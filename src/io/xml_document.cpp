@@ -13,6 +13,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <string_view>
 
 namespace objektiv {
 namespace {
@@ -97,7 +98,45 @@ class Parser {
       if (text[i] == '\n') ctx.line_starts.push_back(i + 1);
     pugi::xml_parse_result r = doc->load_buffer(text.data(), text.size(), pugi::parse_default | pugi::parse_ws_pcdata_single);
     if (!r) throw MakeInputError(name, ctx.LineOf(r.offset), "XML syntax error: {}", r.description());
+    WarnAboutIgnoredContent(*doc, ctx);
     return ctx;
+  }
+
+  // The language gives everything in elements and attributes: text between the tags, and
+  // elements beside the root <scene>, are warned about (pugixml walks the tree without
+  // recursion, so a deep document cannot overflow the stack here).
+  void WarnAboutIgnoredContent(const pugi::xml_document& doc, const FileContext& ctx) const {
+    struct Walker : pugi::xml_tree_walker {
+      const FileContext* ctx;
+      bool for_each(pugi::xml_node& n) override {
+        if (n.type() != pugi::node_pcdata && n.type() != pugi::node_cdata) return true;
+        std::string_view text = n.value();
+        size_t first = text.find_first_not_of(" \t\r\n");
+        if (first == std::string_view::npos) return true;
+        std::string_view shown = text.substr(first, 40);
+        shown = shown.substr(0, shown.find_first_of("\r\n"));
+        const bool cut = text.find_first_not_of(" \t\r\n", first + shown.size()) != std::string_view::npos;
+        shown = shown.substr(0, shown.find_last_not_of(" \t") + 1);
+        // The line of the text's first character (a node's offset is where its whitespace starts).
+        const int line = ctx->LineOf(n.offset_debug() + std::ptrdiff_t(first));
+        spdlog::warn("{}:{}: text inside <{}> is ignored: \"{}{}\"", ctx->path, line,
+                     n.parent().type() == pugi::node_element ? n.parent().name() : "the document", shown,
+                     cut ? "..." : "");
+        return true;
+      }
+    } walker;
+    walker.ctx = &ctx;
+    const_cast<pugi::xml_document&>(doc).traverse(walker);
+    bool root_seen = false;
+    for (pugi::xml_node top : doc.children()) {
+      if (top.type() != pugi::node_element) continue;
+      if (!root_seen && std::string_view(top.name()) == "scene") {
+        root_seen = true;
+        continue;
+      }
+      Location loc = Loc(ctx, top);
+      spdlog::warn("{}:{}: <{}> beside the root <scene> is ignored", loc.file, loc.line, top.name());
+    }
   }
 
   Location Loc(const FileContext& ctx, const pugi::xml_node& n) const { return {ctx.path, ctx.LineOf(n.offset_debug())}; }
