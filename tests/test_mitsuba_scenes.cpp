@@ -70,7 +70,7 @@ TEST(MitsubaScenes, ValueTypesInEveryDocumentedForm) {
     <bsdf type="plastic"><rgb name="diffuse_reflectance" value="0.1 0.2 0.3"/></bsdf></shape>
   <shape type="sphere"><point name="center" x="-4"/>
     <bsdf type="diffuse" id="tex-mat"><texture type="checkerboard" name="reflectance">
-      <rgb name="color0" value="0.5"/><spectrum name="color1" value="400:0.1, 700:0.9"/></texture></bsdf></shape>
+      <rgb name="color0" value="0.5"/><spectrum name="color1" value="400:0.1 550:0.3, 700:0.9"/></texture></bsdf></shape>
   <alias id="tex-mat" as="also-tex-mat"/>
   <shape type="cube"><ref id="also-tex-mat"/>
     <transform name="to_world"><translate value="0, -3, 0"/><rotate value="0, 1, 0" angle="30"/><scale value="2, 1, 1"/>

@@ -10,6 +10,7 @@
 #include "io/scene_loader.h"
 #include "io/xml_document.h"
 #include "log_capture.h"
+#include "render_helpers.h"
 #include "optics/lens_file.h"
 
 namespace objektiv {
@@ -122,11 +123,13 @@ TEST(Coatings, AreWarnedAboutOncePerLens) {
   EXPECT_TRUE(log.Has("surface 1 (line 1, MgF2), surface 3 (line 3, V-coat)")) << log.Text();
 }
 
+std::string ShiftedScene(double shift) {
+  return RealisticScene(
+      fmt::format("<string name=\"lens\" value=\"dgauss.50mm\"/>\n<float name=\"shift_x\" value=\"{}\"/>", shift));
+}
+
 TEST(LensShift, BeyondTheImageCircleIsWarnedAbout) {
-  auto scene = [](double shift) {
-    return RealisticScene(fmt::format("<string name=\"lens\" value=\"dgauss.50mm\"/>\n<float name=\"shift_x\" value=\"{}\"/>",
-                                      shift));
-  };
+  auto scene = ShiftedScene;
   {
     test::LogCapture log;
     LoadSceneFromString(scene(2), "s.xml", {});
@@ -136,6 +139,14 @@ TEST(LensShift, BeyondTheImageCircleIsWarnedAbout) {
   LoadSceneFromString(scene(40), "s.xml", {});
   EXPECT_TRUE(log.Has("s.xml:4: the lens shift (40, 0) mm puts the film's corners")) << log.Text();
   EXPECT_TRUE(log.Has("beyond its image circle")) << log.Text();
+}
+
+// A film shifted wholly off the lens traces no camera ray: no pass rate (it read 100%).
+TEST(LensShift, AFilmThatSeesNoLensHasNoPassRate) {
+  test::RenderResult r = test::RenderXml(ShiftedScene(200));
+  EXPECT_EQ(r.stats.camera_rays_traced, 0u);
+  EXPECT_FALSE(r.stats.CameraPassRate().has_value());
+  EXPECT_TRUE(test::RenderXml(ShiftedScene(0)).stats.CameraPassRate().has_value());
 }
 
 // Properties that are read but do nothing here are said to do nothing.

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "base/error.h"
+#include "log_capture.h"
 #include "optics/lens_file.h"
 #include "optics/lens_tracer.h"
 #include "optics/paraxial.h"
@@ -50,6 +51,17 @@ TEST(Zemax, ReadsUtf16) {
     utf16 += '\0';
   }
   EXPECT_NEAR(ComputeParaxial(ParseZemaxLens(utf16, "u.zmx", GlassCatalog::Default())).efl, ComputeParaxial(LoadLens("dgauss.50mm", GlassCatalog::Default())).efl, 1e-9);
+}
+
+// The system aperture of a .zmx (ENPD, FNUM, OBNA, FLOA) is not what sets the stop here: each
+// is named in a warning with its value (ENPD was ignored silently).
+TEST(Zemax, SystemApertureIsWarnedAboutByName) {
+  test::LogCapture log;
+  ParseZemaxLens("UNIT MM\nENPD 10\nFNUM 4 0\nSURF 0\n DISZ INFINITY\nSURF 1\n STOP\n DISZ 1\n DIAM 4\n"
+                 "SURF 2\n CURV 0.02\n GLAS N-BK7\n DISZ 5\n DIAM 10\nSURF 3\n DISZ 40\n DIAM 10\nSURF 4\n",
+                 "ap.zmx", GlassCatalog::Default());
+  EXPECT_TRUE(log.Has("ap.zmx:2: the system aperture ENPD 10 is not used")) << log.Text();
+  EXPECT_TRUE(log.Has("ap.zmx:3: the system aperture FNUM 4 is not used")) << log.Text();
 }
 
 TEST(Zemax, EvenAsphereCoefficientsBecomeTheSag) {

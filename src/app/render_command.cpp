@@ -4,6 +4,7 @@
 #include <map>
 #include <thread>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
@@ -41,7 +42,7 @@ void WriteStatsJson(const std::string& path, const RenderStats& s, int threads) 
                               {"nan_count", s.nan_count},
                               {"inf_count", s.inf_count},
                               {"camera_rays_traced", s.camera_rays_traced},
-                              {"camera_pass_rate", s.CameraPassRate()},
+                              {"camera_pass_rate", s.CameraPassRate() ? nlohmann::json(*s.CameraPassRate()) : nlohmann::json(nullptr)},
                               {"partial", s.Partial()},
                               {"pixels", s.pixels},
                               {"pixels_completed", s.pixels_completed}};
@@ -171,9 +172,12 @@ int RunRender(const RenderArgs& a) {
   WritePng(png.string(), ApplyToneMap(linear, fs_.tonemap));
   if (!a.stats_json.empty()) WriteStatsJson(a.stats_json, stats, threads);
   if (!a.quiet)
-    std::printf("%s: %dx%d, %d spp, %.2f s, %.3g samples/s, %.2f Mrays/s, camera pass rate %.1f%%, NaN %llu, Inf %llu -> %s, %s%s\n",
+    std::printf("%s: %dx%d, %d spp, %.2f s, %.3g samples/s, %.2f Mrays/s, %s, NaN %llu, Inf %llu -> %s, %s%s\n",
                 a.scene.c_str(), stats.width, stats.height, stats.spp, stats.seconds, stats.SamplesPerSecond(),
-                stats.MraysPerSecond(), 100 * stats.CameraPassRate(), (unsigned long long)stats.nan_count,
+                stats.MraysPerSecond(),
+                stats.CameraPassRate() ? fmt::format("camera pass rate {:.1f}%", 100 * *stats.CameraPassRate()).c_str()
+                                       : "no camera ray traced",
+                (unsigned long long)stats.nan_count,
                 (unsigned long long)stats.inf_count, exr.string().c_str(), png.string().c_str(),
                 stats.Partial() ? " (partial)" : "");
   if (stats.Partial())

@@ -348,9 +348,9 @@ class Parser {
         s.value = float(ParseDouble(value, loc));
         return s;
       }
-      std::string token;
-      std::stringstream ss(value);
-      while (std::getline(ss, token, ',')) {
+      // Entries separated by commas, spaces or both, as Mitsuba 3 tokenizes them.
+      std::replace(value.begin(), value.end(), ',', ' ');
+      for (const std::string& token : SplitFields(value)) {
         size_t colon = token.find(':');
         if (colon == std::string::npos) throw ErrorAt(loc, "spectrum entry '{}' is not lambda:value", token);
         entries.push_back({token.substr(0, colon), token.substr(colon + 1), loc});

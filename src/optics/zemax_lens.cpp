@@ -54,9 +54,9 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
   };
   // Keywords that carry nothing for sequential refraction of a rotationally symmetric lens.
   static const std::set<std::string> kIgnored = {
-      "VERS", "MODE", "NOTE", "PFIL", "LANG", "ENPD", "ENVD", "GFAC", "GCAT", "RAIM", "PUSH", "SDMA", "FTYP", "ROPD",
+      "VERS", "MODE", "NOTE", "PFIL", "LANG", "ENVD", "GFAC", "GCAT", "RAIM", "PUSH", "SDMA", "FTYP", "ROPD",
       "PICB", "XFLN", "YFLN", "FWGN", "VDXN", "VDYN", "VCXN", "VCYN", "VANN", "WAVM", "PWAV", "GLRS", "GSTD", "NSCD",
-      "COFN", "SUMM", "FLOA", "MNUM", "MOFF", "TOL", "MNCA", "MNEA", "MNCG", "MNEG", "MXCA", "MXCG", "RGLA", "TRAC",
+      "COFN", "SUMM", "MNUM", "MOFF", "TOL", "MNCA", "MNEA", "MNCG", "MNEG", "MXCA", "MXCG", "RGLA", "TRAC",
       "HIDE", "SLAB", "MAZH", "COMM", "FLAP", "POPS", "BLNK", "TCEN", "XDAT", "YDAT", "FIMP", "OBNA", "ZVDX", "ZVDY",
       "ZVCX", "ZVCY", "ZVAN", "WAVN", "WWGN", "CONF", "DMFS", "OPDX", "MIRR", "XFIE", "YFIE"};
   ZSurface* cur = nullptr;
@@ -89,6 +89,17 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
       else if (f[0] == "IN") unit = 25.4;
       else if (f[0] == "METER" || f[0] == "M") unit = 1000;
       else throw MakeInputError(path, number, "unknown lens unit '{}'", f[0]);
+      continue;
+    }
+    // The system aperture (entrance pupil diameter, image-space f-number, object-space NA,
+    // float by stop size): here the stop's own DIAM sets it, and a scene or `lens info` sets
+    // the f-number or the stop's diameter.
+    if (key == "ENPD" || key == "FNUM" || key == "OBNA" || key == "FLOA") {
+      std::string value = f.empty() ? "" : " " + f[0];
+      if (warned.insert(key).second)
+        spdlog::warn("{}:{}: the system aperture {}{} is not used: the stop's DIAM sets the aperture (a scene sets the "
+                     "f-number or the stop's diameter)",
+                     path, number, key, value);
       continue;
     }
     if (!cur) {

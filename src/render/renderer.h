@@ -1,6 +1,7 @@
 // Renders an image: the crop window in tiles over TBB, each tile a block of work for the
 // integrator (render/block_context.h); progress, the stop flag and statistics are kept here.
 #pragma once
+#include <optional>
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -25,7 +26,12 @@ struct RenderStats {
   double SamplesPerSecond() const { return seconds > 0 ? samples / seconds : 0; }
   double MraysPerSecond() const { return seconds > 0 ? rays / seconds * 1e-6 : 0; }
   // Camera rays that came out of the lens per camera ray traced (1 for ideal cameras).
-  double CameraPassRate() const { return camera_rays_traced ? double(camera_rays_passed) / camera_rays_traced : 1; }
+  // The fraction of camera rays traced through a lens that came out of its front; none where
+  // no ray was traced through a lens (an ideal camera, or a film that sees no lens at all).
+  std::optional<double> CameraPassRate() const {
+    if (camera_rays_traced == 0) return std::nullopt;
+    return double(camera_rays_passed) / camera_rays_traced;
+  }
 };
 
 struct RenderOptions {
