@@ -1,5 +1,6 @@
 // `objektiv lens list` and `objektiv lens info LENS`: the lens library's command-line face.
 #include <cmath>
+#include <filesystem>
 
 #include <nlohmann/json.hpp>
 
@@ -45,12 +46,23 @@ LensSystem LoadImagingLens(const std::string& name, double lambda_nm) {
   return AtParaxialInfinityFocus(std::move(lens), lambda_nm);
 }
 
+// One row per shipped lens file: the name alone loads the first format of kLensFileExtensions,
+// a lens shipped in another format too is listed again with its extension. The paraxial
+// f-number (EFL / entrance pupil) and the real one (radiometric, what a scene's `fnumber`
+// is compared with) both, since they differ for lenses with pupil aberration.
 int RunList() {
-  std::printf("%-24s %10s %8s  %s\n", "name", "EFL (mm)", "f/", "source");
+  std::printf("%-28s %10s %8s %8s  %s\n", "name", "EFL (mm)", "f/ parax", "f/ real", "source");
+  const std::filesystem::path dir = std::filesystem::path(DataDirectory()) / "lenses";
   for (const std::string& name : ShippedLensNames()) {
-    const LensSystem lens(LoadLens(name, GlassCatalog::Default()));
-    std::printf("%-24s %10.3f %8.2f  %s\n", name.c_str(), lens.paraxial().efl, lens.paraxial().fnumber,
-                lens.prescription().source.c_str());
+    bool first = true;
+    for (const char* ext : kLensFileExtensions) {
+      if (!std::filesystem::is_regular_file(dir / (name + ext))) continue;
+      const std::string shown = first ? name : name + ext;
+      first = false;
+      const LensSystem lens(LoadLens(shown, GlassCatalog::Default()));
+      std::printf("%-28s %10.3f %8.2f %8.2f  %s\n", shown.c_str(), lens.paraxial().efl, lens.paraxial().fnumber,
+                  WideOpenFNumber(lens.prescription()), lens.prescription().source.c_str());
+    }
   }
   return 0;
 }
