@@ -122,10 +122,4 @@ const ColorSpace& ColorSpace::ACEScg() {
   return cs;
 }
 
-const ColorSpace* ColorSpace::ByName(std::string_view name) {
-  if (name == "rec709" || name == "srgb" || name == "linear-srgb") return &Rec709();
-  if (name == "acescg") return &ACEScg();
-  return nullptr;
-}
-
 }  // namespace objektiv

@@ -3,7 +3,6 @@
 // the space's illuminant round-trips exactly.
 #pragma once
 #include <array>
-#include <string_view>
 
 #include "base/vec.h"
 
@@ -22,7 +21,6 @@ struct ColorSpace {
   static const ColorSpace& Rec709();
   // ACES AP1 primaries with the ACES white; XYZ (D65-referred) is adapted with Bradford.
   static const ColorSpace& ACEScg();
-  static const ColorSpace* ByName(std::string_view name);
 
   Vec3f ToRGB(const Vec3f& xyz) const { return Mul(xyz_to_rgb, xyz); }
   Vec3f ToXYZ(const Vec3f& rgb) const { return Mul(rgb_to_xyz, rgb); }

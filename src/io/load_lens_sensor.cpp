@@ -34,6 +34,13 @@ std::string FormatKey(const std::string& name) {
   return key;
 }
 
+constexpr Named<LensModel> kLensModels[] = {
+    {"real", LensModel::kReal}, {"thick", LensModel::kThick}, {"thin", LensModel::kThin}};
+constexpr Named<Vignetting> kVignettingModes[] = {{"full", Vignetting::kFull},
+                                                  {"cos4", Vignetting::kNatural},
+                                                  {"aperture", Vignetting::kOptical},
+                                                  {"none", Vignetting::kNone}};
+
 // A lens file relative to the scene, or a shipped lens by name (see ResolveLens).
 LensPrescription LoadSceneLens(const Properties& p) {
   std::string name = p.String("lens");
@@ -90,17 +97,13 @@ void WarnIfShiftedPastTheImageCircle(const Properties& p, const LensCameraSettin
                at.file, at.line, s.shift.x, s.shift.y, corner, circle);
 }
 
-}  // namespace
-
-std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const Transform& to_world, int width, int height,
-                                        float far_clip) {
+// The camera a <sensor type="realistic"> describes.
+std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b) {
   LensCameraSpec spec;
   spec.lens = LoadSceneLens(p);
   // The prescription scaled as a whole to another focal length (radii, thicknesses, apertures).
   if (p.Has("focal_length")) spec.lens = ScaledToFocalLength(spec.lens, p.FloatIn("focal_length", 50, 1e-3, 1e6));
-  static const std::map<std::string, LensModel> models = {
-      {"real", LensModel::kReal}, {"thick", LensModel::kThick}, {"thin", LensModel::kThin}};
-  spec.model = models.at(p.Choice("lens_model", "real", {"real", "thick", "thin"}));
+  spec.model = p.Choice("lens_model", LensModel::kReal, kLensModels);
   if (p.Has("fnumber") && p.Has("aperture_diameter"))
     throw ErrorAt(p.LocOf("aperture_diameter"), "give either fnumber or aperture_diameter, not both");
   if (p.Has("fnumber")) spec.fnumber = p.FloatIn("fnumber", 0, 0.1, 1e4);
@@ -116,18 +119,14 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const Transform& to
   }
   spec.focus_distance = p.FloatIn("focus_distance", INFINITY, 1e-6, INFINITY);
   LensCameraSettings& s = spec.settings;
-  Vec2d sensor = SensorSize(p, width, height);
+  Vec2d sensor = SensorSize(p, b.width, b.height);
   s.sensor_width = sensor.x, s.sensor_height = sensor.y;
   s.shift = Vec2d(p.FloatIn("shift_x", 0, -1e4, 1e4), p.FloatIn("shift_y", 0, -1e4, 1e4));
   s.metres_per_unit = p.FloatIn("metres_per_unit", 1, 1e-12, 1e12);
   s.exposure_scale = p.FloatIn("exposure_scale", 1, 0, 1e30);
-  static const std::map<std::string, Vignetting> modes = {{"full", Vignetting::kFull},
-                                                          {"cos4", Vignetting::kNatural},
-                                                          {"aperture", Vignetting::kOptical},
-                                                          {"none", Vignetting::kNone}};
-  s.vignetting = modes.at(p.Choice("vignetting", "full", {"full", "cos4", "aperture", "none"}));
+  s.vignetting = p.Choice("vignetting", Vignetting::kFull, kVignettingModes);
   s.transmission = p.Bool("transmission", true);
-  s.far_clip = far_clip;
+  s.far_clip = b.far_clip;
   if (p.Has("aperture_mask")) {
     std::string path = ResolvePath(p.LocOf("aperture_mask"), p.String("aperture_mask"));
     try {
@@ -138,12 +137,39 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const Transform& to
   }
   std::unique_ptr<Camera> camera;
   try {
-    camera = MakeLensCamera(to_world, width, height, spec);
+    camera = MakeLensCamera(b.to_world, b.width, b.height, spec);
   } catch (const InputError& e) {
     throw ErrorAt(p.loc(), "{}", e.what());
   }
   WarnIfShiftedPastTheImageCircle(p, s, *camera);
   return camera;
+}
+
+}  // namespace
+
+SensorRegistry::PluginType RealisticSensorPlugin() {
+  return {"realistic",
+          {{"lens", PropType::kString},
+           {"focal_length", PropType::kFloat},
+           {"lens_model", kLensModels},
+           {"fnumber", PropType::kFloat},
+           {"aperture_diameter", PropType::kFloat},
+           {"blades", PropType::kInteger},
+           {"blade_curvature", PropType::kFloat},
+           {"blade_rotation", PropType::kFloat},
+           {"focus_point", PropType::kPoint},
+           {"focus_distance", PropType::kFloat},
+           {"sensor", PropType::kString},
+           {"sensor_width", PropType::kFloat},
+           {"sensor_height", PropType::kFloat},
+           {"shift_x", PropType::kFloat},
+           {"shift_y", PropType::kFloat},
+           {"metres_per_unit", PropType::kFloat},
+           {"exposure_scale", PropType::kFloat},
+           {"vignetting", kVignettingModes},
+           {"transmission", PropType::kBoolean},
+           {"aperture_mask", PropType::kString}},
+          BuildLensCamera};
 }
 
 }  // namespace objektiv

@@ -1,126 +1,25 @@
-// Builders for spectra, textures (<texture>) and materials (<bsdf>).
+// The <bsdf> plugins (materials).
 #include <cmath>
-#include <functional>
 
 #include "base/cie.h"
-#include "io/image_io.h"
 #include "io/loader_context.h"
 #include "optics/glass_catalog.h"
 #include "scene/conductor_data.h"
 
 namespace objektiv {
-
-Spectrum MakeSpectrum(const SpectrumValue& v, SpectrumUsage usage) {
-  switch (v.kind) {
-    case SpectrumValue::Kind::kConstant:
-      // A constant emission is an equal-energy spectrum in Mitsuba; a constant reflectance is flat.
-      return usage == SpectrumUsage::kIlluminant ? Spectrum::RgbIlluminant(Vec3f(v.value)) : Spectrum(v.value);
-    case SpectrumValue::Kind::kRgb:
-      switch (usage) {
-        case SpectrumUsage::kAlbedo:
-          return Spectrum::RgbAlbedo(v.rgb);
-        case SpectrumUsage::kUnbounded:
-          return Spectrum::RgbUnbounded(v.rgb);
-        case SpectrumUsage::kIlluminant:
-          return Spectrum::RgbIlluminant(v.rgb);
-      }
-      break;
-    case SpectrumValue::Kind::kSampled:
-      return Spectrum::Tabulated(v.lambdas, v.values);
-    case SpectrumValue::Kind::kBlackbody:
-      return Spectrum::Blackbody(v.temperature, v.value);
-    case SpectrumValue::Kind::kD65:
-      return Spectrum::D65(v.value);
-    case SpectrumValue::Kind::kIlluminantA: {
-      // CIE illuminant A is Planck's law at 2856 K, normalised to luminance 1.
-      Spectrum a = Spectrum::Blackbody(2856);
-      return a.Scaled(v.value / SpectrumToY(a));
-    }
-  }
-  return Spectrum(0.f);
-}
-
-std::shared_ptr<const SpectrumTexture> GetTexture(const Properties& props, const std::string& name, SpectrumUsage usage,
-                                                  float fallback, LoaderContext& ctx) {
-  if (auto obj = props.Object(name)) {
-    if (obj->tag != "texture") throw ErrorAt(obj->loc, "'{}' must be a texture, not a {}", name, obj->tag);
-    return BuildTexture(*obj, usage, ctx);
-  }
-  if (auto v = props.SpectrumProp(name)) {
-    if (usage == SpectrumUsage::kAlbedo && v->kind == SpectrumValue::Kind::kRgb &&
-        (MinComponent(v->rgb) < 0 || MaxComponent(v->rgb) > 1))
-      throw ErrorAt(props.LocOf(name), "reflectance '{}' must lie in [0, 1]", name);
-    return std::make_shared<ConstantTexture>(MakeSpectrum(*v, usage));
-  }
-  SpectrumValue s;
-  s.kind = SpectrumValue::Kind::kConstant;
-  s.value = fallback;
-  return std::make_shared<ConstantTexture>(MakeSpectrum(s, usage));
-}
-
 namespace {
-
-Transform ToUv(const Properties& p) { return p.GetTransform("to_uv"); }
-
-using TextureFactory = std::function<std::shared_ptr<const SpectrumTexture>(const Properties&, SpectrumUsage, LoaderContext&)>;
-
-const std::map<std::string, TextureFactory>& TextureRegistry() {
-  static const std::map<std::string, TextureFactory> registry = {
-      {"bitmap",
-       [](const Properties& p, SpectrumUsage usage, LoaderContext&) -> std::shared_ptr<const SpectrumTexture> {
-         std::string file = ResolvePath(p.LocOf("filename"), p.String("filename"));
-         bool raw = p.Bool("raw", false);
-         std::string filter = p.Choice("filter_type", "bilinear", {"bilinear", "nearest"});
-         std::string wrap = p.Choice("wrap_mode", "repeat", {"repeat", "mirror", "clamp"});
-         Image img = ReadImageRgb(file, raw);
-         WrapMode wm = wrap == "repeat" ? WrapMode::kRepeat : wrap == "mirror" ? WrapMode::kMirror : WrapMode::kClamp;
-         return std::make_shared<BitmapTexture>(std::move(img), usage,
-                                                filter == "nearest" ? FilterMode::kNearest : FilterMode::kBilinear, wm,
-                                                ToUv(p));
-       }},
-      {"checkerboard",
-       [](const Properties& p, SpectrumUsage usage, LoaderContext& ctx) -> std::shared_ptr<const SpectrumTexture> {
-         return std::make_shared<CheckerboardTexture>(GetTexture(p, "color0", usage, 0.4f, ctx),
-                                                      GetTexture(p, "color1", usage, 0.2f, ctx), ToUv(p));
-       }},
-  };
-  return registry;
-}
-
-}  // namespace
-
-std::shared_ptr<const SpectrumTexture> BuildTexture(const ObjectNode& node, SpectrumUsage usage, LoaderContext& ctx) {
-  auto key = std::make_pair(&node, int(usage));
-  if (auto it = ctx.textures.find(key); it != ctx.textures.end()) return it->second;
-  const auto& registry = TextureRegistry();
-  auto it = registry.find(node.type);
-  if (it == registry.end()) UnknownType(node, registry);
-  Properties props(node);
-  auto tex = it->second(props, usage, ctx);
-  props.WarnUnused();
-  ctx.textures[key] = tex;
-  return tex;
-}
-
-namespace {
-
-const Property* FindProperty(const Properties& p, const std::string& name) {
-  for (const Property& q : p.node().props)
-    if (q.name == name) return &q;
-  return nullptr;
-}
 
 // An index of refraction given as a number or one of Mitsuba's names.
 double GetIor(const Properties& p, const std::string& name, double fallback) {
   if (!p.Has(name)) return fallback;
-  const Property* prop = FindProperty(p, name);
-  if (std::holds_alternative<std::string>(prop->data)) {
+  if (p.TypeOf(name) == ValueType::kString) {
     std::string s = p.String(name);
     if (auto v = NamedIor(s)) return *v;
-    throw ErrorAt(prop->loc, "unknown index of refraction '{}' (a number, or a name such as bk7, water, air, diamond)", s);
+    throw ErrorAt(p.LocOf(name),
+                  "unknown index of refraction '{}' (a number, or a name such as bk7, water, air, diamond)", s);
   }
   double v = p.Float(name);
-  if (!(v > 0)) throw ErrorAt(prop->loc, "index of refraction must be positive, got {}", v);
+  if (!(v > 0)) throw ErrorAt(p.LocOf(name), "index of refraction must be positive, got {}", v);
   return v;
 }
 
@@ -153,7 +52,7 @@ IorModel GetInteriorIor(const Properties& p) {
     return CheckedDispersion(IorModel::Sellmeier(b, c), p.LocOf("sellmeier_b1"), "Sellmeier");
   }
   // A name that is not one of Mitsuba's constants is looked up in the glass catalogs.
-  if (p.Has("int_ior") && std::holds_alternative<std::string>(FindProperty(p, "int_ior")->data)) {
+  if (p.TypeOf("int_ior") == ValueType::kString) {
     std::string name = p.String("int_ior");
     if (!NamedIor(name)) {
       const Glass* glass = GlassCatalog::Default().Find(name);
@@ -168,9 +67,16 @@ IorModel GetInteriorIor(const Properties& p) {
   return IorModel(GetIor(p, "int_ior", *NamedIor("bk7")));
 }
 
+enum class Distribution { kGgx };
+constexpr Named<Distribution> kDistributions[] = {{"ggx", Distribution::kGgx}};
+
 // Roughness: alpha, or alpha_u and alpha_v (anisotropic); only GGX is implemented.
+const std::vector<PropertyDecl> kRoughness = {{"distribution", kDistributions},
+                                              {"alpha", PropType::kFloat},
+                                              {"alpha_u", PropType::kFloat},
+                                              {"alpha_v", PropType::kFloat}};
 std::pair<float, float> GetAlpha(const Properties& p, float fallback) {
-  p.Choice("distribution", "ggx", {"ggx"});
+  p.Choice("distribution", Distribution::kGgx, kDistributions);
   float a = float(p.FloatIn("alpha", fallback, 0, 10));
   return {float(p.FloatIn("alpha_u", a, 0, 10)), float(p.FloatIn("alpha_v", a, 0, 10))};
 }
@@ -204,58 +110,76 @@ std::shared_ptr<Material> MakeConductor(const Properties& p, LoaderContext& ctx,
                                              GetTexture(p, "specular_reflectance", SpectrumUsage::kUnbounded, 1, ctx));
 }
 
-using MaterialFactory = std::function<std::shared_ptr<Material>(const Properties&, LoaderContext&)>;
-std::shared_ptr<Material> MakeMaterial(const ObjectNode& node, LoaderContext& ctx);
+const std::vector<PropertyDecl> kDielectric = {{"int_ior", PropType::kFloatOrString},
+                                               {"ext_ior", PropType::kFloatOrString},
+                                               {"cauchy_a", PropType::kFloat},
+                                               {"cauchy_b", PropType::kFloat},
+                                               {"cauchy_c", PropType::kFloat},
+                                               {"sellmeier_b1", PropType::kFloat},
+                                               {"sellmeier_b2", PropType::kFloat},
+                                               {"sellmeier_b3", PropType::kFloat},
+                                               {"sellmeier_c1", PropType::kFloat},
+                                               {"sellmeier_c2", PropType::kFloat},
+                                               {"sellmeier_c3", PropType::kFloat},
+                                               {"specular_reflectance", PropType::kSpectrumOrTexture},
+                                               {"specular_transmittance", PropType::kSpectrumOrTexture},
+                                               {"absorption", PropType::kSpectrum}};
+const std::vector<PropertyDecl> kConductor = {{"material", PropType::kString},
+                                              {"eta", PropType::kSpectrum},
+                                              {"k", PropType::kSpectrum},
+                                              {"specular_reflectance", PropType::kSpectrumOrTexture}};
 
-const std::map<std::string, MaterialFactory>& MaterialRegistry() {
-  static const std::map<std::string, MaterialFactory> registry = {
-      {"diffuse",
-       [](const Properties& p, LoaderContext& ctx) -> std::shared_ptr<Material> {
-         return std::make_shared<DiffuseMaterial>(GetTexture(p, "reflectance", SpectrumUsage::kAlbedo, 0.5f, ctx));
-       }},
-      {"dielectric", [](const Properties& p, LoaderContext& ctx) { return MakeDielectric(p, ctx, false); }},
-      {"roughdielectric", [](const Properties& p, LoaderContext& ctx) { return MakeDielectric(p, ctx, true); }},
-      {"conductor", [](const Properties& p, LoaderContext& ctx) { return MakeConductor(p, ctx, false); }},
-      {"roughconductor", [](const Properties& p, LoaderContext& ctx) { return MakeConductor(p, ctx, true); }},
-      {"plastic",
-       [](const Properties& p, LoaderContext& ctx) -> std::shared_ptr<Material> {
-         double int_ior = GetIor(p, "int_ior", 1.49), ext_ior = GetIor(p, "ext_ior", 1.000277);
-         return std::make_shared<PlasticMaterial>(float(int_ior), float(ext_ior),
-                                                  GetTexture(p, "diffuse_reflectance", SpectrumUsage::kAlbedo, 0.5f, ctx),
-                                                  GetTexture(p, "specular_reflectance", SpectrumUsage::kUnbounded, 1, ctx),
-                                                  p.Bool("nonlinear", false));
-       }},
-      {"twosided",
-       [](const Properties& p, LoaderContext& ctx) -> std::shared_ptr<Material> {
-         auto inner = p.Children("bsdf");
-         if (inner.size() != 1) throw ErrorAt(p.loc(), "twosided needs exactly one nested <bsdf>, got {}", inner.size());
-         const ObjectNode& in = *inner[0];
-         if (in.type == "twosided") throw ErrorAt(in.loc, "twosided cannot wrap another twosided");
-         // A private copy: the same inner BSDF may be used one-sided elsewhere.
-         std::shared_ptr<Material> m = MakeMaterial(in, ctx);
-         m->SetTwoSided(true);
-         return m;
-       }},
-  };
-  return registry;
+std::shared_ptr<Material> MakeDiffuse(const Properties& p, LoaderContext& ctx) {
+  return std::make_shared<DiffuseMaterial>(GetTexture(p, "reflectance", SpectrumUsage::kAlbedo, 0.5f, ctx));
 }
 
-// A new material from a <bsdf> (its unused properties warned about).
-std::shared_ptr<Material> MakeMaterial(const ObjectNode& node, LoaderContext& ctx) {
-  const auto& registry = MaterialRegistry();
-  auto it = registry.find(node.type);
-  if (it == registry.end()) UnknownType(node, registry);
-  Properties props(node);
-  std::shared_ptr<Material> material = it->second(props, ctx);
-  props.WarnUnused();
-  return material;
+std::shared_ptr<Material> MakePlastic(const Properties& p, LoaderContext& ctx) {
+  double int_ior = GetIor(p, "int_ior", 1.49), ext_ior = GetIor(p, "ext_ior", 1.000277);
+  return std::make_shared<PlasticMaterial>(
+      float(int_ior), float(ext_ior), GetTexture(p, "diffuse_reflectance", SpectrumUsage::kAlbedo, 0.5f, ctx),
+      GetTexture(p, "specular_reflectance", SpectrumUsage::kUnbounded, 1, ctx), p.Bool("nonlinear", false));
+}
+
+std::shared_ptr<Material> MakeTwoSided(const Properties& p, LoaderContext& ctx) {
+  auto inner = p.Children("bsdf");
+  if (inner.size() != 1) throw ErrorAt(p.loc(), "twosided needs exactly one nested <bsdf>, got {}", inner.size());
+  const ObjectNode& in = *inner[0];
+  if (in.type == "twosided") throw ErrorAt(in.loc, "twosided cannot wrap another twosided");
+  // A private copy: the same inner BSDF may be used one-sided elsewhere.
+  std::shared_ptr<Material> m = MaterialPlugins().Build(in, ctx);
+  m->SetTwoSided(true);
+  return m;
 }
 
 }  // namespace
 
+const MaterialRegistry& MaterialPlugins() {
+  using P = const Properties&;
+  static const MaterialRegistry registry(
+      "bsdf", {},
+      {
+          {"diffuse", {{"reflectance", PropType::kSpectrumOrTexture}}, MakeDiffuse},
+          {"dielectric", kDielectric, [](P p, LoaderContext& ctx) { return MakeDielectric(p, ctx, false); }},
+          {"roughdielectric", Join(kDielectric, kRoughness),
+           [](P p, LoaderContext& ctx) { return MakeDielectric(p, ctx, true); }},
+          {"conductor", kConductor, [](P p, LoaderContext& ctx) { return MakeConductor(p, ctx, false); }},
+          {"roughconductor", Join(kConductor, kRoughness),
+           [](P p, LoaderContext& ctx) { return MakeConductor(p, ctx, true); }},
+          {"plastic",
+           {{"int_ior", PropType::kFloatOrString},
+            {"ext_ior", PropType::kFloatOrString},
+            {"diffuse_reflectance", PropType::kSpectrumOrTexture},
+            {"specular_reflectance", PropType::kSpectrumOrTexture},
+            {"nonlinear", PropType::kBoolean}},
+           MakePlastic},
+          {"twosided", {{"bsdf", PropType::kObject}}, MakeTwoSided},
+      });
+  return registry;
+}
+
 std::shared_ptr<const Material> BuildMaterial(const ObjectNode& node, LoaderContext& ctx) {
   if (auto it = ctx.materials.find(&node); it != ctx.materials.end()) return it->second;
-  std::shared_ptr<const Material> material = MakeMaterial(node, ctx);
+  std::shared_ptr<const Material> material = MaterialPlugins().Build(node, ctx);
   ctx.materials[&node] = material;
   return material;
 }

@@ -1,8 +1,9 @@
-// Internal to the scene loader: what the per-kind builders share.
+// Internal to the scene loader: what the per-kind builders share, and each kind's plugin
+// registry (defined in the kind's load_*.cpp).
 #pragma once
 #include <map>
 
-#include "io/properties.h"
+#include "io/plugin_registry.h"
 #include "io/scene_loader.h"
 
 namespace objektiv {
@@ -23,6 +24,8 @@ Vec3f UnitVector(const Vec3f& v, const Location& loc, const char* what);
 
 // Resolves a file name relative to the scene file that mentions it.
 std::string ResolvePath(const Location& loc, const std::string& filename);
+// The one nested object with this tag, or nullptr; more than one is an error.
+const ObjectNode* OneChild(const Properties& p, const std::string& tag);
 
 Spectrum MakeSpectrum(const SpectrumValue& v, SpectrumUsage usage);
 // A spectral parameter given as a value (float, rgb, spectrum) or a nested/ref texture.
@@ -31,22 +34,55 @@ std::shared_ptr<const SpectrumTexture> GetTexture(const Properties& props, const
 std::shared_ptr<const SpectrumTexture> BuildTexture(const ObjectNode& node, SpectrumUsage usage, LoaderContext& ctx);
 
 std::shared_ptr<const Material> BuildMaterial(const ObjectNode& node, LoaderContext& ctx);
-// Adds a shape to the scene (group < 0) or to a shape group; shapegroup and instance too.
-void BuildShape(const ObjectNode& node, LoaderContext& ctx, int group = -1);
+// Adds a shape to the scene (group < 0) or to a shape group; returns the shape group it
+// makes (a shapegroup, built once however often referenced), else -1.
+int BuildShape(const ObjectNode& node, LoaderContext& ctx, int group = -1);
 std::unique_ptr<Light> BuildEmitter(const ObjectNode& node, LoaderContext& ctx);
 // The camera, film settings and sampler settings from a <sensor>.
 void BuildSensor(const ObjectNode& node, RenderSetup& setup);
-// <sensor type="realistic"> (a lens prescription), called by BuildSensor.
-std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const Transform& to_world, int width, int height,
-                                        float far_clip);
+// The film (with its reconstruction filter) and the sampler; the defaults without a node.
+FilmSettings BuildFilm(const ObjectNode* node);
+SamplerSettings BuildSamplerSettings(const ObjectNode* node);
+// The path tracer (Mitsuba's default) without a node.
 std::unique_ptr<Integrator> BuildIntegrator(const ObjectNode* node, const Scene& scene);
 
-// "unknown <tag> type 'x' (known: a, b, c)"
-template <typename Map>
-[[noreturn]] void UnknownType(const ObjectNode& node, const Map& registry) {
-  std::string known;
-  for (const auto& [name, f] : registry) known += (known.empty() ? "" : ", ") + name;
-  throw ErrorAt(node.loc, "unknown {} type '{}' (known: {})", node.tag, node.type, known);
-}
+// What every sensor type is built from besides its own properties.
+struct SensorBase {
+  Transform to_world;
+  int width, height;
+  float far_clip;
+};
+
+// What an emitter plugin makes: a light of its own, or (type "area") the emission of the
+// shape it is nested in.
+struct Emission {
+  std::unique_ptr<Light> light;
+  std::shared_ptr<const SpectrumTexture> area_radiance;
+  bool two_sided = false;
+};
+
+// The registries, one per kind of object.
+using SensorRegistry = PluginRegistry<std::unique_ptr<Camera>, const SensorBase&>;
+using FilmRegistry = PluginRegistry<FilmSettings>;
+using FilterRegistry = PluginRegistry<std::shared_ptr<const Filter>>;
+using SamplerRegistry = PluginRegistry<SamplerKind>;
+using IntegratorRegistry = PluginRegistry<std::unique_ptr<Integrator>, const Scene&>;
+using ShapeRegistry = PluginRegistry<int, LoaderContext&, int>;  // as BuildShape
+using MaterialRegistry = PluginRegistry<std::shared_ptr<Material>, LoaderContext&>;
+using TextureRegistry = PluginRegistry<std::shared_ptr<const SpectrumTexture>, SpectrumUsage, LoaderContext&>;
+using EmitterRegistry = PluginRegistry<Emission, LoaderContext&>;
+
+const SensorRegistry& SensorPlugins();
+const FilmRegistry& FilmPlugins();
+const FilterRegistry& FilterPlugins();
+const SamplerRegistry& SamplerPlugins();
+const IntegratorRegistry& IntegratorPlugins();
+const ShapeRegistry& ShapePlugins();
+const MaterialRegistry& MaterialPlugins();
+const TextureRegistry& TexturePlugins();
+const EmitterRegistry& EmitterPlugins();
+
+// <sensor type="realistic">: a camera with a real lens prescription (load_lens_sensor.cpp).
+SensorRegistry::PluginType RealisticSensorPlugin();
 
 }  // namespace objektiv

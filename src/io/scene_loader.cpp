@@ -34,11 +34,20 @@ Vec3f UnitVector(const Vec3f& v, const Location& loc, const char* what) {
   return Normalize(v / m);
 }
 
+const ObjectNode* OneChild(const Properties& p, const std::string& tag) {
+  auto c = p.Children(tag);
+  if (c.size() > 1) throw ErrorAt(c[1]->loc, "only one <{}> is allowed here", tag);
+  return c.empty() ? nullptr : c[0].get();
+}
+
 std::unique_ptr<Sampler> MakeSampler(const SamplerSettings& s) {
-  SamplerKind kind = s.type == "independent" ? SamplerKind::kIndependent
-                    : s.type == "stratified"  ? SamplerKind::kStratified
-                                              : SamplerKind::kSobol;
-  return std::make_unique<Sampler>(kind, s.spp, s.seed);
+  return std::make_unique<Sampler>(s.kind, s.spp, s.seed);
+}
+
+std::vector<PluginKind> ScenePluginKinds() {
+  return {IntegratorPlugins().Describe(), SensorPlugins().Describe(),  FilmPlugins().Describe(),
+          FilterPlugins().Describe(),     SamplerPlugins().Describe(), ShapePlugins().Describe(),
+          MaterialPlugins().Describe(),   TexturePlugins().Describe(), EmitterPlugins().Describe()};
 }
 
 namespace {

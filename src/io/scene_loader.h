@@ -5,10 +5,12 @@
 #include <string>
 
 #include "camera/camera.h"
+#include "io/plugin_registry.h"
 #include "io/tonemap.h"
 #include "io/xml_document.h"
 #include "render/film.h"
 #include "render/integrator.h"
+#include "render/sampler.h"
 
 namespace objektiv {
 
@@ -23,7 +25,7 @@ struct FilmSettings {
 };
 
 struct SamplerSettings {
-  std::string type = "independent";
+  SamplerKind kind = SamplerKind::kIndependent;
   int spp = 4;
   uint64_t seed = 0;
 };
@@ -42,5 +44,9 @@ RenderSetup LoadSceneFromString(const std::string& xml, const std::string& name,
                                 const std::map<std::string, std::string>& defines);
 
 std::unique_ptr<Sampler> MakeSampler(const SamplerSettings& s);
+
+// Every kind of scene object and its plugins, with the properties each reads: what
+// docs/scene-format.md documents.
+std::vector<PluginKind> ScenePluginKinds();
 
 }  // namespace objektiv

@@ -4,12 +4,6 @@
 
 namespace objektiv {
 
-std::optional<ToneMap> ParseToneMap(const std::string& name) {
-  if (name == "clamp") return ToneMap::kClamp;
-  if (name == "filmic") return ToneMap::kFilmic;
-  return std::nullopt;
-}
-
 Image ApplyToneMap(const Image& linear, ToneMap mode) {
   Image out(linear.width, linear.height, {"R", "G", "B"});
   for (int y = 0; y < linear.height; ++y)

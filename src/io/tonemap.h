@@ -1,8 +1,5 @@
 // Display transforms from linear RGB to sRGB-encoded [0, 1] for PNG output.
 #pragma once
-#include <optional>
-#include <string>
-
 #include "base/image.h"
 
 namespace objektiv {
@@ -12,7 +9,6 @@ enum class ToneMap {
   kFilmic,  // ACES filmic fit (Narkowicz 2015) on each channel, then the sRGB curve
 };
 
-std::optional<ToneMap> ParseToneMap(const std::string& name);
 Image ApplyToneMap(const Image& linear, ToneMap mode);
 
 }  // namespace objektiv
