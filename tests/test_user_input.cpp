@@ -141,6 +141,15 @@ TEST(LensShift, BeyondTheImageCircleIsWarnedAbout) {
   EXPECT_TRUE(log.Has("beyond its image circle")) << log.Text();
 }
 
+// A circular fisheye leaves the frame's corners dark with or without a shift: a small shift is
+// not blamed for them.
+TEST(LensShift, CornersDarkWithoutTheShiftAreNotBlamedOnIt) {
+  test::LogCapture log;
+  LoadSceneFromString(RealisticScene("<string name=\"lens\" value=\"fisheye.10mm\"/>\n<float name=\"shift_x\" value=\"1\"/>"),
+                      "f.xml", {});
+  EXPECT_FALSE(log.Has("image circle")) << log.Text();
+}
+
 // A film shifted wholly off the lens traces no camera ray: no pass rate (it read 100%).
 TEST(LensShift, AFilmThatSeesNoLensHasNoPassRate) {
   test::RenderResult r = test::RenderXml(ShiftedScene(200));
@@ -163,6 +172,29 @@ TEST(IgnoredInput, IsWarnedAbout) {
   EXPECT_TRUE(log.Has("i.xml:3: sensor 'realistic' does not use the property 'near_clip'")) << log.Text();
   EXPECT_TRUE(log.Has("i.xml:4: sampler: jitter = false is not supported")) << log.Text();
   EXPECT_TRUE(log.Has("i.xml:6: film: the EXR is written as rgb float32, not rgba float32")) << log.Text();
+}
+
+// What only the real lens has (glass losses, rims) is said to do nothing in the ideal models.
+TEST(IgnoredInput, RealLensOnlySettingsAreWarnedAboutInTheIdealModels) {
+  for (const char* model : {"thick", "thin"}) {
+    test::LogCapture log;
+    LoadSceneFromString(RealisticScene(fmt::format("<string name=\"lens\" value=\"dgauss.50mm\"/>\n"
+                                                   "<string name=\"lens_model\" value=\"{}\"/>\n"
+                                                   "<boolean name=\"transmission\" value=\"false\"/>\n"
+                                                   "<string name=\"vignetting\" value=\"aperture\"/>",
+                                                   model)),
+                        "m.xml", {});
+    EXPECT_TRUE(log.Has(fmt::format("m.xml:5: transmission (the real lens's Fresnel and glass losses) does nothing with "
+                                    "lens_model '{}'",
+                                    model)))
+        << log.Text();
+    EXPECT_TRUE(log.Has(fmt::format("m.xml:6: lens_model '{}' has no rims", model))) << log.Text();
+  }
+  test::LogCapture log;
+  LoadSceneFromString(RealisticScene("<string name=\"lens\" value=\"dgauss.50mm\"/>\n"
+                                     "<boolean name=\"transmission\" value=\"false\"/>"),
+                      "r.xml", {});
+  EXPECT_FALSE(log.Has("does nothing")) << log.Text();
 }
 
 // Text between tags and elements beside the root mean nothing in the language: said so.

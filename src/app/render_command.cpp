@@ -129,7 +129,7 @@ int RunRender(const RenderArgs& a) {
   std::vector<Output> outputs = {{"the EXR", exr.string()}, {"the PNG written beside the EXR", png.string()}};
   if (!a.stats_json.empty()) outputs.push_back({"--stats-json", a.stats_json});
   CheckOutputsWritable(outputs);
-  RenderSetup setup = LoadScene(a.scene, defines);
+  RenderSetup setup = LoadScene(a.scene, defines, GlassCatalog::Default());
   CheckOutputsAreNotInputs(outputs);
   FilmSettings& fs_ = setup.film;
   if (!a.crop.empty()) {

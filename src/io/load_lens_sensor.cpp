@@ -42,7 +42,7 @@ constexpr Named<Vignetting> kVignettingModes[] = {{"full", Vignetting::kFull},
                                                   {"none", Vignetting::kNone}};
 
 // A lens file relative to the scene, or a shipped lens by name (see ResolveLens).
-LensPrescription LoadSceneLens(const Properties& p) {
+LensPrescription LoadSceneLens(const Properties& p, const GlassCatalog& glasses) {
   std::string name = p.String("lens");
   const Location& loc = p.LocOf("lens");
   std::string path;
@@ -52,7 +52,7 @@ LensPrescription LoadSceneLens(const Properties& p) {
     throw ErrorAt(loc, "{}", e.what());
   }
   try {
-    return ReadLensFile(path, GlassCatalog::Default());
+    return ReadLensFile(path, glasses);
   } catch (const InputError& e) {  // the lens file's own file:line, after the scene's
     throw ErrorAt(loc, "lens '{}': {}", name, e.what());
   }
@@ -88,6 +88,8 @@ void WarnIfShiftedPastTheImageCircle(const Properties& p, const LensCameraSettin
   if (!real || (s.shift.x == 0 && s.shift.y == 0)) return;
   const double corner = std::hypot(s.sensor_width / 2 + std::abs(s.shift.x), s.sensor_height / 2 + std::abs(s.shift.y));
   if (real->bounds().BoundAt(Vec2d(corner, 0))) return;
+  // Corners dark without the shift too (a circular fisheye's frame): not the shift's doing.
+  if (!real->bounds().BoundAt(Vec2d(std::hypot(s.sensor_width, s.sensor_height) / 2, 0))) return;
   double circle = 0;  // the largest film radius light reaches, to a thousandth of the corner's
   for (int k = 999; k > 0 && circle == 0; --k)
     if (real->bounds().BoundAt(Vec2d(corner * k / 1000, 0))) circle = corner * k / 1000;
@@ -100,7 +102,7 @@ void WarnIfShiftedPastTheImageCircle(const Properties& p, const LensCameraSettin
 // The camera a <sensor type="realistic"> describes.
 std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b) {
   LensCameraSpec spec;
-  spec.lens = LoadSceneLens(p);
+  spec.lens = LoadSceneLens(p, *b.glasses);
   // The prescription scaled as a whole to another focal length (radii, thicknesses, apertures).
   if (p.Has("focal_length")) spec.lens = ScaledToFocalLength(spec.lens, p.FloatIn("focal_length", 50, 1e-3, 1e6));
   spec.model = p.Choice("lens_model", LensModel::kReal, kLensModels);
@@ -126,6 +128,18 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b
   s.exposure_scale = p.FloatIn("exposure_scale", 1, 0, 1e30);
   s.vignetting = p.Choice("vignetting", Vignetting::kFull, kVignettingModes);
   s.transmission = p.Bool("transmission", true);
+  // The ideal models have no glass and no rims: what only the real lens has is said to do nothing.
+  if (spec.model != LensModel::kReal) {
+    const char* model = spec.model == LensModel::kThick ? "thick" : "thin";
+    if (p.Has("transmission"))
+      spdlog::warn("{}:{}: transmission (the real lens's Fresnel and glass losses) does nothing with lens_model '{}', "
+                   "which has no glass",
+                   p.LocOf("transmission").file, p.LocOf("transmission").line, model);
+    if (s.vignetting == Vignetting::kOptical)
+      spdlog::warn("{}:{}: lens_model '{}' has no rims and so no optical vignetting: vignetting 'aperture' gives what "
+                   "'none' does",
+                   p.LocOf("vignetting").file, p.LocOf("vignetting").line, model);
+  }
   s.far_clip = b.far_clip;
   if (p.Has("aperture_mask")) {
     std::string path = ResolvePath(p.LocOf("aperture_mask"), p.String("aperture_mask"));

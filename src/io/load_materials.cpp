@@ -35,7 +35,7 @@ IorModel CheckedDispersion(IorModel ior, const Location& loc, const char* formul
 }
 
 // The interior index of a dielectric: constant, Cauchy or Sellmeier coefficients.
-IorModel GetInteriorIor(const Properties& p) {
+IorModel GetInteriorIor(const Properties& p, const GlassCatalog& glasses) {
   bool cauchy = p.Has("cauchy_a"), sellmeier = p.Has("sellmeier_b1");
   if (cauchy && sellmeier) throw ErrorAt(p.loc(), "give either Cauchy or Sellmeier coefficients, not both");
   if ((cauchy || sellmeier) && p.Has("int_ior"))
@@ -55,7 +55,7 @@ IorModel GetInteriorIor(const Properties& p) {
   if (p.TypeOf("int_ior") == ValueType::kString) {
     std::string name = p.String("int_ior");
     if (!NamedIor(name)) {
-      const Glass* glass = GlassCatalog::Default().Find(name);
+      const Glass* glass = glasses.Find(name);
       if (!glass)
         throw ErrorAt(p.LocOf("int_ior"),
                       "unknown index of refraction '{}' (a number, a name such as bk7 or water, or a catalog glass "
@@ -83,7 +83,7 @@ std::pair<float, float> GetAlpha(const Properties& p, float fallback) {
 
 std::shared_ptr<Material> MakeDielectric(const Properties& p, LoaderContext& ctx, bool rough) {
   auto [au, av] = rough ? GetAlpha(p, 0.1f) : std::pair<float, float>{0.f, 0.f};
-  IorModel int_ior = GetInteriorIor(p);
+  IorModel int_ior = GetInteriorIor(p, ctx.glasses);
   double ext_ior = GetIor(p, "ext_ior", *NamedIor("air"));
   auto m = std::make_shared<DielectricMaterial>(int_ior, ext_ior, au, av,
                                                 GetTexture(p, "specular_reflectance", SpectrumUsage::kUnbounded, 1, ctx),

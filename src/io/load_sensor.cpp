@@ -115,7 +115,7 @@ const SensorRegistry& SensorPlugins() {
   return registry;
 }
 
-void BuildSensor(const ObjectNode& node, RenderSetup& setup) {
+void BuildSensor(const ObjectNode& node, const GlassCatalog& glasses, RenderSetup& setup) {
   const SensorRegistry& registry = SensorPlugins();
   const SensorRegistry::PluginType& plugin = registry.Find(node);
   Properties p = registry.Open(node, plugin);
@@ -124,7 +124,7 @@ void BuildSensor(const ObjectNode& node, RenderSetup& setup) {
   setup.film.loc = film ? film->loc : node.loc;
   setup.sampler = BuildSamplerSettings(OneChild(p, "sampler"));
   SensorBase base{p.GetTransform("to_world"), setup.film.width, setup.film.height,
-                  float(p.FloatIn("far_clip", 1e4, 1e-30, 1e30))};
+                  float(p.FloatIn("far_clip", 1e4, 1e-30, 1e30)), &glasses};
   CheckWithinSceneLimit(base.to_world.Point(Vec3f(0.f)), p.LocOf("to_world"), "the sensor");
   setup.camera = plugin.make(p, base);
   p.WarnUnused();

@@ -10,6 +10,7 @@ namespace objektiv {
 
 struct LoaderContext {
   Scene& scene;
+  const GlassCatalog& glasses;  // where glass names are looked up
   // Objects referenced more than once (by id) are built once.
   std::map<const ObjectNode*, std::shared_ptr<const Material>> materials;
   std::map<std::pair<const ObjectNode*, int>, std::shared_ptr<const SpectrumTexture>> textures;
@@ -39,7 +40,7 @@ std::shared_ptr<const Material> BuildMaterial(const ObjectNode& node, LoaderCont
 int BuildShape(const ObjectNode& node, LoaderContext& ctx, int group = -1);
 std::unique_ptr<Light> BuildEmitter(const ObjectNode& node, LoaderContext& ctx);
 // The camera, film settings and sampler settings from a <sensor>.
-void BuildSensor(const ObjectNode& node, RenderSetup& setup);
+void BuildSensor(const ObjectNode& node, const GlassCatalog& glasses, RenderSetup& setup);
 // The film (with its reconstruction filter) and the sampler; the defaults without a node.
 FilmSettings BuildFilm(const ObjectNode* node);
 SamplerSettings BuildSamplerSettings(const ObjectNode* node);
@@ -51,6 +52,7 @@ struct SensorBase {
   Transform to_world;
   int width, height;
   float far_clip;
+  const GlassCatalog* glasses;  // for a lens file's glass names
 };
 
 // What an emitter plugin makes: a light of its own, or (type "area") the emission of the

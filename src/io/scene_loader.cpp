@@ -52,10 +52,10 @@ std::vector<PluginKind> ScenePluginKinds() {
 
 namespace {
 
-RenderSetup Build(const SceneDocument& doc) {
+RenderSetup Build(const SceneDocument& doc, const GlassCatalog& glasses) {
   RenderSetup setup;
   setup.scene = std::make_unique<Scene>();
-  LoaderContext ctx{*setup.scene, {}, {}};
+  LoaderContext ctx{*setup.scene, glasses};
   const ObjectNode& root = *doc.root;
   const ObjectNode* sensor = nullptr;
   const ObjectNode* integrator = nullptr;
@@ -82,7 +82,7 @@ RenderSetup Build(const SceneDocument& doc) {
   for (const Property& p : root.props)
     throw ErrorAt(p.loc, "property '{}' cannot appear directly in <scene>", p.name);
   if (!sensor) throw ErrorAt(root.loc, "the scene has no <sensor>");
-  BuildSensor(*sensor, setup);
+  BuildSensor(*sensor, glasses, setup);
   setup.scene->Commit();
   setup.integrator = BuildIntegrator(integrator, *setup.scene);
   if (setup.scene->lights().empty()) spdlog::warn("{}: the scene has no emitters; the image will be black", root.loc.file);
@@ -91,13 +91,14 @@ RenderSetup Build(const SceneDocument& doc) {
 
 }  // namespace
 
-RenderSetup LoadScene(const std::string& path, const std::map<std::string, std::string>& defines) {
-  return Build(ParseSceneFile(path, defines));
+RenderSetup LoadScene(const std::string& path, const std::map<std::string, std::string>& defines,
+                      const GlassCatalog& glasses) {
+  return Build(ParseSceneFile(path, defines), glasses);
 }
 
 RenderSetup LoadSceneFromString(const std::string& xml, const std::string& name,
-                                const std::map<std::string, std::string>& defines) {
-  return Build(ParseSceneString(xml, name, defines));
+                                const std::map<std::string, std::string>& defines, const GlassCatalog& glasses) {
+  return Build(ParseSceneString(xml, name, defines), glasses);
 }
 
 }  // namespace objektiv

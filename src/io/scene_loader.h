@@ -8,6 +8,7 @@
 #include "io/plugin_registry.h"
 #include "io/tonemap.h"
 #include "io/xml_document.h"
+#include "optics/glass_catalog.h"
 #include "render/film.h"
 #include "render/integrator.h"
 #include "render/sampler.h"
@@ -38,10 +39,14 @@ struct RenderSetup {
   SamplerSettings sampler;
 };
 
-// Throws InputError ("file:line: message") for any problem in the scene or its files.
-RenderSetup LoadScene(const std::string& path, const std::map<std::string, std::string>& defines);
+// Throws InputError ("file:line: message") for any problem in the scene or its files. Glass
+// names (a dielectric's int_ior, a lens file's media) are looked up in `glasses`: the
+// command line passes the shipped set, GlassCatalog::Default() (the default here for tests).
+RenderSetup LoadScene(const std::string& path, const std::map<std::string, std::string>& defines,
+                      const GlassCatalog& glasses = GlassCatalog::Default());
 RenderSetup LoadSceneFromString(const std::string& xml, const std::string& name,
-                                const std::map<std::string, std::string>& defines);
+                                const std::map<std::string, std::string>& defines,
+                                const GlassCatalog& glasses = GlassCatalog::Default());
 
 std::unique_ptr<Sampler> MakeSampler(const SamplerSettings& s);
 
