@@ -91,9 +91,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       if (f[1] == "inf") {
         s.flat = true;
       } else if (f[1].rfind("c=", 0) == 0) {
-        double c = ParseFiniteNumber(f[1].substr(2), path, number);
-        if (c == 0) s.flat = true;  // however written: c=0.0, c=-0
-        else s.radius = 1 / c;
+        s.SetCurvature(ParseFiniteNumber(f[1].substr(2), path, number));
       } else {
         s.radius = ParseFiniteNumber(f[1], path, number);
         if (s.radius == 0) throw MakeInputError(path, number, "radius 0: write inf for a plane (the stop is its own line)");

@@ -1,6 +1,13 @@
 #include "optics/lens_prescription.h"
 
+#include <cmath>
+
 namespace objektiv {
+
+void LensSurface::SetCurvature(double c) {
+  flat = !std::isfinite(1 / c);
+  radius = flat ? 0 : 1 / c;
+}
 
 int LensPrescription::StopIndex() const {
   for (size_t i = 0; i < surfaces.size(); ++i)
