@@ -83,9 +83,9 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:symbolize=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
 export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$root/fuzz/lsan.supp:print_suppressions=0}
 
-# One line naming a finding, to tell findings apart: the report's kind, and where: the message
-# printed just before an abort (an assertion, a harness check), else the first frame in
-# Objektiv's own code, else the first library in the stack.
+# One line naming a finding, to tell findings apart: the report's kind, and where: for an abort
+# the exception that escaped or the message printed just before (an assertion, a harness
+# check), else the first frame in Objektiv's own code, else the first library in the stack.
 finding_key() {
   local log=$1 summary kind where
   summary=$(grep -m1 '^SUMMARY: ' "$log" || true)
@@ -95,7 +95,8 @@ finding_key() {
     *) kind=$(sed -E "s|^SUMMARY: ||; s| in .*||; s|\(.*||; s|0x[0-9a-f]+||g; s|$root/||g" <<< "$summary") ;;
   esac
   if [[ $kind == *"deadly signal"* ]]; then
-    where=$(grep -B1 -m1 'ERROR: libFuzzer: deadly signal' "$log" | head -1 | tr -d '0-9')
+    where=$(grep -m1 -oE "terminate called after throwing an instance of '[^']+'" "$log" || true)
+    [[ -z $where ]] && where=$(grep -B1 -m1 'ERROR: libFuzzer: deadly signal' "$log" | head -1 | tr -d '0-9')
   else
     where=$(grep -m1 -oE "$root/(src|fuzz)/[^ :]+\.cpp:[0-9]+" "$log" | sed "s|$root/||" || true)
     [[ -z $where ]] && where=$(grep -m1 -oE '/[^ ()]*/lib[^ ()/]*\.so[.0-9]*' "$log" || true)
