@@ -2,6 +2,7 @@
 // Run: build/objektiv-bench (the full-render figure comes from bench/cornell.sh).
 #include <benchmark/benchmark.h>
 
+#include "optics/lens_tracer.h"
 #include "base/rng.h"
 #include "base/sampling.h"
 #include "io/scene_loader.h"
@@ -158,14 +159,14 @@ BENCHMARK(BM_Sampler2D)->DenseRange(0, 2);
 // Rays from uniform points on a 36 x 24 mm film toward uniform points on the rear element of
 // the double Gauss at full aperture; every launched ray counts, blocked or not.
 struct LensBenchRays {
-  LensTracer tracer;
+  LensSystem tracer;
   std::vector<LensRay> rays;
   std::vector<float> lambdas;
   LensBenchRays() : tracer(LoadLens("dgauss.50mm")) {
-    tracer.SetBackFocus(ComputeParaxial(tracer.lens()).bfl);
+    tracer.SetBackFocus(ComputeParaxial(tracer.prescription()).bfl);
     PCG32 rng(5, 5);
-    const LensSurface& rear = tracer.lens().surfaces.back();
-    double rear_z = tracer.VertexZ(int(tracer.lens().surfaces.size()) - 1);
+    const LensSurface& rear = tracer.prescription().surfaces.back();
+    double rear_z = tracer.VertexZ(int(tracer.prescription().surfaces.size()) - 1);
     for (int i = 0; i < 8192; ++i) {
       Vec3d film((rng.UniformFloat() - 0.5) * 36, (rng.UniformFloat() - 0.5) * 24, tracer.FilmZ());
       double a = 2 * M_PI * rng.UniformFloat(), r = rear.semi_diameter * std::sqrt(rng.UniformFloat());
@@ -180,7 +181,7 @@ void BM_LensDoubleFromFilm(benchmark::State& state) {
   static LensBenchRays setup;
   size_t i = 0, passed = 0;
   for (auto _ : state) {
-    TraceResult r = setup.tracer.TraceFromFilm(setup.rays[i & 8191], setup.lambdas[i & 8191]);
+    TraceResult r = TraceFromFilm(setup.tracer, setup.rays[i & 8191], setup.lambdas[i & 8191]);
     passed += r.ray.has_value();
     ++i;
   }

@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "optics/focusing.h"
+#include "optics/lens_setup.h"
 #include "optics/lens_tracer.h"
 #include "optics/paraxial.h"
 #include "optics/real_ray_analysis.h"
@@ -45,13 +46,13 @@ void ExerciseLens(const LensPrescription& lens) {
   // The lens commands and the realistic camera refuse afocal systems.
   if (!std::isfinite(d.efl) || std::abs(d.efl) > 1e12) return;
   FocusAtDistance(lens, 2000, kLambdaD);
-  LensTracer tracer(lens);
-  if (std::isfinite(d.bfl)) tracer.SetBackFocus(d.bfl);
-  ChiefRay(tracer, 0, kLambdaD);
-  ChiefRay(tracer, 15, kLambdaD);
-  SpotDiagram(tracer, 5, 486.1327, 5);
-  LongitudinalAberration(tracer, 0.5 * lens.surfaces.front().semi_diameter, 656.2725);
-  tracer.TraceFromFilm({{0, 0, tracer.FilmZ()}, {0, 0.1, -1}}, kLambdaD);
+  const LensSystem system = AtParaxialInfinityFocus(lens, kLambdaD);
+  RealBackFocus(system, kLambdaD);
+  ChiefRay(system, 0, kLambdaD);
+  ChiefRay(system, 15, kLambdaD);
+  SpotDiagram(system, 5, 486.1327, 5);
+  LongitudinalAberration(system, 0.5 * lens.surfaces.front().semi_diameter, 656.2725);
+  TraceFromFilm(system, {{0, 0, system.FilmZ()}, {0, 0.1, -1}}, kLambdaD);
 }
 
 }  // namespace objektiv::fuzz

@@ -1,7 +1,7 @@
 // What the lens harnesses do with a prescription that a reader accepted: check that it is a
 // lens the tracers can take (every number finite, indices at least 1: a reader that lets
 // anything else through gives silently wrong lenses), then compute its first-order data,
-// focus it, and trace a few real rays, as `objektiv lens info` does.
+// set it up at its paraxial focus and trace a few real rays, as `objektiv lens info` does.
 #pragma once
 #include "optics/lens_prescription.h"
 

@@ -7,6 +7,7 @@
 #include <complex>
 #include <tuple>
 
+#include "optics/lens_tracer.h"
 #include "base/rng.h"
 #include "camera/lens_camera_setup.h"
 #include "camera/paraxial_lens_camera.h"
@@ -22,16 +23,16 @@ constexpr double kSensor = 44;     // mm, square: film points up to 22 mm from t
 constexpr float kLambda = 587.5618f;
 
 // The lens with its stop set to the paraxial f-number, focused at infinity.
-LensTracer StoppedLens(const char* name, double fnumber) {
+LensSystem StoppedLens(const char* name, double fnumber) {
   LensPrescription lens = LoadLens(name);
-  LensTracer t(lens);
+  LensSystem t(lens);
   ParaxialData p = ComputeParaxial(lens);
   t.SetBackFocus(p.bfl);
   t.SetStopSemiDiameter(t.StopSemiDiameter() * (p.efl / fnumber) / p.entrance_pupil_diameter);
   return t;
 }
 
-LensTracer WithStop(LensTracer t, const StopShape& shape) {
+LensSystem WithStop(LensSystem t, const StopShape& shape) {
   t.SetStopShape(shape);
   return t;
 }
@@ -80,7 +81,7 @@ Estimate CameraIrradiance(const Camera& cam, Vec2d film, int n, uint64_t seed) {
 // The same, independently: aim points drawn from the round stop's pupil bound (which holds
 // all the light of the round stop, hence of any opening inscribed in it), traced in double
 // precision through the lens with the opening, weighted as the camera weights its rays.
-Estimate ReferenceIrradiance(const PupilBounds& round, const LensTracer& opening, Vec2d film, int n, uint64_t seed) {
+Estimate ReferenceIrradiance(const PupilBounds& round, const LensSystem& opening, Vec2d film, int n, uint64_t seed) {
   PCG32 rng(seed, 5);
   const Vec3d o(film.x, film.y, opening.FilmZ());
   const double dz = round.rear_z() - opening.FilmZ();
@@ -90,7 +91,7 @@ Estimate ReferenceIrradiance(const PupilBounds& round, const LensTracer& opening
     double w = 0;
     if (s.pdf > 0) {
       const Vec3d d = Normalize(s.point - o);
-      if (opening.TraceFromFilm({o, d}, kLambda).ray) w = 4 / M_PI * std::pow(d.z, 4) / (dz * dz * s.pdf);
+      if (TraceFromFilm(opening, {o, d}, kLambda).ray) w = 4 / M_PI * std::pow(d.z, 4) / (dz * dz * s.pdf);
     }
     sum += w, sum2 += w * w;
   }
@@ -105,10 +106,10 @@ struct Opening {
 TEST(BladedStop, LightAtEveryFilmPointMatchesAnIndependentEstimate) {
   // Film points over all azimuths, out to the corner: the camera (sampling the bladed stop's
   // own pupil bound) against the reference, within four standard errors.
-  const LensTracer round = StoppedLens("dgauss.50mm", 11);
+  const LensSystem round = StoppedLens("dgauss.50mm", 11);
   const PupilBounds round_bound(round, 22.0);
   for (Opening o : {Opening{3, 0, 0}, Opening{6, 0, 17}, Opening{5, 0.5, -40}}) {
-    const LensTracer bladed = WithStop(round, StopShape::Iris(o.blades, o.curvature, o.rotation_deg * M_PI / 180));
+    const LensSystem bladed = WithStop(round, StopShape::Iris(o.blades, o.curvature, o.rotation_deg * M_PI / 180));
     const RealisticCamera cam(Transform(), kRes, kRes, bladed, Settings());
     int k = 0;
     for (double r : {0.0, 7.0, 14.0, 20.0})
@@ -131,7 +132,7 @@ TEST(BladedStop, ShareOfTheLightIsThePolygonsAsInTheThickLensModel) {
   // pupil's aberrations, well under 1% at f/11 (measured: 0.4127..0.4141 and 0.8263..0.8279
   // over the film points below; a bound built for one azimuth and turned gave 0.276 at 60
   // degrees from it).
-  const LensTracer round = StoppedLens("dgauss.50mm", 11);
+  const LensSystem round = StoppedLens("dgauss.50mm", 11);
   const RealisticCamera real_round(Transform(), kRes, kRes, round, Settings());
   const ParaxialLensModel model = MakeParaxialModel(round, INFINITY, false);
   const ParaxialLensCamera thick_round(Transform(), kRes, kRes, model, StopShape(), Settings());
@@ -189,15 +190,15 @@ TEST(BladedStop, DefocusedPointLightImagesTheIrisTurnedByItsRotation) {
   // (a triangle here), on the axis and on every side of the frame alike. Forward (rays from
   // the light through the entrance pupil onto the film, exact tracer) and backward (the
   // camera's rays that hit the light) give the same triangle; turning the blades turns it.
-  const LensTracer round = StoppedLens("dgauss.50mm", 4);
-  const ParaxialData p = ComputeParaxial(round.lens(), kLambda, round.StopSemiDiameter());
+  const LensSystem round = StoppedLens("dgauss.50mm", 4);
+  const ParaxialData p = ComputeParaxial(round.prescription(), kLambda, round.StopSemiDiameter());
   const double pupil_z = p.entrance_pupil_position, object_z = -1000;  // lens space, mm
   const double radius = 1.0;                                             // the light's, mm
   const int n = 3;
   double forward_angle[2] = {0, 0};
   const double rotations[2] = {0.0, 0.5};
   for (int k = 0; k < 2; ++k) {
-    const LensTracer bladed = WithStop(round, StopShape::Iris(n, 0, rotations[k]));
+    const LensSystem bladed = WithStop(round, StopShape::Iris(n, 0, rotations[k]));
     const RealisticCamera cam(Transform(), kRes, kRes, bladed, Settings());
     for (Vec2d object : {Vec2d(0, 0), Vec2d(240, 0), Vec2d(-240, 0), Vec2d(0, 200), Vec2d(0, -200)}) {
       const Vec3d light(object.x, object.y, object_z);
@@ -208,7 +209,7 @@ TEST(BladedStop, DefocusedPointLightImagesTheIrisTurnedByItsRotation) {
         for (int j = 0; j < g; ++j) {
           const double half = 0.6 * p.entrance_pupil_diameter;
           Vec3d target(half * (2 * (i + 0.5) / g - 1), half * (2 * (j + 0.5) / g - 1), pupil_z);
-          TraceResult t = bladed.TraceFromObject({light, Normalize(target - light)}, kLambda);
+          TraceResult t = TraceFromObject(bladed, {light, Normalize(target - light)}, kLambda);
           if (!t.ray) continue;
           const double u = (bladed.FilmZ() - t.ray->o.z) / t.ray->d.z;
           forward.push_back({Vec2d(t.ray->o.x + u * t.ray->d.x, t.ray->o.y + u * t.ray->d.y), 1.0});

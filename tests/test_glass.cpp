@@ -114,6 +114,11 @@ TEST(GlassCatalog, MalformedLinesNameFileAndLine) {
   std::vector<Bad> cases = {
       {"CC test\nNM G1 2 517642 1.5168\n", 2, "NM line needs"},
       {"NM G1 99 517642 1.5168 64.17\n", 1, "unknown dispersion formula"},
+      // Beyond an int (converted before it was checked: undefined behaviour), or not whole.
+      {"NM G1 1e10 517642 1.5168 64.17\n", 1, "unknown dispersion formula 1e10"},
+      {"NM G1 -1e300 517642 1.5168 64.17\n", 1, "unknown dispersion formula"},
+      {"NM G1 2.5 517642 1.5168 64.17\n", 1, "unknown dispersion formula 2.5"},
+      {"NM G1 nan 517642 1.5168 64.17\n", 1, "unknown dispersion formula nan"},
       {"NM G1 2 517642 1.5168 64.17\nCD 1.0 abc\n", 2, "not a finite number"},
       {"CD 1 2 3\n", 1, "before any NM"},
       {"NM G1 2 0 1.5 60\nLD 2.5 0.3\n", 2, "LD range is empty"},

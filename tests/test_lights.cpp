@@ -145,5 +145,22 @@ TEST(EnvironmentMap, SamplingMatchesPdf) {
   EXPECT_LT(mismatches, samples / 1000) << mismatches << " of " << samples;
 }
 
+TEST(EnvironmentMap, NaNDirectionsGiveNaNRadianceAndNoDensity) {
+  // A NaN direction reached the texel lookup's float-to-int conversion (undefined behaviour,
+  // a finite texel in practice). Its radiance is NaN, which the film counts and drops.
+  Image img(8, 4, {"R", "G", "B"});
+  for (float& v : img.pixels) v = 1;
+  EnvironmentMap env(img, 1, Transform());
+  Bounds3f b;
+  b.Extend(Vec3f(-1.f));
+  b.Extend(Vec3f(1.f));
+  env.Preprocess(b);
+  SampledWavelengths lambda = SampledWavelengths::SampleVisible(0.3f);
+  Vec3f nan_dir(std::nanf(""), 0, 1);
+  EXPECT_TRUE(std::isnan(env.Le(nan_dir, lambda)[0]));
+  EXPECT_EQ(env.PdfLi(nan_dir), 0);
+  EXPECT_GT(env.Le(Vec3f(0, 0, 1), lambda)[0], 0);
+}
+
 }  // namespace
 }  // namespace objektiv

@@ -147,18 +147,18 @@ std::string Box() {
 }
 
 // Stops the render (the flag the renderer polls) after `calls` radiance estimates.
-class StoppingIntegrator final : public Integrator {
+class StoppingIntegrator final : public CameraPathIntegrator {
  public:
-  StoppingIntegrator(const Integrator& inner, std::atomic<bool>& stop, int calls)
-      : Integrator(inner.scene()), inner_(inner), stop_(stop), left_(calls) {}
+  StoppingIntegrator(const CameraPathIntegrator& inner, std::atomic<bool>& stop, int calls)
+      : CameraPathIntegrator(inner.scene()), inner_(inner), stop_(stop), left_(calls) {}
   SampledSpectrum Li(const Ray& ray, const std::optional<SurfaceInteraction>& hit, SampledWavelengths& lambda,
-                     Sampler& sampler, RayCounts& counts) const override {
+                     Sampler& sampler, BlockContext& ctx) const override {
     if (--left_ <= 0) stop_ = true;
-    return inner_.Li(ray, hit, lambda, sampler, counts);
+    return inner_.Li(ray, hit, lambda, sampler, ctx);
   }
 
  private:
-  const Integrator& inner_;
+  const CameraPathIntegrator& inner_;
   std::atomic<bool>& stop_;
   mutable std::atomic<int> left_;
 };
@@ -168,7 +168,7 @@ test::RenderResult RenderBox(int stop_after_calls, int threads) {
   std::unique_ptr<Sampler> sampler = MakeSampler(setup.sampler);
   Film film(setup.film.width, setup.film.height, setup.film.crop, setup.film.filter);
   std::atomic<bool> stop{false};
-  StoppingIntegrator integrator(*setup.integrator, stop, stop_after_calls);
+  StoppingIntegrator integrator(dynamic_cast<const CameraPathIntegrator&>(*setup.integrator), stop, stop_after_calls);
   RenderOptions opt;
   opt.spp_end = sampler->spp();
   opt.threads = threads;

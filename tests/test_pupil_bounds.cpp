@@ -1,6 +1,7 @@
 // Pupil bounds: few wasted camera rays, and no light left outside the bound.
 #include <gtest/gtest.h>
 
+#include "optics/lens_tracer.h"
 #include "base/rng.h"
 #include "optics/lens_file.h"
 #include "optics/paraxial.h"
@@ -11,8 +12,8 @@
 namespace objektiv {
 namespace {
 
-LensTracer AtFNumber(const LensPrescription& lens, double fnumber) {
-  LensTracer t(lens);
+LensSystem AtFNumber(const LensPrescription& lens, double fnumber) {
+  LensSystem t(lens);
   ParaxialData p = ComputeParaxial(lens);
   if (lens.surfaces.back().thickness == 0) t.SetBackFocus(p.bfl);
   // Stop semi-diameter for this f-number: the entrance pupil scales with the stop.
@@ -22,7 +23,7 @@ LensTracer AtFNumber(const LensPrescription& lens, double fnumber) {
 }
 
 // Film radius to cover: the full-frame half-diagonal, or the image circle if smaller.
-double FilmRadius(const LensTracer& t) {
+double FilmRadius(const LensSystem& t) {
   FieldOfView fov = SensorFieldOfView(t, 36, 24, 587.5618);
   double r = std::hypot(18.0, 12.0);
   if (fov.diagonal < 2 * 89) {
@@ -39,7 +40,7 @@ TEST(PupilBounds, NinetyFivePercentOfCameraRaysGetThrough) {
     for (double n : {0.0, 2.8, 4.0, 5.6, 8.0, 16.0}) {
       double fnumber = n == 0 ? wide_open : n;
       if (fnumber < wide_open) continue;
-      LensTracer t = AtFNumber(lens, fnumber);
+      LensSystem t = AtFNumber(lens, fnumber);
       double radius = FilmRadius(t);
       PupilBounds bounds(t, radius);
       PCG32 rng(11, 3);
@@ -51,7 +52,7 @@ TEST(PupilBounds, NinetyFivePercentOfCameraRaysGetThrough) {
         if (s.pdf == 0) continue;
         ++launched;
         Vec3d o(film.x, film.y, t.FilmZ());
-        passed += bool(t.TraceFromFilm({o, Normalize(s.point - o)}, 587.5618).ray);
+        passed += bool(TraceFromFilm(t, {o, Normalize(s.point - o)}, 587.5618).ray);
       }
       ASSERT_GT(launched, 100) << name << " f/" << fnumber;
       EXPECT_GE(double(passed) / launched, 0.95) << name << " f/" << fnumber << ": " << passed << "/" << launched;
@@ -65,7 +66,7 @@ TEST(PupilBounds, TheBoundContainsAllTheLight) {
   // region would make the second smaller.
   for (const char* name : {"dgauss.50mm", "wide.22mm", "tessar.brendel.100mm"}) {
     LensPrescription lens = LoadLens(name);
-    LensTracer t = AtFNumber(lens, ComputeParaxial(lens).fnumber);
+    LensSystem t = AtFNumber(lens, ComputeParaxial(lens).fnumber);
     double radius = FilmRadius(t);
     PupilBounds bounds(t, radius);
     ParaxialData pd = ComputeParaxial(lens, 587.5618, t.StopSemiDiameter());
@@ -79,9 +80,9 @@ TEST(PupilBounds, TheBoundContainsAllTheLight) {
       for (int i = 0; i < n; ++i) {
         Vec2f d = SampleUniformDiskConcentric({rng.UniformFloat(), rng.UniformFloat()});
         Vec3d target(d.x * rear, d.y * rear, bounds.rear_z());
-        brute += bool(t.TraceFromFilm({o, Normalize(target - o)}, 587.5618).ray);
+        brute += bool(TraceFromFilm(t, {o, Normalize(target - o)}, 587.5618).ray);
         PupilBounds::Sample s = bounds.SampleRear(film, {rng.UniformFloat(), rng.UniformFloat()});
-        if (s.pdf > 0) via_bound += bool(t.TraceFromFilm({o, Normalize(s.point - o)}, 587.5618).ray);
+        if (s.pdf > 0) via_bound += bool(TraceFromFilm(t, {o, Normalize(s.point - o)}, 587.5618).ray);
       }
       const ConvexPolygon* poly = bounds.BoundAt(film);
       double a_brute = M_PI * rear * rear * brute / n;

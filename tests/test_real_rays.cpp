@@ -9,15 +9,15 @@
 namespace objektiv {
 namespace {
 
-LensTracer Focused(const std::string& name) {
+LensSystem Focused(const std::string& name) {
   LensPrescription lens = LoadLens(name);
-  LensTracer t(lens);
+  LensSystem t(lens);
   t.SetBackFocus(ComputeParaxial(lens).bfl);
   return t;
 }
 
 TEST(RealRays, ChiefRayCrossesTheStopCentre) {
-  LensTracer t = Focused("dgauss.50mm");
+  LensSystem t = Focused("dgauss.50mm");
   for (double field : {0.0, 5.0, 15.0}) {
     auto chief = ChiefRay(t, field, 587.6);
     ASSERT_TRUE(chief) << field;
@@ -31,23 +31,23 @@ TEST(RealRays, DistortionGrowsAsTheSquareOfTheField) {
   // (Not the Tessar: its third-order distortion is corrected almost to zero, -1e-6 at 2
   // degrees, so higher orders dominate even there.)
   for (const char* name : {"dgauss.50mm", "wide.22mm", "fisheye.10mm"}) {
-    LensTracer t = Focused(name);
-    double efl = ComputeParaxial(t.lens()).efl;
+    LensSystem t = Focused(name);
+    double efl = ComputeParaxial(t.prescription()).efl;
     double d1 = *Distortion(t, efl, 1.0, 587.6), d2 = *Distortion(t, efl, 2.0, 587.6);
     EXPECT_LT(std::abs(d1), 1e-3) << name;
     // Third order: D ~ theta^2 (higher orders perturb the ratio slightly).
     EXPECT_NEAR(d2 / d1, 4.0, 0.1) << name;
   }
   // The retrofocus wide angle is barrel-distorted, the telephoto pincushion-distorted.
-  LensTracer wide = Focused("wide.22mm");
-  EXPECT_LT(*Distortion(wide, ComputeParaxial(wide.lens()).efl, 15, 587.6), 0);
-  LensTracer tele = Focused("telephoto.250mm");
-  EXPECT_GT(*Distortion(tele, ComputeParaxial(tele.lens()).efl, 4, 587.6), 0);
+  LensSystem wide = Focused("wide.22mm");
+  EXPECT_LT(*Distortion(wide, ComputeParaxial(wide.prescription()).efl, 15, 587.6), 0);
+  LensSystem tele = Focused("telephoto.250mm");
+  EXPECT_GT(*Distortion(tele, ComputeParaxial(tele.prescription()).efl, 4, 587.6), 0);
 }
 
 TEST(RealRays, LongitudinalAberrationGrowsAsTheSquareOfTheHeight) {
   for (const char* name : {"dgauss.50mm", "telephoto.250mm"}) {
-    LensTracer t = Focused(name);
+    LensSystem t = Focused(name);
     double a1 = *LongitudinalAberration(t, 1.0, 587.6), a2 = *LongitudinalAberration(t, 2.0, 587.6);
     EXPECT_NEAR(a2 / a1, 4.0, 0.15) << name;
     EXPECT_NEAR(*LongitudinalAberration(t, 1e-3, 587.6), 0, 1e-6) << name;
@@ -55,7 +55,7 @@ TEST(RealRays, LongitudinalAberrationGrowsAsTheSquareOfTheHeight) {
 }
 
 TEST(RealRays, SpotsShrinkWhenStoppingDownAndAreTinyForAnIdealSurface) {
-  LensTracer t = Focused("dgauss.50mm");
+  LensSystem t = Focused("dgauss.50mm");
   Spot open = SpotDiagram(t, 0, 587.6);
   t.SetStopSemiDiameter(t.StopSemiDiameter() / 4);  // about f/8
   Spot closed = SpotDiagram(t, 0, 587.6);
@@ -69,7 +69,7 @@ TEST(RealRays, SpotsShrinkWhenStoppingDownAndAreTinyForAnIdealSurface) {
   Spot axis = SpotDiagram(t, 0, 587.6), edge = SpotDiagram(t, 20, 587.6);
   EXPECT_LT(edge.transmitted, axis.transmitted);
 
-  LensTracer hyperbola(ParseNativeLens("stop 0 air 12\nsurface inf 8 n=1.5 12\nsurface -50 100 air 12 k=-2.25\n", "h.lens"));
+  LensSystem hyperbola(ParseNativeLens("stop 0 air 12\nsurface inf 8 n=1.5 12\nsurface -50 100 air 12 k=-2.25\n", "h.lens"));
   Spot ideal = SpotDiagram(hyperbola, 0, 587.6);
   ASSERT_GT(ideal.points.size(), 100u);
   EXPECT_LT(ideal.geometric_radius, 1e-3);  // below 1 um
@@ -91,7 +91,7 @@ TEST(RealRays, AxialColourOfAThinSingletIsFOverV) {
 namespace objektiv {
 namespace {
 TEST(LensPlot, LayoutHasOneShapePerElementAndRayFans) {
-  LensTracer t = Focused("dgauss.50mm");
+  LensSystem t = Focused("dgauss.50mm");
   std::string svg = PlotLensLayout(t, {0, 10}).ToString();
   auto count = [&](const std::string& what) {
     size_t n = 0;
@@ -100,7 +100,7 @@ TEST(LensPlot, LayoutHasOneShapePerElementAndRayFans) {
   };
   // dgauss.50mm: 7 glass spaces (rows followed by glass), drawn as 7 polygons.
   size_t glass = 0;
-  for (const LensSurface& s : t.lens().surfaces) glass += s.medium != nullptr;
+  for (const LensSurface& s : t.prescription().surfaces) glass += s.medium != nullptr;
   EXPECT_EQ(count("<polygon"), glass);
   EXPECT_EQ(count("<polyline"), 10u);  // five rays per field
   std::vector<double> fields = DefaultFields(t);
@@ -114,15 +114,15 @@ namespace objektiv {
 namespace {
 
 // A thin biconvex N-BK7 lens with a small stop in contact (f ~ 193 mm).
-LensTracer ThinLensAtStop() {
+LensSystem ThinLensAtStop() {
   LensPrescription l = ParseNativeLens("stop 0 air 2\nsurface 200 0.01 N-BK7 30\nsurface -200 190 air 30\n", "thin.lens");
-  LensTracer t(l);
+  LensSystem t(l);
   t.SetBackFocus(ComputeParaxial(l).bfl);
   return t;
 }
 
 TEST(RealRays, RelativeIlluminationOfAThinLensIsCos4) {
-  LensTracer t = ThinLensAtStop();
+  LensSystem t = ThinLensAtStop();
   EXPECT_NEAR(*RelativeIllumination(t, 0, 587.6), 1, 1e-12);
   for (double field : {10.0, 20.0, 30.0}) {
     double c = std::cos(field * M_PI / 180);
@@ -130,15 +130,15 @@ TEST(RealRays, RelativeIlluminationOfAThinLensIsCos4) {
     EXPECT_NEAR(*RelativeIllumination(t, field, 587.6), c * c * c * c, 0.015) << field;
   }
   // Vignetting by rims lowers it further: the double Gauss at full aperture, 20 degrees.
-  LensTracer dg = Focused("dgauss.50mm");
+  LensSystem dg = Focused("dgauss.50mm");
   double c20 = std::pow(std::cos(20 * M_PI / 180), 4);
   EXPECT_LT(*RelativeIllumination(dg, 20, 587.6), c20);
 }
 
 TEST(RealRays, FieldCurvatureOfAThinLensMatchesThirdOrderTheory) {
-  LensTracer t = ThinLensAtStop();
-  ParaxialData p = ComputeParaxial(t.lens());
-  double n = t.lens().surfaces[1].medium->Index(587.5618);
+  LensSystem t = ThinLensAtStop();
+  ParaxialData p = ComputeParaxial(t.prescription());
+  double n = t.prescription().surfaces[1].medium->Index(587.5618);
   double field = 4, h = p.efl * std::tan(field * M_PI / 180);
   FieldCurvature fc = *FieldCurvatureAt(t, field, 587.5618);
   EXPECT_NEAR(fc.tangential, -(3 + 1 / n) * h * h / (2 * p.efl), 0.03 * (3 + 1 / n) * h * h / (2 * p.efl));
@@ -166,14 +166,14 @@ TEST(RealRays, BallLensMatchesItsClosedForm) {
 TEST(RealRays, RealBackFocusAndFieldOfView) {
   // Spherical aberration of a plain singlet pulls the best focus in front of the paraxial one;
   // an aberration-free surface keeps it there.
-  LensTracer sphere(ParseNativeLens("stop 0 air 10\nsurface inf 8 n=1.5 12\nsurface -50 100 air 12\n", "s.lens"));
-  ParaxialData p = ComputeParaxial(sphere.lens());
+  LensSystem sphere(ParseNativeLens("stop 0 air 10\nsurface inf 8 n=1.5 12\nsurface -50 100 air 12\n", "s.lens"));
+  ParaxialData p = ComputeParaxial(sphere.prescription());
   EXPECT_LT(RealBackFocus(sphere, 587.6), p.bfl - 0.1);
-  LensTracer hyperbola(ParseNativeLens("stop 0 air 10\nsurface inf 8 n=1.5 12\nsurface -50 100 air 12 k=-2.25\n", "h.lens"));
-  EXPECT_NEAR(RealBackFocus(hyperbola, 587.6), ComputeParaxial(hyperbola.lens()).bfl, 1e-4);
+  LensSystem hyperbola(ParseNativeLens("stop 0 air 10\nsurface inf 8 n=1.5 12\nsurface -50 100 air 12 k=-2.25\n", "h.lens"));
+  EXPECT_NEAR(RealBackFocus(hyperbola, 587.6), ComputeParaxial(hyperbola.prescription()).bfl, 1e-4);
   // Field of view of the double Gauss on full frame: close to 2 atan(21.63 / 50.36) = 46.5
   // degrees diagonally, a little more with its slight barrel distortion.
-  LensTracer dg = Focused("dgauss.50mm");
+  LensSystem dg = Focused("dgauss.50mm");
   FieldOfView fov = SensorFieldOfView(dg, 36, 24, 587.6);
   double paraxial = 2 * std::atan(std::hypot(36.0, 24.0) / 2 / 50.358) * 180 / M_PI;
   EXPECT_GT(fov.diagonal, paraxial);
@@ -190,14 +190,14 @@ namespace {
 TEST(RealRays, FisheyeFieldIsLimitedByItsImageCircle) {
   // The Muller fisheye is a 155.9 degree design: on a full-frame sensor its image circle, not
   // the sensor, bounds the field; the vertical field never exceeds the horizontal one.
-  LensTracer f = Focused("fisheye.10mm");
+  LensSystem f = Focused("fisheye.10mm");
   FieldOfView fov = SensorFieldOfView(f, 36, 24, 587.6);
   EXPECT_LE(fov.vertical, fov.horizontal);
   EXPECT_LE(fov.horizontal, fov.diagonal);
   EXPECT_GT(fov.diagonal, 150);
   EXPECT_LT(fov.diagonal, 180);
   // Chief rays exist far off axis: strong barrel distortion at 60 degrees.
-  ParaxialData p = ComputeParaxial(f.lens());
+  ParaxialData p = ComputeParaxial(f.prescription());
   EXPECT_LT(*Distortion(f, p.efl, 60, 587.6), -0.3);
 }
 }  // namespace

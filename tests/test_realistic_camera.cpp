@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "optics/lens_tracer.h"
 #include "base/error.h"
 #include "base/rng.h"
 #include "camera/lens_camera_setup.h"
@@ -94,7 +95,7 @@ TEST(RealisticCamera, PinholeLimitIsThePerspectiveCameraUpToDistortion) {
     LensCameraSpec s = Spec(name, 0);
     s.stop_diameter = 0.02;
     auto cam = Make(s);
-    LensTracer tracer(s.lens);
+    LensSystem tracer(s.lens);
     ParaxialData p = ComputeParaxial(s.lens);
     tracer.SetBackFocus(p.bfl);
     for (double fx : {0.05, 0.2, 0.35}) {
@@ -242,7 +243,7 @@ TEST(RealisticCamera, PointAtTheFocusDistanceImagesToThePredictedSpot) {
   s.settings.transmission = false;
   auto cam = Make(s);
   // Where the camera put the film, and the object point in camera space.
-  LensTracer tracer(s.lens);
+  LensSystem tracer(s.lens);
   LensFocus focus = FocusLens(tracer, 5000);
   tracer.SetBackFocus(focus.back_focus);
   ParaxialData p = ComputeParaxial(s.lens, kLambdad, tracer.StopSemiDiameter());
@@ -256,7 +257,7 @@ TEST(RealisticCamera, PointAtTheFocusDistanceImagesToThePredictedSpot) {
       double x = 1.1 * p.entrance_pupil_diameter * ((i + 0.5) / 80 - 0.5);
       double y = 1.1 * p.entrance_pupil_diameter * ((j + 0.5) / 80 - 0.5);
       LensRay ray{{0, 0, object_z}, Normalize(Vec3d(x, y, pupil_z - object_z))};
-      TraceResult t = tracer.TraceFromObject(ray, kLambdad);
+      TraceResult t = TraceFromObject(tracer, ray, kLambdad);
       if (!t.ray) continue;
       double u = (tracer.FilmZ() - t.ray->o.z) / t.ray->d.z;
       fwd2 += std::pow(t.ray->o.x + u * t.ray->d.x, 2) + std::pow(t.ray->o.y + u * t.ray->d.y, 2);
@@ -320,7 +321,7 @@ TEST(RealisticCamera, FocusNeverFailsOrHangs) {
   for (const std::string& name : ShippedLensNames()) {
     LensPrescription lens = LoadLens(name);
     for (double n : {0.0, 22.0}) {
-      LensTracer t(lens);
+      LensSystem t(lens);
       if (n > 0) t.SetStopSemiDiameter(t.StopSemiDiameter() * WideOpenFNumber(lens) / n);
       double closest = ClosestFocusDistance(lens);
       for (double d : {1.0, 300.0, 1000.0, 10000.0, double(INFINITY)}) {

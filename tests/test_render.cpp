@@ -214,6 +214,29 @@ TEST(Instancing, InstancesRenderLikeTheShapesThemselves) {
 // Camera rays are traced in packets (Scene::IntersectCoherent): every packet answer must be
 // the single-ray one, for meshes, analytic shapes (user geometry called with N = 8),
 // instances, misses, empty lanes and a count that is not a multiple of the packet size.
+TEST(Scene, RaysEmbreeCannotTakeAreSkippedAndCounted) {
+  // Debian's Embree has its assertions on: a non-finite origin or direction, or one beyond
+  // 1.8e18, aborted the process (a shadow ray toward a vertex at 9.2e18).
+  RenderSetup setup = LoadSceneFromString(InstancingScene(R"(<shape type="cube"/>)"), "test.xml", {});
+  const Scene& scene = *setup.scene;
+  const float nan = std::nanf(""), inf = std::numeric_limits<float>::infinity();
+  const Ray good{{0, 0, 5}, {0, 0, -1}};
+  const std::vector<Ray> bad = {Ray{{0, 0, 5}, {nan, 0, -1}}, Ray{{0, 2e18f, 5}, {0, 0, -1}}, Ray{{inf, 0, 5}, {0, 0, -1}},
+                                Ray{{0, 0, 5}, {0, 0, -1}, nan}, Ray{{0, 0, 5}, {0, -3e18f, -1}}};
+  ASSERT_TRUE(scene.Intersect(good));
+  EXPECT_FALSE(scene.Occluded(Ray{{0, 0, 5}, {0, 0, 1}}));
+  for (const Ray& r : bad) {
+    EXPECT_FALSE(scene.Intersect(r));
+    EXPECT_TRUE(scene.Occluded(r));  // no light along a ray that cannot be traced
+  }
+  std::vector<const Ray*> packet = {&good, &bad[0], &good, &bad[1], &bad[2]};
+  std::vector<std::optional<SurfaceInteraction>> out(packet.size());
+  scene.IntersectCoherent(packet, out);
+  EXPECT_TRUE(out[0] && out[2]);
+  EXPECT_FALSE(out[1] || out[3] || out[4]);
+  EXPECT_EQ(scene.SkippedRays(), 2 * bad.size() + 3);
+}
+
 TEST(Scene, PacketIntersectionMatchesSingleRays) {
   std::string xml = InstancingScene(R"(<shape type="shapegroup" id="g">
       <shape type="sphere"><float name="radius" value="0.5"/></shape>

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <fstream>
 
+#include "optics/lens_tracer.h"
 #include "io/lens_plot.h"
 #include "log_capture.h"
 #include "optics/batch_tracer.h"
@@ -98,7 +99,7 @@ TEST(StopInGlass, RealRaysNearTheAxisMeetTheParaxialFocus) {
   for (const char* text : {kSinglet, kDoublet}) {
     LensPrescription lens = ParsePbrtLens(text, "lens.dat");
     const double bfl = ComputeParaxial(lens).bfl;
-    LensTracer exact(lens);
+    LensSystem exact(lens);
     exact.SetBackFocus(bfl);
     BatchLensTracer fast(exact);
     const double last_z = exact.VertexZ(int(lens.surfaces.size()) - 1), focus_z = last_z + bfl;
@@ -108,7 +109,7 @@ TEST(StopInGlass, RealRaysNearTheAxisMeetTheParaxialFocus) {
     fast.TraceFromObject(batch);
     std::vector<double> miss;  // axis crossing minus the paraxial focus, mm
     for (size_t k = 0; k < heights.size(); ++k) {
-      TraceResult r = exact.TraceFromObject({{0, heights[k], -10}, {0, 0, 1}}, 587.5618);
+      TraceResult r = TraceFromObject(exact, {{0, heights[k], -10}, {0, 0, 1}}, 587.5618);
       ASSERT_TRUE(r.ray && batch.alive[k]) << text << " h " << heights[k];
       double crossing = r.ray->o.z - r.ray->o.y / r.ray->d.y * r.ray->d.z;
       miss.push_back(crossing - focus_z);
@@ -144,7 +145,7 @@ TEST(StopInGlass, NativeAndZemaxFilesExpressTheSameLens) {
 // The layout draws the singlet as one element (the stop inside it is no face of it).
 TEST(StopInGlass, LayoutDrawsOneElementAcrossTheStop) {
   LensPrescription lens = ParsePbrtLens(kSinglet, "a.dat");
-  LensTracer tracer(lens);
+  LensSystem tracer(lens);
   tracer.SetBackFocus(ComputeParaxial(lens).bfl);
   std::string svg = PlotLensLayout(tracer, {0, 5}).ToString();
   EXPECT_EQ(test::Occurrences(svg, "<polygon"), 1);
@@ -172,12 +173,12 @@ TEST(StopInGlass, RealisticCameraRendersThroughIt) {
                                        path));
   std::remove(path.c_str());
   LensPrescription lens = ParsePbrtLens(kDoublet, "b.dat");
-  LensTracer t(lens);
+  LensSystem t(lens);
   t.SetBackFocus(FocusLens(t, INFINITY).back_focus);
   double lo = 0, hi = 1;
   for (int it = 0; it < 60; ++it) {
     double s = 0.5 * (lo + hi);
-    (t.TraceFromFilm({{0, 0, t.FilmZ()}, {0, s, -std::sqrt(1 - s * s)}}, 587.5618).ray ? lo : hi) = s;
+    (TraceFromFilm(t, {{0, 0, t.FilmZ()}, {0, s, -std::sqrt(1 - s * s)}}, 587.5618).ray ? lo : hi) = s;
   }
   const double expected = 4 * lo * lo;  // about 1 / (2.3 f-number)^2
   for (int c = 0; c < 3; ++c) {

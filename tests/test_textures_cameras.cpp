@@ -44,6 +44,31 @@ TEST(Bitmap, DecodesSrgbAndFiltersBilinearly) {
   fs::remove(png);
 }
 
+TEST(Bitmap, CoordinatesBeyondAnIntWrapExactly) {
+  // Texture coordinates of 1e30 (a to_uv scale, or an OBJ 'vt') were converted to int before
+  // wrapping: undefined behaviour, in practice INT_MIN and the wrong texel.
+  Image img(3, 1, {"R", "G", "B"});
+  for (int x = 0; x < 3; ++x)
+    for (int c = 0; c < 3; ++c) img.At(x, 0, c) = float(x + 1);
+  auto lookup = [&](WrapMode wrap, FilterMode filter, float u) {
+    return BitmapTexture(img, SpectrumUsage::kUnbounded, filter, wrap, Transform()).LookupRgb({u, 0.5f}).x;
+  };
+  // u = 1e9: x = 3e9 texels, a multiple of 3 (and of 6), beyond an int: texel 0 when repeating
+  // or mirroring, the last texel when clamping (the half-texel shift of bilinear filtering is
+  // below a float's resolution there).
+  for (FilterMode f : {FilterMode::kNearest, FilterMode::kBilinear}) {
+    EXPECT_FLOAT_EQ(lookup(WrapMode::kRepeat, f, 1e9f), 1);
+    EXPECT_FLOAT_EQ(lookup(WrapMode::kClamp, f, 1e9f), 3);
+    EXPECT_FLOAT_EQ(lookup(WrapMode::kClamp, f, -1e30f), 1);
+  }
+  EXPECT_FLOAT_EQ(lookup(WrapMode::kMirror, FilterMode::kNearest, 1e9f), 1);
+  EXPECT_TRUE(std::isfinite(lookup(WrapMode::kRepeat, FilterMode::kBilinear, 1e30f)));
+  // No texel answers a NaN or infinite coordinate: NaN, which the film counts and drops.
+  EXPECT_TRUE(std::isnan(lookup(WrapMode::kRepeat, FilterMode::kBilinear, std::nanf(""))));
+  EXPECT_TRUE(std::isnan(lookup(WrapMode::kMirror, FilterMode::kNearest, INFINITY)));
+  EXPECT_TRUE(std::isnan(lookup(WrapMode::kClamp, FilterMode::kNearest, INFINITY)));
+}
+
 TEST(Bitmap, MissingOrBrokenFilesAreInputErrors) {
   EXPECT_THROW(ReadImageRgb("/nonexistent/texture.png"), InputError);
   namespace fs = std::filesystem;
@@ -61,6 +86,10 @@ TEST(Checkerboard, AlternatesWithToUv) {
   EXPECT_FLOAT_EQ(c.Evaluate({0.01f, 0.01f}, w)[0], 0.1f);
   EXPECT_FLOAT_EQ(c.Evaluate({0.13f, 0.01f}, w)[0], 0.9f);
   EXPECT_FLOAT_EQ(c.Evaluate({0.13f, 0.13f}, w)[0], 0.1f);
+  EXPECT_FLOAT_EQ(c.Evaluate({-0.01f, 0.01f}, w)[0], 0.9f);
+  // Far beyond an int (undefined behaviour when converted): every float there is even.
+  EXPECT_FLOAT_EQ(c.Evaluate({1e30f, 0.13f}, w)[0], 0.9f);
+  EXPECT_FLOAT_EQ(c.Evaluate({-1e30f, 0.01f}, w)[0], 0.1f);
 }
 
 std::string CameraScene(const std::string& sensor_type, const std::string& extra) {

@@ -58,11 +58,10 @@ TEST(Zemax, EvenAsphereCoefficientsBecomeTheSag) {
       "SURF 2\n TYPE EVENASPH\n CURV 0.02\n CONI -0.5\n PARM 1 0.001\n PARM 2 1e-6\n PARM 3 -2e-9\n GLAS N-BK7\n"
       " DISZ 5\n DIAM 10\nSURF 3\n CURV 0\n DISZ 40\n DIAM 10\nSURF 4\n DISZ 0\n DIAM 10\n";
   LensPrescription l = ParseZemaxLens(z, "a.zmx");
-  LensTracer t(l);
   double r = 6, c = 0.02, k = -0.5;
   double expected = c * r * r / (1 + std::sqrt(1 - (1 + k) * c * c * r * r)) + 0.001 * r * r + 1e-6 * std::pow(r, 4) -
                     2e-9 * std::pow(r, 6);
-  EXPECT_NEAR(t.Sag(1, r), expected, 1e-12);
+  EXPECT_NEAR(l.surfaces[1].Sag(r), expected, 1e-12);
   // The r^2 term changes the paraxial curvature: c + 2 a2.
   EXPECT_NEAR(l.surfaces[1].ParaxialCurvature(), 0.022, 1e-15);
 }
@@ -98,12 +97,72 @@ TEST(Zemax, UnsupportedThingsAreNamed) {
     ParseZemaxLens(unknown_glass, "g.zmx");
     ADD_FAILURE();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("g.zmx:7: unknown glass 'NOPE'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("g.zmx:9: unknown glass 'NOPE'"), std::string::npos) << e.what();
   }
   // An unknown keyword is a warning, not an error.
   std::string odd = "WEIRD 1 2 3\nSURF 0\n DISZ INFINITY\nSURF 1\n STOP\n DISZ 1\n DIAM 4\n ODDITY 5\nSURF 2\n CURV 0.01\n"
                     " GLAS N-BK7\n DISZ 3\n DIAM 4\nSURF 3\n DISZ 10\n DIAM 4\nSURF 4\n DISZ 0\n DIAM 4\n";
   EXPECT_NO_THROW(ParseZemaxLens(odd, "o.zmx"));
+}
+
+TEST(Zemax, NonFiniteValuesAndIndicesBelowOneNameTheLine) {
+  // The double Gauss with line 11 (its first CURV), 13 (GLAS) or 15 (DIAM) replaced, or a line
+  // put before line 15. CURV INFINITY made a surface of radius 0 and an EFL of 131 mm instead
+  // of 50 mm; DIAM and CONI INFINITY and model indices below 1 were taken as they came.
+  std::vector<std::string> base;
+  for (size_t b = 0, e; b < DoubleGaussZmx().size(); b = e + 1) {
+    e = DoubleGaussZmx().find('\n', b);
+    base.push_back(DoubleGaussZmx().substr(b, e - b));
+  }
+  ASSERT_EQ(base[10].substr(0, 6), "  CURV");
+  ASSERT_EQ(base[12].substr(0, 6), "  GLAS");
+  ASSERT_EQ(base[14].substr(0, 6), "  DIAM");
+  struct Bad {
+    int line;
+    std::string text;
+    bool insert;
+    std::string part;
+  };
+  std::vector<Bad> cases = {
+      {11, "  CURV INFINITY 0 0 0 0 \"\"", false, "'INFINITY' is not a finite number"},
+      {11, "  CURV -inf", false, "not a finite number"},
+      {11, "  CURV nan", false, "not a finite number"},
+      {11, "  CURV NAN(0x7ff)", false, "not a finite number"},
+      {11, "  CURV 1e400", false, "not a finite number"},
+      {11, "  CURV 0x1p99999", false, "not a finite number"},
+      {15, "  DIAM INFINITY 1 0 0 1 \"\"", false, "not a finite number"},
+      {15, "  CONI INFINITY", true, "not a finite number"},
+      {15, "  DISZ nan", true, "not a finite number"},
+      {13, "  GLAS ___BLANK 1 0 0.5 50", false, "model glass needs nd >= 1 and vd > 0, got nd 0.5"},
+      {13, "  GLAS ___BLANK 1 0 1.67 -50", false, "model glass needs nd >= 1 and vd > 0"},
+      {13, "  GLAS ___BLANK 1 0 1.67 Infinity", false, "not a finite number"},
+      {13, "  GLAS NOT-A-GLASS 1 0 0.9 50", false, "model glass needs nd >= 1"},
+      {15, "  PARM 2.5 1", true, "PARM index '2.5' is not an integer from 1 to 8"},
+      {15, "  PARM 1e10 1", true, "PARM index '1e10'"},
+      {15, "  PARM -2147483649 1", true, "PARM index"},
+      {15, "  PARM 1 INFINITY", true, "not a finite number"},
+  };
+  for (const Bad& b : cases) {
+    std::vector<std::string> lines = base;
+    if (b.insert) lines.insert(lines.begin() + (b.line - 1), b.text);
+    else lines[b.line - 1] = b.text;
+    std::string text;
+    for (const std::string& l : lines) text += l + "\n";
+    try {
+      ParseZemaxLens(text, "bad.zmx");
+      ADD_FAILURE() << "no error for line " << b.line << ": " << b.text;
+    } catch (const InputError& e) {
+      std::string msg = e.what();
+      EXPECT_EQ(msg.rfind(fmt::format("bad.zmx:{}:", b.line), 0), 0u) << msg;
+      EXPECT_NE(msg.find(b.part), std::string::npos) << msg;
+    }
+  }
+  // The object at infinity stays allowed, in each of Zemax's spellings.
+  for (const char* word : {"INFINITY", "Infinity", "inf"}) {
+    std::string text = DoubleGaussZmx();
+    text.replace(text.find("DISZ INFINITY"), 13, std::string("DISZ ") + word);
+    EXPECT_NO_THROW(ParseZemaxLens(text, "ok.zmx")) << word;
+  }
 }
 
 }  // namespace

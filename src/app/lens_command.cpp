@@ -1,6 +1,8 @@
 // `objektiv lens list` and `objektiv lens info LENS`: the lens library's command-line face.
 #include <cmath>
 
+#include <nlohmann/json.hpp>
+
 #include "app/commands.h"
 #include "base/error.h"
 #include "io/lens_analysis.h"
@@ -8,6 +10,7 @@
 #include "optics/dispersion.h"
 #include "optics/focusing.h"
 #include "optics/lens_file.h"
+#include "optics/lens_setup.h"
 #include "optics/paraxial.h"
 #include "optics/real_ray_analysis.h"
 
@@ -51,14 +54,6 @@ int RunList() {
   return 0;
 }
 
-// The tracer every lens command analyses: film at the paraxial focus for an object at infinity at
-// `wavelength`, whatever back focus the file carries (pbrt files leave it at the last vertex).
-LensTracer TracerFocusedAtInfinity(const LensPrescription& lens, double wavelength) {
-  LensTracer tracer(lens);
-  tracer.SetBackFocus(ComputeParaxial(lens, wavelength).bfl);
-  return tracer;
-}
-
 int RunInfo(const LensArgs& a) {
   LensPrescription lens = LoadImagingLens(a.lens, a.wavelength);
   ParaxialData d = ComputeParaxial(lens, a.wavelength);
@@ -73,38 +68,48 @@ int RunInfo(const LensArgs& a) {
                                    a.lens, a.focus_m));
   }
   auto [sw, sh] = ParseSensor(a.sensor);
-  LensTracer tracer = TracerFocusedAtInfinity(lens, a.wavelength);
-  FieldOfView fov = SensorFieldOfView(tracer, sw, sh, a.wavelength);
-  double real_bfl = RealBackFocus(tracer, a.wavelength);
+  const LensSystem system = AtParaxialInfinityFocus(lens, a.wavelength);
+  FieldOfView fov = SensorFieldOfView(system, sw, sh, a.wavelength);
+  double real_bfl = RealBackFocus(system, a.wavelength);
+  nlohmann::ordered_json j = {{"name", lens.name},
+                              {"wavelength_nm", a.wavelength},
+                              {"efl_mm", d.efl},
+                              {"bfl_mm", d.bfl},
+                              {"ffl_mm", d.ffl},
+                              {"fnumber", d.fnumber},
+                              {"entrance_pupil_diameter_mm", d.entrance_pupil_diameter},
+                              {"entrance_pupil_position_mm", d.entrance_pupil_position},
+                              {"exit_pupil_diameter_mm", d.exit_pupil_diameter},
+                              {"exit_pupil_position_mm", d.exit_pupil_position},
+                              {"front_principal_plane_mm", d.front_principal_plane},
+                              {"back_principal_plane_mm", d.back_principal_plane},
+                              {"stop_diameter_mm", stop_diameter},
+                              {"total_track_mm", lens.TotalTrack()},
+                              {"surfaces", lens.surfaces.size()},
+                              {"real_bfl_mm", real_bfl},
+                              {"sensor_mm", {sw, sh}},
+                              {"fov_horizontal_deg", fov.horizontal},
+                              {"fov_vertical_deg", fov.vertical},
+                              {"fov_diagonal_deg", fov.diagonal}};
   // The file's own metadata (native .lens files), where given.
-  std::string design, design_json;
+  std::string design;
   auto add_design = [&](double v, const char* text, const char* key) {
     if (!(v > 0)) return;
     design += fmt::format(" {} {:g}", text, v);
-    design_json += fmt::format(",\n  \"{}\": {:.6f}", key, v);
+    j[key] = v;
   };
   add_design(lens.design_focal_length, "focal length (mm)", "design_focal_length_mm");
   add_design(lens.design_fnumber, "f-number", "design_fnumber");
   add_design(lens.image_circle, "image circle (mm)", "image_circle_mm");
-  std::string focus_json;
-  if (focus)
-    focus_json = fmt::format(
-        ",\n  \"focus_distance_m\": {:.6f},\n  \"back_focus_mm\": {:.6f},\n  \"object_distance_mm\": {:.6f},\n"
-        "  \"magnification\": {:.8f},\n  \"working_fnumber\": {:.6f}",
-        a.focus_m, focus->back_focus, focus->object_distance, focus->magnification, focus->working_fnumber);
+  if (focus) {
+    j["focus_distance_m"] = a.focus_m;
+    j["back_focus_mm"] = focus->back_focus;
+    j["object_distance_mm"] = focus->object_to_first_vertex;
+    j["magnification"] = focus->magnification;
+    j["working_fnumber"] = focus->working_fnumber;
+  }
   if (a.json) {
-    std::printf(
-        "{\n  \"name\": \"%s\",\n  \"wavelength_nm\": %.4f,\n  \"efl_mm\": %.6f,\n  \"bfl_mm\": %.6f,\n"
-        "  \"ffl_mm\": %.6f,\n  \"fnumber\": %.6f,\n  \"entrance_pupil_diameter_mm\": %.6f,\n"
-        "  \"entrance_pupil_position_mm\": %.6f,\n  \"exit_pupil_diameter_mm\": %.6f,\n"
-        "  \"exit_pupil_position_mm\": %.6f,\n  \"front_principal_plane_mm\": %.6f,\n"
-        "  \"back_principal_plane_mm\": %.6f,\n  \"stop_diameter_mm\": %.6f,\n  \"total_track_mm\": %.6f,\n"
-        "  \"surfaces\": %zu,\n  \"real_bfl_mm\": %.6f,\n  \"sensor_mm\": [%g, %g],\n"
-        "  \"fov_horizontal_deg\": %.4f,\n  \"fov_vertical_deg\": %.4f,\n  \"fov_diagonal_deg\": %.4f%s\n}\n",
-        lens.name.c_str(), a.wavelength, d.efl, d.bfl, d.ffl, d.fnumber, d.entrance_pupil_diameter,
-        d.entrance_pupil_position, d.exit_pupil_diameter, d.exit_pupil_position, d.front_principal_plane,
-        d.back_principal_plane, stop_diameter, lens.TotalTrack(), lens.surfaces.size(), real_bfl, sw, sh,
-        fov.horizontal, fov.vertical, fov.diagonal, (design_json + focus_json).c_str());
+    std::printf("%s\n", j.dump(2).c_str());
     return 0;
   }
   std::printf("%s (%s)\n", lens.name.c_str(), lens.source.c_str());
@@ -125,21 +130,21 @@ int RunInfo(const LensArgs& a) {
   if (focus)
     std::printf("  focused at %.4g m from the film (unit focusing): back focus %.4f mm, object %.2f mm in front of the\n"
                 "  first vertex, magnification %.6f, working f-number %.3f\n",
-                a.focus_m, focus->back_focus, focus->object_distance, focus->magnification, focus->working_fnumber);
+                a.focus_m, focus->back_focus, focus->object_to_first_vertex, focus->magnification, focus->working_fnumber);
   return 0;
 }
 
 int RunAnalyze(const LensArgs& a) {
   LensPrescription lens = LoadImagingLens(a.lens, kLambdad);
-  WriteLensAnalysis(TracerFocusedAtInfinity(lens, kLambdad), a.output);
+  WriteLensAnalysis(AtParaxialInfinityFocus(lens), a.output);
   return 0;
 }
 
 int RunPlot(const LensArgs& a) {
   LensPrescription lens = LoadImagingLens(a.lens, a.wavelength);
-  LensTracer tracer = TracerFocusedAtInfinity(lens, a.wavelength);
-  std::vector<double> fields = a.fields.empty() ? DefaultFields(tracer, a.wavelength) : a.fields;
-  PlotLensLayout(tracer, fields, a.wavelength).Write(a.output);
+  const LensSystem system = AtParaxialInfinityFocus(lens, a.wavelength);
+  std::vector<double> fields = a.fields.empty() ? DefaultFields(system, a.wavelength) : a.fields;
+  PlotLensLayout(system, fields, a.wavelength).Write(a.output);
   return 0;
 }
 

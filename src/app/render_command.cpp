@@ -4,6 +4,8 @@
 #include <map>
 #include <thread>
 
+#include <nlohmann/json.hpp>
+
 #include "app/commands.h"
 #include "base/error.h"
 #include "base/input_files.h"
@@ -21,19 +23,29 @@ struct RenderArgs {
   std::string scene, output, stats_json, crop;
   int spp = 0, threads = 0;
   int64_t seed = -1;
+  double max_memory_gib = 16;
   std::vector<std::string> defines;
   bool quiet = false, verbose = false;
 };
 
 void WriteStatsJson(const std::string& path, const RenderStats& s, int threads) {
-  WriteTextFileAtomically(
-      path, fmt::format("{{\n  \"seconds\": {:.6f},\n  \"spp\": {},\n  \"width\": {},\n  \"height\": {},\n  \"threads\": {},\n"
-                        "  \"samples\": {},\n  \"rays\": {},\n  \"samples_per_second\": {:.3f},\n  \"mrays_per_second\": {:.6f},\n"
-                        "  \"nan_count\": {},\n  \"inf_count\": {},\n  \"camera_rays_traced\": {},\n  \"camera_pass_rate\": {:.6f},\n"
-                        "  \"partial\": {},\n  \"pixels\": {},\n  \"pixels_completed\": {}\n}}\n",
-                        s.seconds, s.spp, s.width, s.height, threads, s.samples, s.rays, s.SamplesPerSecond(),
-                        s.MraysPerSecond(), s.nan_count, s.inf_count, s.camera_rays_traced, s.CameraPassRate(),
-                        s.Partial(), s.pixels, s.pixels_completed));
+  nlohmann::ordered_json j = {{"seconds", s.seconds},
+                              {"spp", s.spp},
+                              {"width", s.width},
+                              {"height", s.height},
+                              {"threads", threads},
+                              {"samples", s.samples},
+                              {"rays", s.rays},
+                              {"samples_per_second", s.SamplesPerSecond()},
+                              {"mrays_per_second", s.MraysPerSecond()},
+                              {"nan_count", s.nan_count},
+                              {"inf_count", s.inf_count},
+                              {"camera_rays_traced", s.camera_rays_traced},
+                              {"camera_pass_rate", s.CameraPassRate()},
+                              {"partial", s.Partial()},
+                              {"pixels", s.pixels},
+                              {"pixels_completed", s.pixels_completed}};
+  WriteTextFileAtomically(path, j.dump(2) + "\n");
 }
 
 // An output file and what it is, for messages.
@@ -75,6 +87,22 @@ CropWindow ParseCrop(const std::string& text, int width, int height) {
   return {v[0], v[1], v[2], v[3]};
 }
 
+// The film, once the memory of the render is known to fit the budget: nearly all of it per
+// pixel of the crop window, the film's accumulators, then the linear and the tone-mapped
+// images and the 8-bit PNG made from them.
+Film MakeFilm(const FilmSettings& f, double budget_gib) {
+  const uint64_t bytes = Film::AccumulatorBytes(f.crop) + uint64_t(f.crop.Width()) * f.crop.Height() * (2 * 3 * sizeof(float) + 3);
+  const double gib = double(bytes) / double(1 << 30);
+  if (gib > budget_gib)
+    throw ErrorAt(f.loc, "rendering {}x{} pixels needs {:.3g} GiB, more than the memory budget of {:g} GiB (see --max-memory)",
+                  f.crop.Width(), f.crop.Height(), gib, budget_gib);
+  try {
+    return Film(f.width, f.height, f.crop, f.filter);
+  } catch (const std::bad_alloc&) {
+    throw ErrorAt(f.loc, "not enough memory for the {}x{} film ({:.3g} GiB)", f.crop.Width(), f.crop.Height(), gib);
+  }
+}
+
 int RunRender(const RenderArgs& a) {
   SetupLogging(a.quiet ? 0 : (a.verbose ? 2 : 1));
   std::map<std::string, std::string> defines;
@@ -114,7 +142,7 @@ int RunRender(const RenderArgs& a) {
   if (a.spp > 0) setup.sampler.spp = a.spp;
   if (a.seed >= 0) setup.sampler.seed = uint64_t(a.seed);
   std::unique_ptr<Sampler> sampler = MakeSampler(setup.sampler);
-  Film film(fs_.width, fs_.height, fs_.crop, fs_.filter);
+  Film film = MakeFilm(fs_, a.max_memory_gib);
   RenderOptions opts;
   opts.spp_begin = 0;
   opts.spp_end = sampler->spp();
@@ -154,6 +182,8 @@ int RunRender(const RenderArgs& a) {
                  stats.pixels_completed, stats.pixels, exr.string());
   if (stats.nan_count || stats.inf_count)
     spdlog::warn("{} NaN and {} Inf radiance samples were dropped", stats.nan_count, stats.inf_count);
+  if (stats.skipped_rays)
+    spdlog::warn("{} rays with non-finite or out-of-range origins or directions were skipped", stats.skipped_rays);
   return InterruptSignal() ? 128 + InterruptSignal() : 0;
 }
 
@@ -170,6 +200,8 @@ std::function<int()> AddRenderCommand(CLI::App& app) {
   cmd->add_option("--crop", args->crop, "Render only pixels x0,y0,x1,y1 (half-open) of the film");
   cmd->add_option("-D,--define", args->defines, "Set a scene parameter: -D name=value (overrides <default>)");
   cmd->add_option("--stats-json", args->stats_json, "Write render statistics as JSON to this file");
+  cmd->add_option("--max-memory", args->max_memory_gib, "Memory budget for the film and the images written, GiB (default 16)")
+      ->check(CLI::PositiveNumber);
   CLI::Option* quiet = cmd->add_flag("-q,--quiet", args->quiet, "No progress bar, no summary, warnings only");
   cmd->add_flag("-v,--verbose", args->verbose, "Debug logging")->excludes(quiet);
   return [args] { return RunRender(*args); };

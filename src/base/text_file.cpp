@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -13,13 +14,33 @@
 
 namespace objektiv {
 
-std::string ReadTextFile(const std::string& path, const char* what) {
+uintmax_t CheckInputFile(const std::string& path, const char* what, uintmax_t max_bytes) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::file_status st = fs::status(path, ec);
+  if (!fs::exists(st)) throw MakeInputError(path, 0, "cannot read {}: no such file", what);
+  if (!fs::is_regular_file(st)) {
+    const char* kind = fs::is_directory(st) ? "a directory" : fs::is_fifo(st) ? "a pipe" : "a device or special file";
+    throw MakeInputError(path, 0, "cannot read {}: it is {}, not a regular file", what, kind);
+  }
+  uintmax_t size = fs::file_size(path, ec);
+  if (ec) throw MakeInputError(path, 0, "cannot read {}: {}", what, ec.message());
+  if (size > max_bytes)
+    throw MakeInputError(path, 0, "cannot read {}: it has {} bytes, more than the limit of {} MiB", what, size,
+                         max_bytes >> 20);
+  return size;
+}
+
+std::string ReadTextFile(const std::string& path, const char* what, uintmax_t max_bytes) {
+  uintmax_t size = CheckInputFile(path, what, max_bytes);
   RecordInputFile(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw MakeInputError(path, 0, "cannot open {}", what);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  std::string text(size_t(size), '\0');
+  in.read(text.data(), std::streamsize(size));
+  if (in.bad()) throw MakeInputError(path, 0, "cannot read {}", what);
+  text.resize(size_t(in.gcount()));  // shorter if the file shrank since
+  return text;
 }
 
 std::string DecodeToAscii(const std::string& raw) {
@@ -53,6 +74,12 @@ double ParseFiniteNumber(const std::string& s, const std::string& path, int line
   std::optional<double> v = ParseFiniteNumber(s);
   if (!v) throw MakeInputError(path, line, "'{}' is not a finite number", s);
   return *v;
+}
+
+std::optional<int> ParseIntegerIn(const std::string& s, int lo, int hi) {
+  std::optional<double> v = ParseFiniteNumber(s);
+  if (!v || *v != std::floor(*v) || *v < lo || *v > hi) return std::nullopt;
+  return int(*v);
 }
 
 std::vector<std::string> SplitFields(const std::string& line) {

@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "camera/lens_camera.h"
-#include "optics/lens_prescription.h"
+#include "optics/lens_setup.h"
 
 namespace objektiv {
 
@@ -23,9 +23,6 @@ struct LensCameraSpec {
   std::optional<Vec3f> focus_point;  // world space: focus on the plane through it instead
   LensCameraSettings settings;
 };
-
-// The wide-open radiometric f-number (d line, object at infinity).
-double WideOpenFNumber(const LensPrescription& lens);
 
 // Throws InputError (without a location) when the stop cannot be set as asked.
 std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int height, const LensCameraSpec& spec);

@@ -9,10 +9,10 @@
 
 namespace objektiv {
 
-ParaxialLensModel MakeParaxialModel(const LensTracer& tracer, double distance_from_film, bool thin) {
-  const LensPrescription& lens = tracer.lens();
-  const int last = int(lens.surfaces.size()) - 1;
-  ParaxialData p = ComputeParaxial(lens, kLambdad, tracer.StopSemiDiameter());
+ParaxialLensModel MakeParaxialModel(const LensSystem& lens, double distance_from_film, bool thin) {
+  const LensPrescription& rx = lens.prescription();
+  const int last = int(rx.surfaces.size()) - 1;
+  ParaxialData p = ComputeParaxial(rx, kLambdad, lens.StopSemiDiameter());
   const bool infinite = !(distance_from_film < 1e12);
   ParaxialLensModel m;
   m.efl = p.efl;
@@ -24,14 +24,14 @@ ParaxialLensModel MakeParaxialModel(const LensTracer& tracer, double distance_fr
       double disc = distance_from_film * distance_from_film - 4 * p.efl * distance_from_film;
       v = disc >= 0 ? 0.5 * (distance_from_film - std::sqrt(disc)) : 2 * p.efl;  // too close: closest focus
     }
-    double z = tracer.VertexZ(last) + p.back_principal_plane;
+    double z = lens.VertexZ(last) + p.back_principal_plane;
     m.front_principal_z = m.back_principal_z = m.entrance_pupil_z = m.exit_pupil_z = z;
     m.entrance_pupil_radius = m.exit_pupil_radius = p.efl / (2 * p.fnumber);
     m.film_z = z + v;
     return m;
   }
-  LensTracer t = tracer;
-  t.SetBackFocus(ParaxialFocus(lens, distance_from_film).back_focus);
+  LensSystem t = lens;
+  t.SetBackFocus(ParaxialFocus(rx, distance_from_film).back_focus);
   m.front_principal_z = t.VertexZ(0) + p.front_principal_plane;
   m.back_principal_z = t.VertexZ(last) + p.back_principal_plane;
   m.entrance_pupil_z = t.VertexZ(0) + p.entrance_pupil_position;

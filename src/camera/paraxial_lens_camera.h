@@ -20,7 +20,7 @@ struct ParaxialLensModel {
 
 // From the lens with its stop set; the film where the paraxial image of an object at
 // `distance_from_film` mm lies (infinity allowed). `thin` collapses the lens to one plane.
-ParaxialLensModel MakeParaxialModel(const LensTracer& tracer, double distance_from_film, bool thin);
+ParaxialLensModel MakeParaxialModel(const LensSystem& lens, double distance_from_film, bool thin);
 
 class ParaxialLensCamera final : public LensCamera {
  public:

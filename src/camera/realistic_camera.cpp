@@ -16,29 +16,29 @@ bool IsDispersive(const LensPrescription& lens) {
   return false;
 }
 
-BatchLensTracer MakeFastTracer(const LensTracer& tracer, Vignetting v) {
-  BatchLensTracer fast(tracer);
+BatchLensTracer MakeFastTracer(const LensSystem& lens, Vignetting v) {
+  BatchLensTracer fast(lens);
   if (v == Vignetting::kNatural || v == Vignetting::kNone) fast.IgnoreRims();
   return fast;
 }
 
-PupilBoundsOptions BoundsOptions(const LensTracer& tracer, Vignetting v) {
+PupilBoundsOptions BoundsOptions(const LensSystem& lens, Vignetting v) {
   PupilBoundsOptions o;
   // The pupil's edge moves a little with the wavelength: bound the light of the whole range.
-  if (IsDispersive(tracer.lens())) o.wavelengths = {360.0, kLambdad, 830.0};
+  if (IsDispersive(lens.prescription())) o.wavelengths = {360.0, kLambdad, 830.0};
   o.rims = !(v == Vignetting::kNatural || v == Vignetting::kNone);
   return o;
 }
 
 }  // namespace
 
-RealisticCamera::RealisticCamera(const Transform& to_world, int width, int height, const LensTracer& tracer,
+RealisticCamera::RealisticCamera(const Transform& to_world, int width, int height, const LensSystem& lens,
                                  const LensCameraSettings& settings)
-    : LensCamera(to_world, width, height, settings), fast_(MakeFastTracer(tracer, settings.vignetting)),
-      bounds_(tracer, FilmRadius(), BoundsOptions(tracer, settings.vignetting)), film_z_(tracer.FilmZ()),
-      stop_radius_(float(tracer.StopSemiDiameter())), dispersive_(IsDispersive(tracer.lens())) {
-  ParaxialData p = ComputeParaxial(tracer.lens(), kLambdad, tracer.StopSemiDiameter());
-  SetOriginZ(tracer.VertexZ(0) + p.entrance_pupil_position);
+    : LensCamera(to_world, width, height, settings), fast_(MakeFastTracer(lens, settings.vignetting)),
+      bounds_(lens, FilmRadius(), BoundsOptions(lens, settings.vignetting)), film_z_(lens.FilmZ()),
+      stop_radius_(float(lens.StopSemiDiameter())), dispersive_(IsDispersive(lens.prescription())) {
+  ParaxialData p = ComputeParaxial(lens.prescription(), kLambdad, lens.StopSemiDiameter());
+  SetOriginZ(lens.VertexZ(0) + p.entrance_pupil_position);
 }
 
 bool RealisticCamera::StartRay(const CameraSample& s, SampledWavelengths& lambda, FloatRay& ray, float& weight) const {

@@ -12,7 +12,7 @@ namespace objektiv {
 class RealisticCamera final : public LensCamera {
  public:
   // `tracer`: the lens with its stop set and focused (the film at its place).
-  RealisticCamera(const Transform& to_world, int width, int height, const LensTracer& tracer,
+  RealisticCamera(const Transform& to_world, int width, int height, const LensSystem& lens,
                   const LensCameraSettings& settings);
   std::optional<CameraRay> GenerateRay(const CameraSample& s, SampledWavelengths& lambda) const override;
   void GenerateRays(std::span<const CameraSample> samples, std::span<SampledWavelengths> lambdas,

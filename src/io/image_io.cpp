@@ -2,11 +2,17 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
+#include <new>
 
 #include "base/error.h"
 #include "base/input_files.h"
 #include "base/output_file.h"
+#include "base/text_file.h"
+#include "io/image_file_checks.h"
 
 namespace objektiv {
 
@@ -26,29 +32,84 @@ struct RawImage {
   bool integer_format = false;
 };
 
+// The pixels of subimage 0 as floats, a strip of rows at a time (whole rows of tiles for a
+// tiled file) into storage reserved for all of them: a file that ends early fails having
+// touched only the memory for what it held.
+bool ReadPixels(OIIO::ImageInput& in, std::vector<float>& pixels) {
+  const OIIO::ImageSpec& spec = in.spec();
+  const size_t row = size_t(spec.width) * size_t(spec.nchannels);
+  const int strip = spec.tile_width > 0 ? std::max(spec.tile_height, 1) : 64;
+  pixels.reserve(row * size_t(spec.height));
+  for (int y = spec.y; y < spec.y + spec.height; y += strip) {
+    const int y_end = std::min(y + strip, spec.y + spec.height);
+    const size_t done = pixels.size();
+    pixels.resize(done + row * size_t(y_end - y));
+    float* out = pixels.data() + done;
+    bool ok = spec.tile_width > 0
+                  ? in.read_tiles(0, 0, spec.x, spec.x + spec.width, y, y_end, spec.z, spec.z + 1, 0, spec.nchannels,
+                                  OIIO::TypeDesc::FLOAT, out)
+                  : in.read_scanlines(0, 0, y, y_end, spec.z, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, out);
+    if (!ok) return false;
+  }
+  return true;
+}
+
+// The formats read, chosen by the file's extension (no other reader is tried): common image
+// formats whose readers report a truncated file as an error (JPEG and OpenEXR with the
+// checks of image_file_checks.h).
+// Movies, camera raw files, volumes and the rest of what OpenImageIO can read are refused.
+constexpr const char* kImageFormats[] = {"openexr", "hdr",  "png", "jpeg",     "tiff", "targa",
+                                         "bmp",     "pnm",  "webp", "jpeg2000", "gif",  "heif"};
+constexpr const char* kImageFormatList = "EXR, HDR, PNG, JPEG, TIFF, TGA, BMP, PNM, WebP, JPEG 2000, GIF, HEIF/AVIF";
+
 RawImage ReadRaw(const std::string& path) {
+  const uintmax_t file_size = CheckInputFile(path, "image", UINTMAX_MAX);
   RecordInputFile(path);
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw MakeInputError(path, 0, "cannot read image: {}", OIIO::geterror());
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  auto in = ext.size() > 1 ? OIIO::ImageInput::create(ext.substr(1)) : nullptr;
+  if (!in || std::none_of(std::begin(kImageFormats), std::end(kImageFormats),
+                          [&](const char* f) { return std::string(in->format_name()) == f; }))
+    throw MakeInputError(path, 0, "not an image format that is read (by its extension: {})", kImageFormatList);
+  if (std::string(in->format_name()) == "openexr") CheckExrHeaders(path, file_size);
+  OIIO::ImageSpec opened;
+  if (!in->open(path, opened)) throw MakeInputError(path, 0, "cannot read image: {}", in->geterror());
+  if (std::string(in->format_name()) == "jpeg" && !JpegIsComplete(path))
+    throw MakeInputError(path, 0, "cannot decode image: the JPEG data ends before its end-of-image marker (truncated)");
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
     throw MakeInputError(path, 0, "image has no pixels");
+  if (spec.depth != 1) throw MakeInputError(path, 0, "volume images (depth {}) are not supported", spec.depth);
+  const int64_t pixels = int64_t(spec.width) * spec.height;
+  if (pixels > kMaxImagePixels)
+    throw MakeInputError(path, 0, "the image is {}x{}, more than the limit of {} pixels ({}x{})", spec.width,
+                         spec.height, kMaxImagePixels, 1 << 14, 1 << 14);
+  const int64_t bytes = pixels * spec.nchannels * int64_t(sizeof(float));
+  if (bytes > kMaxImageBytes)
+    throw MakeInputError(path, 0, "the {}x{} image with {} channels needs {} MiB as floats, more than the limit of {} MiB",
+                         spec.width, spec.height, spec.nchannels, bytes >> 20, kMaxImageBytes >> 20);
   RawImage r;
   r.integer_format = !spec.format.is_floating_point();
-  std::vector<std::string> names;
-  for (int c = 0; c < spec.nchannels; ++c) names.push_back(spec.channel_name(c));
-  r.image = Image(spec.width, spec.height, names);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, r.image.pixels.data()))
-    throw MakeInputError(path, 0, "cannot decode image: {}", in->geterror());
+  r.image.width = spec.width;
+  r.image.height = spec.height;
+  for (int c = 0; c < spec.nchannels; ++c) r.image.channels.push_back(spec.channel_name(c));
+  if (!ReadPixels(*in, r.image.pixels)) throw MakeInputError(path, 0, "cannot decode image: {}", in->geterror());
   in->close();
   return r;
 }
-}  // namespace
 
-Image ReadImageAny(const std::string& path) { return ReadRaw(path).image; }
+// f(), with an allocation failure turned into an error naming the file.
+template <typename F>
+auto NamingAllocationFailures(const std::string& path, F f) {
+  try {
+    return f();
+  } catch (const std::bad_alloc&) {
+    throw MakeInputError(path, 0, "not enough memory to load the image");
+  }
+}
 
-Image ReadImageRgb(const std::string& path, bool raw) {
-  RawImage r = ReadRaw(path);
+// Three channels (grey replicated, alpha dropped), decoded from sRGB unless `raw`.
+Image ToRgb(const RawImage& r, bool raw, const std::string& path) {
   const Image& src = r.image;
   Image out(src.width, src.height, {"R", "G", "B"});
   int n = src.NumChannels();
@@ -61,6 +122,15 @@ Image ReadImageRgb(const std::string& path, bool raw) {
         out.At(x, y, c) = decode ? SrgbToLinear(v) : v;
       }
   return out;
+}
+}  // namespace
+
+Image ReadImageAny(const std::string& path) {
+  return NamingAllocationFailures(path, [&] { return ReadRaw(path).image; });
+}
+
+Image ReadImageRgb(const std::string& path, bool raw) {
+  return NamingAllocationFailures(path, [&] { return ToRgb(ReadRaw(path), raw, path); });
 }
 
 namespace {

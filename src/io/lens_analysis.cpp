@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
+#include <nlohmann/json.hpp>
 
 #include "base/error.h"
 #include "base/output_file.h"
@@ -25,21 +25,21 @@ std::vector<double> FieldSamples(double max_field, int n) {
   return f;
 }
 
-Svg SpotPlot(const LensTracer& tracer, const std::vector<double>& fields, std::string* json) {
+Svg SpotPlot(const LensSystem& lens, const std::vector<double>& fields, nlohmann::ordered_json* json) {
   const double lambdas[3] = {kF, kD, kC};
   const char* colours[3] = {"#1f5fd1", "#1a9e3a", "#d12f1f"};
   const double panel = 210, pad = 30;
   Svg svg(pad + 3 * panel + 20, 60 + fields.size() * panel + 40);
-  svg.Text({20, 26}, fmt::format("{}: spot diagrams (object at infinity)", tracer.lens().name), 15);
+  svg.Text({20, 26}, fmt::format("{}: spot diagrams (object at infinity)", lens.prescription().name), 15);
   // One scale for all panels: the largest spot sets it.
   std::vector<std::vector<Spot>> spots(fields.size());
   double extent = 1e-4;
   for (size_t f = 0; f < fields.size(); ++f)
     for (double l : lambdas) {
-      spots[f].push_back(SpotDiagram(tracer, fields[f], l, 31));
+      spots[f].push_back(SpotDiagram(lens, fields[f], l, 31));
       extent = std::max(extent, spots[f].back().geometric_radius * 1.1);
     }
-  *json += "  \"spots\": [\n";
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   for (size_t f = 0; f < fields.size(); ++f) {
     Vec2d reference = spots[f][1].centroid;  // the d line's centroid
     for (int w = 0; w < 3; ++w) {
@@ -54,13 +54,14 @@ Svg SpotPlot(const LensTracer& tracer, const std::vector<double>& fields, std::s
                fmt::format("{:.1f} deg, {:.0f} nm", fields[f], lambdas[w]), 10, "start", colours[w]);
       svg.Text(origin + Vec2d(-panel / 2 + 10, panel / 2 - 6),
                fmt::format("RMS {:.2f} um, GEO {:.2f} um", s.rms_radius * 1000, s.geometric_radius * 1000), 10);
-      *json += fmt::format("    {{\"field_deg\": {:.4f}, \"wavelength_nm\": {:.4f}, \"rms_radius_um\": {:.4f}, "
-                           "\"geometric_radius_um\": {:.4f}, \"transmitted\": {:.4f}}}{}\n",
-                           fields[f], lambdas[w], s.rms_radius * 1000, s.geometric_radius * 1000, s.transmitted,
-                           (f + 1 == fields.size() && w == 2) ? "" : ",");
+      rows.push_back({{"field_deg", fields[f]},
+                      {"wavelength_nm", lambdas[w]},
+                      {"rms_radius_um", s.rms_radius * 1000},
+                      {"geometric_radius_um", s.geometric_radius * 1000},
+                      {"transmitted", s.transmitted}});
     }
   }
-  *json += "  ],\n";
+  (*json)["spots"] = std::move(rows);
   svg.Text({pad, 60 + fields.size() * panel + 24},
            fmt::format("panel half-width {:.1f} um; spots centred on the d-line centroid", extent * 1000), 11);
   return svg;
@@ -68,32 +69,34 @@ Svg SpotPlot(const LensTracer& tracer, const std::vector<double>& fields, std::s
 
 }  // namespace
 
-void WriteLensAnalysis(const LensTracer& tracer, const std::string& directory) {
+void WriteLensAnalysis(const LensSystem& lens, const std::string& directory) {
   namespace fs = std::filesystem;
   std::error_code ec;
   fs::create_directories(directory, ec);
   if (ec) throw InputError(fmt::format("{}: cannot create the directory: {}", directory, ec.message()));
-  const LensPrescription& lens = tracer.lens();
-  ParaxialData p = ComputeParaxial(lens, kD, tracer.StopSemiDiameter());
-  std::vector<double> fields3 = DefaultFields(tracer, kD);
+  const LensPrescription& rx = lens.prescription();
+  ParaxialData p = ComputeParaxial(rx, kD, lens.StopSemiDiameter());
+  std::vector<double> fields3 = DefaultFields(lens, kD);
   double max_field = fields3.back();
-  std::string json = "{\n";
-  json += fmt::format("  \"name\": \"{}\",\n  \"efl_mm\": {:.6f},\n  \"bfl_mm\": {:.6f},\n  \"fnumber\": {:.6f},\n"
-                      "  \"max_field_deg\": {:.4f},\n",
-                      lens.name, p.efl, p.bfl, p.fnumber, max_field);
+  // Absent values (rays that do not get through) are null.
+  auto value = [](std::optional<double> v, double scale = 1) {
+    return v ? nlohmann::ordered_json(*v * scale) : nlohmann::ordered_json(nullptr);
+  };
+  nlohmann::ordered_json json = {
+      {"name", rx.name}, {"efl_mm", p.efl}, {"bfl_mm", p.bfl}, {"fnumber", p.fnumber}, {"max_field_deg", max_field}};
 
-  SpotPlot(tracer, fields3, &json).Write((fs::path(directory) / "spots.svg").string());
+  SpotPlot(lens, fields3, &json).Write((fs::path(directory) / "spots.svg").string());
 
   std::vector<double> fields = FieldSamples(max_field, 24);
   PlotSeries dist{"distortion", "#1f5fd1", {}}, tan{"tangential", "#d12f1f", {}}, sag{"sagittal", "#1f5fd1", {}};
   PlotSeries ri{"relative illumination", "#1a9e3a", {}}, cos4{"cos^4", "#999", {}, true};
-  json += "  \"fields\": [\n";
+  nlohmann::ordered_json field_rows = nlohmann::ordered_json::array();
   for (size_t i = 0; i < fields.size(); ++i) {
     double f = fields[i];
-    std::optional<double> d = f > 0 ? Distortion(tracer, p.efl, f, kD) : std::optional<double>(0.0);
-    std::optional<FieldCurvature> fc = FieldCurvatureAt(tracer, f, kD);
-    std::optional<double> r = RelativeIllumination(tracer, f, kD);
-    std::optional<double> hf = RealImageHeight(tracer, f, kF), hc = RealImageHeight(tracer, f, kC);
+    std::optional<double> d = f > 0 ? Distortion(lens, p.efl, f, kD) : std::optional<double>(0.0);
+    std::optional<FieldCurvature> fc = FieldCurvatureAt(lens, f, kD);
+    std::optional<double> r = RelativeIllumination(lens, f, kD);
+    std::optional<double> hf = RealImageHeight(lens, f, kF), hc = RealImageHeight(lens, f, kC);
     if (d) dist.points.push_back({f, *d * 100});
     if (fc) {
       tan.points.push_back({fc->tangential, f});
@@ -102,59 +105,58 @@ void WriteLensAnalysis(const LensTracer& tracer, const std::string& directory) {
     if (r) ri.points.push_back({f, *r});
     double c = std::cos(f * M_PI / 180);
     cos4.points.push_back({f, c * c * c * c});
-    auto num = [](std::optional<double> v, double scale = 1) { return v ? fmt::format("{:.6g}", *v * scale) : std::string("null"); };
-    json += fmt::format(
-        "    {{\"field_deg\": {:.4f}, \"image_height_mm\": {}, \"paraxial_image_height_mm\": {:.6g}, "
-        "\"distortion_percent\": {}, \"tangential_focus_mm\": {}, \"sagittal_focus_mm\": {}, "
-        "\"relative_illumination\": {}, \"lateral_colour_um\": {}}}{}\n",
-        f, num(RealImageHeight(tracer, f, kD)), p.efl * std::tan(f * M_PI / 180), num(d, 100), fc ? fmt::format("{:.6g}", fc->tangential) : "null", fc ? fmt::format("{:.6g}", fc->sagittal) : "null",
-        num(r), (hf && hc) ? fmt::format("{:.6g}", (*hf - *hc) * 1000) : "null", i + 1 == fields.size() ? "" : ",");
+    field_rows.push_back({{"field_deg", f},
+                          {"image_height_mm", value(RealImageHeight(lens, f, kD))},
+                          {"paraxial_image_height_mm", p.efl * std::tan(f * M_PI / 180)},
+                          {"distortion_percent", value(d, 100)},
+                          {"tangential_focus_mm", value(fc ? std::optional(fc->tangential) : std::nullopt)},
+                          {"sagittal_focus_mm", value(fc ? std::optional(fc->sagittal) : std::nullopt)},
+                          {"relative_illumination", value(r)},
+                          {"lateral_colour_um", value(hf && hc ? std::optional(*hf - *hc) : std::nullopt, 1000)}});
   }
-  json += "  ],\n";
-  LinePlot(lens.name + ": distortion", "field angle (deg)", "distortion (%)", {dist})
+  json["fields"] = std::move(field_rows);
+  LinePlot(rx.name + ": distortion", "field angle (deg)", "distortion (%)", {dist})
       .Write((fs::path(directory) / "distortion.svg").string());
-  LinePlot(lens.name + ": field curvature", "focus relative to the film (mm)", "field angle (deg)", {tan, sag})
+  LinePlot(rx.name + ": field curvature", "focus relative to the film (mm)", "field angle (deg)", {tan, sag})
       .Write((fs::path(directory) / "field_curvature.svg").string());
-  LinePlot(lens.name + ": relative illumination", "field angle (deg)", "relative illumination", {ri, cos4})
+  LinePlot(rx.name + ": relative illumination", "field angle (deg)", "relative illumination", {ri, cos4})
       .Write((fs::path(directory) / "relative_illumination.svg").string());
 
   // Axial colour: paraxial focus against wavelength, relative to the d line's, and the
   // longitudinal aberration across the pupil at three wavelengths.
   PlotSeries axial{"paraxial focus shift", "#a31fd1", {}};
-  json += "  \"axial_colour\": [\n";
+  nlohmann::ordered_json colour_rows = nlohmann::ordered_json::array();
   for (int l = 400; l <= 700; l += 10) {
-    double shift = ComputeParaxial(lens, l, tracer.StopSemiDiameter()).bfl - p.bfl;
+    double shift = ComputeParaxial(rx, l, lens.StopSemiDiameter()).bfl - p.bfl;
     axial.points.push_back({shift, double(l)});
-    json += fmt::format("    {{\"wavelength_nm\": {}, \"focus_shift_mm\": {:.6g}}}{}\n", l, shift, l == 700 ? "" : ",");
+    colour_rows.push_back({{"wavelength_nm", l}, {"focus_shift_mm", shift}});
   }
-  json += "  ],\n";
-  LinePlot(lens.name + ": axial colour", "focus shift from the d-line focus (mm)", "wavelength (nm)", {axial})
+  json["axial_colour"] = std::move(colour_rows);
+  LinePlot(rx.name + ": axial colour", "focus shift from the d-line focus (mm)", "wavelength (nm)", {axial})
       .Write((fs::path(directory) / "axial_colour.svg").string());
 
   const double lambdas[3] = {kF, kD, kC};
   const char* colours[3] = {"#1f5fd1", "#1a9e3a", "#d12f1f"};
   std::vector<PlotSeries> lsa;
-  std::vector<std::string> rows;  // joined at the end: rays that do not get through leave gaps
+  nlohmann::ordered_json lsa_rows = nlohmann::ordered_json::array();
   for (int w = 0; w < 3; ++w) {
     PlotSeries s{fmt::format("{:.0f} nm", lambdas[w]), colours[w], {}};
     for (int k = 1; k <= 20; ++k) {
       double h = p.entrance_pupil_diameter / 2 * k / 20;
-      std::optional<double> a = LongitudinalAberration(tracer, h, lambdas[w]);
+      std::optional<double> a = LongitudinalAberration(lens, h, lambdas[w]);
       // Relative to the d-line paraxial focus, so the curves also show axial colour.
-      double shift = ComputeParaxial(lens, lambdas[w], tracer.StopSemiDiameter()).bfl - p.bfl;
+      double shift = ComputeParaxial(rx, lambdas[w], lens.StopSemiDiameter()).bfl - p.bfl;
       if (a) s.points.push_back({*a + shift, double(k) / 20});
-      if (a)
-        rows.push_back(fmt::format("    {{\"wavelength_nm\": {:.4f}, \"pupil\": {:.3f}, \"focus_mm\": {:.6g}}}",
-                                   lambdas[w], double(k) / 20, *a + shift));
+      if (a) lsa_rows.push_back({{"wavelength_nm", lambdas[w]}, {"pupil", double(k) / 20}, {"focus_mm", *a + shift}});
     }
     lsa.push_back(s);
   }
-  json += "  \"longitudinal_aberration\": [\n" + fmt::format("{}", fmt::join(rows, ",\n")) + "\n  ]\n}\n";
-  LinePlot(lens.name + ": longitudinal aberration", "focus relative to the d-line paraxial focus (mm)",
+  json["longitudinal_aberration"] = std::move(lsa_rows);
+  LinePlot(rx.name + ": longitudinal aberration", "focus relative to the d-line paraxial focus (mm)",
            "pupil height (relative)", lsa)
       .Write((fs::path(directory) / "longitudinal_aberration.svg").string());
 
-  WriteTextFileAtomically((fs::path(directory) / "analysis.json").string(), json);
+  WriteTextFileAtomically((fs::path(directory) / "analysis.json").string(), json.dump(2) + "\n");
 }
 
 }  // namespace objektiv

@@ -8,7 +8,7 @@ namespace objektiv {
 
 // Writes spots.svg, distortion.svg, field_curvature.svg, relative_illumination.svg,
 // axial_colour.svg and analysis.json into `directory` (created if needed). The film is where
-// the tracer has it (the paraxial focus for an object at infinity, as callers set it).
-void WriteLensAnalysis(const LensTracer& tracer, const std::string& directory);
+// the lens has it (the paraxial focus for an object at infinity, as callers set it).
+void WriteLensAnalysis(const LensSystem& lens, const std::string& directory);
 
 }  // namespace objektiv

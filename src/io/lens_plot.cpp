@@ -10,29 +10,29 @@
 
 namespace objektiv {
 
-std::vector<double> DefaultFields(const LensTracer& tracer, double lambda_nm) {
-  ParaxialData p = ComputeParaxial(tracer.lens(), lambda_nm);
+std::vector<double> DefaultFields(const LensSystem& lens, double lambda_nm) {
+  ParaxialData p = ComputeParaxial(lens.prescription(), lambda_nm);
   double max_field = std::atan(21.63 / std::abs(p.efl)) * 180 / M_PI;
-  while (max_field > 0.5 && !RealImageHeight(tracer, max_field, lambda_nm)) max_field *= 0.95;
+  while (max_field > 0.5 && !RealImageHeight(lens, max_field, lambda_nm)) max_field *= 0.95;
   return {0.0, 0.7 * max_field, max_field};
 }
 
-Svg PlotLensLayout(const LensTracer& tracer, const std::vector<double>& fields, double lambda_nm) {
-  const LensPrescription& lens = tracer.lens();
-  const int n = int(lens.surfaces.size());
-  ParaxialData p = ComputeParaxial(lens, lambda_nm, tracer.StopSemiDiameter());
+Svg PlotLensLayout(const LensSystem& lens, const std::vector<double>& fields, double lambda_nm) {
+  const LensPrescription& rx = lens.prescription();
+  const int n = int(rx.surfaces.size());
+  ParaxialData p = ComputeParaxial(rx, lambda_nm, lens.StopSemiDiameter());
   double max_semi = 0;
-  for (const LensSurface& s : lens.surfaces) max_semi = std::max(max_semi, s.semi_diameter);
+  for (const LensSurface& s : rx.surfaces) max_semi = std::max(max_semi, s.semi_diameter);
   // The drawing spans the elements and the image of the largest field on the film.
   double y_extent = 1.3 * max_semi;
   for (double f : fields)
-    if (std::optional<double> h = RealImageHeight(tracer, f, lambda_nm)) y_extent = std::max(y_extent, 1.1 * std::abs(*h));
-  const double z_start = -0.25 * std::max(tracer.FilmZ(), 4 * max_semi), z_end = tracer.FilmZ();
+    if (std::optional<double> h = RealImageHeight(lens, f, lambda_nm)) y_extent = std::max(y_extent, 1.1 * std::abs(*h));
+  const double z_start = -0.25 * std::max(lens.FilmZ(), 4 * max_semi), z_end = lens.FilmZ();
   const double W = 960, H = 540, margin = 40;
   double scale = std::min((W - 2 * margin) / (z_end - z_start), (H - 2 * margin - 40) / (2 * y_extent));
   auto map = [&](double z, double y) { return Vec2d(margin + (z - z_start) * scale, H / 2 + 10 - y * scale); };
   Svg svg(W, H);
-  svg.Text({margin, 24}, fmt::format("{}: EFL {:.2f} mm, f/{:.2f}, {:.1f} nm", lens.name, p.efl, p.fnumber, lambda_nm), 15);
+  svg.Text({margin, 24}, fmt::format("{}: EFL {:.2f} mm, f/{:.2f}, {:.1f} nm", rx.name, p.efl, p.fnumber, lambda_nm), 15);
 
   // Elements: the profile of each surface followed by the next one's, where glass lies between.
   auto profile = [&](int i, double from, double to) {
@@ -40,36 +40,36 @@ Svg PlotLensLayout(const LensTracer& tracer, const std::vector<double>& fields, 
     const int steps = 48;
     for (int k = 0; k <= steps; ++k) {
       double y = from + (to - from) * k / steps;
-      pts.push_back(map(tracer.VertexZ(i) + tracer.Sag(i, std::abs(y)), y));
+      pts.push_back(map(lens.VertexZ(i) + lens.surface(i).Sag(std::abs(y)), y));
     }
     return pts;
   };
   // A stop inside glass (the same medium on both sides) is no face of the element: it spans
   // from the surface before the stop to the one after.
   auto glass_through_stop = [&](int i) {
-    return lens.surfaces[i].is_stop && i > 0 && i + 1 < n &&
-           lens.surfaces[i].IndexAfter(lambda_nm) == lens.surfaces[i - 1].IndexAfter(lambda_nm);
+    return rx.surfaces[i].is_stop && i > 0 && i + 1 < n &&
+           rx.surfaces[i].IndexAfter(lambda_nm) == rx.surfaces[i - 1].IndexAfter(lambda_nm);
   };
   for (int i = 0; i + 1 < n; ++i) {
-    if (!lens.surfaces[i].medium || glass_through_stop(i)) continue;
+    if (!rx.surfaces[i].medium || glass_through_stop(i)) continue;
     const int j = glass_through_stop(i + 1) ? i + 2 : i + 1;  // the element's back face
-    const double semi_i = lens.surfaces[i].semi_diameter, semi_j = lens.surfaces[j].semi_diameter;
+    const double semi_i = rx.surfaces[i].semi_diameter, semi_j = rx.surfaces[j].semi_diameter;
     double h = std::max(semi_i, semi_j);
     std::vector<Vec2d> poly = profile(i, -semi_i, semi_i);
     // Flat rims out to the larger of the two apertures, as lens elements are ground.
-    poly.push_back(map(tracer.VertexZ(i) + tracer.Sag(i, semi_i), h));
-    poly.push_back(map(tracer.VertexZ(j) + tracer.Sag(j, semi_j), h));
+    poly.push_back(map(lens.VertexZ(i) + lens.surface(i).Sag(semi_i), h));
+    poly.push_back(map(lens.VertexZ(j) + lens.surface(j).Sag(semi_j), h));
     std::vector<Vec2d> back = profile(j, semi_j, -semi_j);
     poly.insert(poly.end(), back.begin(), back.end());
-    poly.push_back(map(tracer.VertexZ(j) + tracer.Sag(j, semi_j), -h));
-    poly.push_back(map(tracer.VertexZ(i) + tracer.Sag(i, semi_i), -h));
+    poly.push_back(map(lens.VertexZ(j) + lens.surface(j).Sag(semi_j), -h));
+    poly.push_back(map(lens.VertexZ(i) + lens.surface(i).Sag(semi_i), -h));
     svg.Polygon(poly, "#cfe3f5", "#2b5d8a", 1.2);
   }
   // Optical axis, stop, film.
   svg.Line(map(z_start, 0), map(z_end, 0), "#888", 0.8, "6,4");
-  int stop = lens.StopIndex();
+  int stop = rx.StopIndex();
   if (stop >= 0) {
-    double zs = tracer.VertexZ(stop), r = tracer.StopSemiDiameter(), outer = std::max(r * 1.25, r + 0.08 * max_semi);
+    double zs = lens.VertexZ(stop), r = lens.StopSemiDiameter(), outer = std::max(r * 1.25, r + 0.08 * max_semi);
     svg.Line(map(zs, r), map(zs, outer), "#000", 3);
     svg.Line(map(zs, -r), map(zs, -outer), "#000", 3);
   }
@@ -80,7 +80,7 @@ Svg PlotLensLayout(const LensTracer& tracer, const std::vector<double>& fields, 
   const char* colours[] = {"#1f5fd1", "#1a9e3a", "#d12f1f", "#a31fd1", "#d18a1f"};
   for (size_t f = 0; f < fields.size(); ++f) {
     double theta = fields[f] * M_PI / 180;
-    std::optional<LensRay> chief = ChiefRay(tracer, fields[f], lambda_nm);
+    std::optional<LensRay> chief = ChiefRay(lens, fields[f], lambda_nm);
     if (!chief) continue;
     Vec3d dir(0, std::sin(theta), std::cos(theta));
     for (double frac : {-1.0, -0.5, 0.0, 0.5, 1.0}) {
@@ -91,7 +91,7 @@ Svg PlotLensLayout(const LensTracer& tracer, const std::vector<double>& fields, 
       double back = (chief->o.z - z_start) / dir.z;
       r.o = r.o - dir * back;
       std::vector<Vec3d> path;
-      TraceResult t = tracer.TraceFromObject(r, lambda_nm, &path);
+      TraceResult t = TraceFromObject(lens, r, lambda_nm, &path);
       std::vector<Vec2d> pts = {map(r.o.z, r.o.y)};
       for (const Vec3d& q : path) pts.push_back(map(q.z, q.y));
       if (t.ray && t.ray->d.z > 0) {

@@ -10,10 +10,10 @@ namespace objektiv {
 // Cross-section of the elements (from the exact surface sags), the stop, the film, and
 // meridional fans of real rays (five per field, across the entrance pupil) for each field
 // angle in degrees. Rays stop where an aperture blocks them.
-Svg PlotLensLayout(const LensTracer& tracer, const std::vector<double>& fields_deg, double lambda_nm = 587.5618);
+Svg PlotLensLayout(const LensSystem& lens, const std::vector<double>& fields_deg, double lambda_nm = 587.5618);
 
 // A default set of fields: on axis, 70% and 100% of the field that covers a full-frame
 // half-diagonal (21.6 mm) or the largest the lens can trace, whichever is smaller.
-std::vector<double> DefaultFields(const LensTracer& tracer, double lambda_nm = 587.5618);
+std::vector<double> DefaultFields(const LensSystem& lens, double lambda_nm = 587.5618);
 
 }  // namespace objektiv

@@ -24,6 +24,7 @@ const std::map<std::string, EmitterFactory>& EmitterRegistry() {
        [](const Properties& p) -> std::unique_ptr<Light> {
          Vec3f pos = p.Has("position") ? Vec3f(p.Point("position", Vec3d(0.0)))
                                        : p.GetTransform("to_world").Point(Vec3f(0.f));
+         CheckWithinSceneLimit(pos, p.Has("position") ? p.LocOf("position") : p.LocOf("to_world"), "the point light");
          return std::make_unique<PointLight>(pos, Illuminant(p, "intensity", 1));
        }},
       {"spot",
@@ -31,14 +32,15 @@ const std::map<std::string, EmitterFactory>& EmitterRegistry() {
          Transform t = p.GetTransform("to_world");
          float cutoff = float(p.FloatIn("cutoff_angle", 20, 1e-3, 90));
          float beam = float(p.FloatIn("beam_width", cutoff * 0.75, 0, 90));
-         return std::make_unique<SpotLight>(t.Point(Vec3f(0.f)), t.Vector(Vec3f(0, 0, 1)), Illuminant(p, "intensity", 1),
-                                            cutoff, beam);
+         CheckWithinSceneLimit(t.Point(Vec3f(0.f)), p.LocOf("to_world"), "the spot light");
+         return std::make_unique<SpotLight>(t.Point(Vec3f(0.f)), UnitVector(t.Vector(Vec3f(0, 0, 1)), p.LocOf("to_world"), "the direction"),
+                                            Illuminant(p, "intensity", 1), cutoff, beam);
        }},
       {"directional",
        [](const Properties& p) -> std::unique_ptr<Light> {
          Vec3f dir = p.Has("direction") ? Vec3f(p.Vector("direction", Vec3d(0, 0, 1)))
                                         : p.GetTransform("to_world").Vector(Vec3f(0, 0, 1));
-         if (!(Length(dir) > 0)) throw ErrorAt(p.LocOf("direction"), "direction must not be zero");
+         dir = UnitVector(dir, p.Has("direction") ? p.LocOf("direction") : p.LocOf("to_world"), "direction");
          return std::make_unique<DirectionalLight>(dir, Illuminant(p, "irradiance", 1));
        }},
       {"constant",

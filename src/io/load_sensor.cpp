@@ -191,10 +191,13 @@ void BuildSensor(const ObjectNode& node, RenderSetup& setup) {
   auto it = registry.find(node.type);
   if (it == registry.end()) UnknownType(node, registry);
   Properties p(node);
-  setup.film = BuildFilm(OneChild(p, "film"));
+  const ObjectNode* film = OneChild(p, "film");
+  setup.film = BuildFilm(film);
+  setup.film.loc = film ? film->loc : node.loc;
   setup.sampler = BuildSamplerSettings(OneChild(p, "sampler"));
   SensorBase base{p.GetTransform("to_world"), setup.film.width, setup.film.height,
                   float(p.FloatIn("far_clip", 1e4, 1e-30, 1e30))};
+  CheckWithinSceneLimit(base.to_world.Point(Vec3f(0.f)), p.LocOf("to_world"), "the sensor");
   setup.camera = it->second(p, base);
   p.WarnUnused();
 }

@@ -125,7 +125,11 @@ void BuildInstance(const ObjectNode& node, LoaderContext& ctx) {
   if (refs.size() != 1 || refs[0]->type != "shapegroup")
     throw ErrorAt(node.loc, "an instance needs exactly one <ref> to a shapegroup");
   int group = BuildShapeGroup(*refs[0], ctx);
-  ctx.scene.AddInstance(group, props.GetTransform("to_world"));
+  try {
+    ctx.scene.AddInstance(group, props.GetTransform("to_world"));
+  } catch (const std::invalid_argument& e) {
+    throw ErrorAt(node.loc, "{}", e.what());
+  }
   props.WarnUnused();
 }
 

@@ -15,6 +15,12 @@ struct LoaderContext {
   std::map<const ObjectNode*, int> shape_groups;  // built <shape type="shapegroup">s
 };
 
+// Throws "LOC: WHAT at (x, y, z) lies beyond the scene's coordinate limit" (kMaxSceneCoordinate).
+void CheckWithinSceneLimit(const Vec3f& p, const Location& loc, const char* what);
+// v scaled to unit length (by its largest component first, so that no square overflows);
+// throws naming WHAT if v is zero or not finite.
+Vec3f UnitVector(const Vec3f& v, const Location& loc, const char* what);
+
 // Resolves a file name relative to the scene file that mentions it.
 std::string ResolvePath(const Location& loc, const std::string& filename);
 

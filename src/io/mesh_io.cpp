@@ -10,14 +10,27 @@
 
 #include "base/error.h"
 #include "base/input_files.h"
+#include "base/log.h"
+#include "base/text_file.h"
+#include "io/ply_check.h"
 
 namespace objektiv {
 
 namespace {
+// Every position, normal and texture coordinate finite (NaN or infinite ones would reach the
+// renderer's arithmetic, and Embree), and at least one triangle.
 void CheckFinite(const MeshData& m, const std::string& path) {
-  for (const Vec3f& p : m.positions)
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      throw MakeInputError(path, 0, "mesh has a non-finite vertex position");
+  auto finite = [](const auto& v) {
+    if constexpr (requires { v.z; }) return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+    else return std::isfinite(v.x) && std::isfinite(v.y);
+  };
+  auto check = [&](const auto& values, const char* what) {
+    for (size_t i = 0; i < values.size(); ++i)
+      if (!finite(values[i])) throw MakeInputError(path, 0, "mesh has a non-finite {} (vertex {})", what, i);
+  };
+  check(m.positions, "vertex position");
+  check(m.normals, "normal");
+  check(m.uvs, "texture coordinate");
   if (m.indices.empty()) throw MakeInputError(path, 0, "mesh has no triangles");
 }
 }  // namespace
@@ -27,9 +40,10 @@ MeshData LoadObj(const std::string& path, const MeshLoadOptions& options) {
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;
-  config.mtl_search_path = "";
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path, config)) {
+  // From memory, with no material library: tinyobjloader would otherwise open any file an
+  // 'mtllib' line names (materials come from the scene, not from .mtl files).
+  if (!reader.ParseFromString(ReadTextFile(path, "OBJ mesh", kMaxMeshFileBytes), "", config)) {
     std::string err = reader.Error();
     while (!err.empty() && err.back() == '\n') err.pop_back();
     throw MakeInputError(path, 0, "cannot read OBJ: {}", err.empty() ? "unknown error" : err);
@@ -86,18 +100,49 @@ MeshData LoadObj(const std::string& path, const MeshLoadOptions& options) {
   return m;
 }
 
+namespace {
+
+// Appends a polygon's triangles: a fan around one corner, the reflex corner of a concave
+// quadrilateral (the one corner whose fan stays inside it) or else the first (exact for
+// convex polygons).
+void AppendPolygon(const uint32_t* corners, unsigned n, MeshData& m) {
+  unsigned start = 0;
+  if (n == 4) {
+    auto p = [&](unsigned i) { return m.positions[corners[i % 4]]; };
+    Vec3f normal(0.f);  // Newell's normal
+    for (unsigned i = 0; i < 4; ++i) normal += Cross(p(i), p(i + 1));
+    for (unsigned i = 0; i < 4; ++i)
+      if (Dot(Cross(p(i) - p(i + 3), p(i + 1) - p(i)), normal) < 0) start = i;
+  }
+  for (unsigned k = 1; k + 1 < n; ++k)
+    for (unsigned c : {start, (start + k) % n, (start + k + 1) % n}) m.indices.push_back(corners[c]);
+}
+
+}  // namespace
+
 MeshData LoadPly(const std::string& path, const MeshLoadOptions& options) {
-  RecordInputFile(path);
+  const std::string bytes = ReadTextFile(path, "PLY mesh", kMaxMeshFileBytes);
+  const PlyLayout layout = CheckPlyFile(bytes, path);
+  // Only Assimp's PLY reader (the hint), on the bytes checked above. Its data is validated
+  // before any post-processing (out-of-range indices crashed it), and polygons are
+  // triangulated here (its triangulation asserts on some broken faces).
   Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
+  const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(),
+                                                     aiProcess_ValidateDataStructure | aiProcess_JoinIdenticalVertices, "ply");
   if (!scene || !scene->mRootNode) throw MakeInputError(path, 0, "cannot read PLY: {}", importer.GetErrorString());
   MeshData m;
   bool has_normals = !options.face_normals, has_uvs = true;
+  int64_t faces = 0, not_polygons = 0;
   for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
     const aiMesh* mesh = scene->mMeshes[i];
     has_normals &= mesh->HasNormals();
     has_uvs &= mesh->HasTextureCoords(0);
+    faces += mesh->mNumFaces;
   }
+  if (faces != layout.Count("face"))
+    throw MakeInputError(path, 0, "{} faces were read of the {} the header declares (the file is malformed)", faces,
+                         layout.Count("face"));
+  std::vector<uint32_t> corners;
   for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
     const aiMesh* mesh = scene->mMeshes[i];
     uint32_t base = uint32_t(m.positions.size());
@@ -108,10 +153,20 @@ MeshData LoadPly(const std::string& path, const MeshLoadOptions& options) {
     }
     for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
       const aiFace& face = mesh->mFaces[f];
-      if (face.mNumIndices != 3) continue;  // points and lines
-      for (int k = 0; k < 3; ++k) m.indices.push_back(base + face.mIndices[k]);
+      if (face.mNumIndices < 3) {
+        ++not_polygons;
+        continue;
+      }
+      corners.clear();
+      for (unsigned k = 0; k < face.mNumIndices; ++k) {
+        if (face.mIndices[k] >= mesh->mNumVertices)
+          throw MakeInputError(path, 0, "face {} refers to vertex {}, of {}", f, face.mIndices[k], mesh->mNumVertices);
+        corners.push_back(base + face.mIndices[k]);
+      }
+      AppendPolygon(corners.data(), face.mNumIndices, m);
     }
   }
+  if (not_polygons) spdlog::warn("{}: {} faces of fewer than 3 vertices (points or lines) are ignored", path, not_polygons);
   CheckFinite(m, path);
   return m;
 }

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "base/log.h"
+#include "base/text_file.h"
 #include "io/loader_context.h"
 
 namespace objektiv {
@@ -12,7 +13,25 @@ std::string ResolvePath(const Location& loc, const std::string& filename) {
   fs::path p(filename);
   if (p.is_relative()) p = fs::path(loc.file).parent_path() / p;
   if (!fs::exists(p)) throw ErrorAt(loc, "file not found: '{}'", p.string());
+  // Its reader checks it again, with the size limit for its kind.
+  try {
+    CheckInputFile(p.string(), "file", UINTMAX_MAX);
+  } catch (const InputError& e) {
+    throw ErrorAt(loc, "{}", e.what());
+  }
   return p.string();
+}
+
+void CheckWithinSceneLimit(const Vec3f& p, const Location& loc, const char* what) {
+  if (!WithinSceneLimit(p))
+    throw ErrorAt(loc, "{} at ({:g}, {:g}, {:g}) lies beyond the scene's coordinate limit of {:g}", what, p.x, p.y, p.z,
+                  kMaxSceneCoordinate);
+}
+
+Vec3f UnitVector(const Vec3f& v, const Location& loc, const char* what) {
+  float m = MaxComponent(Abs(v));
+  if (!(m > 0) || !std::isfinite(m)) throw ErrorAt(loc, "{} must be finite and not zero", what);
+  return Normalize(v / m);
 }
 
 std::unique_ptr<Sampler> MakeSampler(const SamplerSettings& s) {

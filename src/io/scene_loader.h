@@ -6,12 +6,14 @@
 
 #include "camera/camera.h"
 #include "io/tonemap.h"
+#include "io/xml_document.h"
 #include "render/film.h"
 #include "render/integrator.h"
 
 namespace objektiv {
 
 struct FilmSettings {
+  Location loc;  // of the <film> (or of the <sensor> without one), for errors about its size
   int width = 768, height = 576;
   CropWindow crop;  // defaults to the full film
   std::shared_ptr<const Filter> filter;

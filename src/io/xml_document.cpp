@@ -73,7 +73,7 @@ class Parser {
     if (!scene) throw MakeInputError(name, 1, "the root element must be <scene>");
     root->loc = {name, ctx.LineOf(scene.offset_debug())};
     CheckAttributes(scene, {"version"}, root->loc);  // Mitsuba 3's version of the language
-    Walk(scene, ctx, *root, 0);
+    Walk(scene, ctx, *root, 0, 0);
     for (const auto& [key, overridden] : overridden_)
       if (!declared_.count(key))
         spdlog::warn("{}: -D {}: the scene declares no parameter '{}' (no <default> and no ${}); ignored", name, key,
@@ -86,6 +86,10 @@ class Parser {
     if (LooksLikePbrt(text, name))
       throw MakeInputError(name, 0, "a pbrt scene: Objektiv reads scenes only in its XML language (Mitsuba 3's), not "
                                     "in pbrt's format (pbrt's lens files, .dat, it does read)");
+    xml_bytes_ += text.size();
+    if (xml_bytes_ > kMaxTextFileBytes)
+      throw MakeInputError(name, 0, "the scene and its includes hold more than {} MiB of XML in all",
+                           kMaxTextFileBytes >> 20);
     FileContext ctx;
     ctx.path = name;
     ctx.line_starts.push_back(0);
@@ -113,6 +117,10 @@ class Parser {
       declared_.insert(key);
       auto it = params_.find(key);
       if (it == params_.end()) throw ErrorAt(loc, "undefined parameter ${} (define it with <default> or -D)", key);
+      // Parameters made of parameters grow exponentially: bound all the text they make.
+      substituted_bytes_ += it->second.size();
+      if (substituted_bytes_ > kMaxTextFileBytes)
+        throw ErrorAt(loc, "parameter substitution has made more than {} MiB of text", kMaxTextFileBytes >> 20);
       out += it->second;
       i = j - 1;
     }
@@ -226,6 +234,9 @@ class Parser {
           throw ErrorAt(loc, "unknown transform operation <{}>", name);
         }
         t = m * t;  // later operations apply after earlier ones
+        for (const auto& row : t.Matrix().m)
+          for (double v : row)
+            if (!std::isfinite(v)) throw ErrorAt(loc, "the transform overflows (its numbers are too large)");
       } catch (const std::invalid_argument& e) {
         throw ErrorAt(loc, "{}", e.what());
       }
@@ -259,7 +270,9 @@ class Parser {
       s.kind = SpectrumValue::Kind::kBlackbody;
       s.temperature = float(n.attribute("temperature") ? ParseDouble(Attr(n, "temperature", loc), loc)
                                                        : nested_float("temperature", -1));
-      if (!(s.temperature > 0)) throw ErrorAt(loc, "blackbody spectrum needs a positive temperature (K)");
+      // Beyond this range Planck's law over- or underflows to a NaN spectrum.
+      if (!(s.temperature >= 1 && s.temperature <= 1e9))
+        throw ErrorAt(loc, "blackbody spectrum needs a temperature from 1 to 1e9 K");
       s.value = float(nested_float("scale", 1));
       return s;
     }
@@ -324,6 +337,10 @@ class Parser {
   // name is only a key, as in Mitsuba 3, whose plugins find their BSDF, emitter, film or
   // sampler (and the scene its objects) by kind.
   void Attach(ObjectNode& parent, std::shared_ptr<ObjectNode> obj, const std::string& name, const Location& loc) {
+    // Through <ref>s an object can sit deeper than its element: bound every walk over the tree.
+    parent.height = std::max(parent.height, obj->height + 1);
+    if (parent.height > kMaxObjectNesting)
+      throw ErrorAt(loc, "objects nested more than {} levels deep (counting those <ref>s bring in)", kMaxObjectNesting);
     if (name.empty() || obj->tag != "texture") {
       parent.children.push_back(std::move(obj));
     } else {
@@ -338,7 +355,8 @@ class Parser {
     parent.props.push_back(std::move(p));
   }
 
-  void Walk(const pugi::xml_node& node, const FileContext& ctx, ObjectNode& parent, int include_depth) {
+  // `depth`: how many objects enclose the children of `node` (0 at the scene's root).
+  void Walk(const pugi::xml_node& node, const FileContext& ctx, ObjectNode& parent, int include_depth, int depth) {
     for (pugi::xml_node c : node.children()) {
       if (c.type() != pugi::node_element) continue;
       std::string tag = c.name();
@@ -351,15 +369,22 @@ class Parser {
         if (!overridden_.count(name)) params_[name] = Attr(c, "value", loc);
       } else if (tag == "include") {
         CheckAttributes(c, {"filename"}, loc);
-        if (include_depth > 16) throw ErrorAt(loc, "includes nested too deeply (a cycle?)");
+        if (include_depth >= kMaxIncludeDepth)
+          throw ErrorAt(loc, "includes nested more than {} deep (a cycle?)", kMaxIncludeDepth);
+        if (++includes_ > kMaxIncludes) throw ErrorAt(loc, "more than {} <include>s in all", kMaxIncludes);
         fs::path inc = fs::path(ctx.path).parent_path() / Attr(c, "filename", loc);
-        if (!fs::exists(inc)) throw ErrorAt(loc, "cannot open included file '{}'", inc.string());
+        std::string text;
+        try {
+          text = ReadTextFile(inc.string(), "included file");
+        } catch (const InputError& e) {
+          throw ErrorAt(loc, "{}", e.what());
+        }
         pugi::xml_document doc;
-        FileContext sub = Load(ReadTextFile(inc.string(), "included file"), inc.string(), &doc);
+        FileContext sub = Load(text, inc.string(), &doc);
         pugi::xml_node scene = doc.child("scene");
         if (!scene) throw MakeInputError(inc.string(), 1, "an included file must have a <scene> root");
         CheckAttributes(scene, {"version"}, Loc(sub, scene));
-        Walk(scene, sub, parent, include_depth + 1);
+        Walk(scene, sub, parent, include_depth + 1, depth);
       } else if (tag == "ref") {
         CheckAttributes(c, {"id", "name"}, loc);
         std::string id = Attr(c, "id", loc);
@@ -375,12 +400,13 @@ class Parser {
         ids_[as] = it->second;
       } else if (IsObjectTag(tag)) {
         CheckAttributes(c, {"type", "id", "name"}, loc);
+        if (depth >= kMaxObjectNesting) throw ErrorAt(loc, "objects nested more than {} levels deep", kMaxObjectNesting);
         auto obj = std::make_shared<ObjectNode>();
         obj->tag = tag;
         obj->type = Attr(c, "type", loc);
         obj->id = Attr(c, "id", loc, false);
         obj->loc = loc;
-        Walk(c, ctx, *obj, include_depth);
+        Walk(c, ctx, *obj, include_depth, depth + 1);
         if (!obj->id.empty()) {
           if (ids_.count(obj->id)) throw ErrorAt(loc, "id '{}' is used twice", obj->id);
           ids_[obj->id] = obj;
@@ -436,6 +462,9 @@ class Parser {
   std::map<std::string, bool> overridden_;
   mutable std::set<std::string> declared_;  // names given a <default> or used as $name
   std::map<std::string, std::shared_ptr<ObjectNode>> ids_;
+  size_t xml_bytes_ = 0;
+  mutable size_t substituted_bytes_ = 0;  // counted by the const readers of attributes
+  int includes_ = 0;
 };
 
 }  // namespace

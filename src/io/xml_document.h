@@ -14,6 +14,15 @@
 
 namespace objektiv {
 
+// Limits on a scene, far beyond any real one, so that a hostile file ends in an error rather
+// than a stack overflow or an exponential blow-up: objects nested in objects (counting those
+// a <ref> brings in), includes nested in includes, <include>s in all. The XML read in all (the
+// scene and each include, as often as included) and the text made by $parameter substitution
+// are each bounded by kMaxTextFileBytes.
+inline constexpr int kMaxObjectNesting = 100;
+inline constexpr int kMaxIncludeDepth = 16;
+inline constexpr int kMaxIncludes = 10000;
+
 struct Location {
   std::string file;
   int line = 0;
@@ -54,6 +63,7 @@ struct ObjectNode {
   Location loc;
   std::vector<Property> props;                        // typed values and named nested objects
   std::vector<std::shared_ptr<ObjectNode>> children;  // unnamed nested objects (in order)
+  int height = 0;  // levels of objects below this one (at most kMaxObjectNesting)
   mutable bool used = false;
 };
 

@@ -16,18 +16,18 @@ constexpr float kTableMin = 360.f, kTableMax = 830.f;
 constexpr int kTableSize = 471;  // 1 nm steps
 }  // namespace
 
-BatchLensTracer::BatchLensTracer(const LensTracer& tracer)
-    : film_z_(float(tracer.FilmZ())), stop_shape_(tracer.stop_shape()), stop_semi_(float(tracer.StopSemiDiameter())) {
-  const LensPrescription& lens = tracer.lens();
+BatchLensTracer::BatchLensTracer(const LensSystem& lens_system)
+    : film_z_(float(lens_system.FilmZ())), stop_shape_(lens_system.stop_shape()), stop_semi_(float(lens_system.StopSemiDiameter())) {
+  const LensPrescription& lens = lens_system.prescription();
   index_tables_.push_back(std::vector<float>(kTableSize, 1.f));  // air
   absorption_tables_.push_back(std::vector<float>(kTableSize, 0.f));
   for (size_t i = 0; i < lens.surfaces.size(); ++i) {
     const LensSurface& s = lens.surfaces[i];
     Surface f;
-    f.z = float(tracer.VertexZ(int(i)));
+    f.z = float(lens_system.VertexZ(int(i)));
     f.c = float(s.Curvature());
     f.k1 = float(1 + s.conic);
-    double semi = s.is_stop ? tracer.StopSemiDiameter() : s.semi_diameter;
+    double semi = s.is_stop ? lens_system.StopSemiDiameter() : s.semi_diameter;
     f.semi2 = float(semi * semi);
     f.plane = f.c == 0;
     f.aspheric = s.HasAsphericTerms();
@@ -62,12 +62,6 @@ BatchLensTracer::BatchLensTracer(const LensTracer& tracer)
 void BatchLensTracer::IgnoreRims() {
   for (Surface& s : surfaces_)
     if (!s.is_stop) s.semi2 = INFINITY;
-}
-
-BatchLensTracer BatchLensTracer::WithStopShape(const StopShape& shape) const {
-  BatchLensTracer t = *this;
-  t.stop_shape_ = shape;
-  return t;
 }
 
 void BatchLensTracer::TraceFromFilm(RayBatch& rays, bool transmission) const { Trace(rays, true, transmission); }
@@ -198,6 +192,7 @@ void StepAll(const Step& s, bool transmission, RayBatch& b) {
 
 void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) const {
   const size_t count = rays.Size();
+  if (count == 0) return;  // e.g. a pixel outside a fisheye's image circle: no sample starts a ray
   // Each medium's index and absorption at each ray's wavelength, once for all surfaces (the
   // kernel then reads them as contiguous arrays, which vectorises better than table lookups).
   const size_t media = index_tables_.size();
@@ -212,14 +207,14 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
   };
   rays.media_index.resize(media * count);
   for (size_t m = 0; m < media; ++m) {
-    float* out = &rays.media_index[m * count];
+    float* out = rays.media_index.data() + m * count;
     if (constant_index_[m]) std::fill(out, out + count, index_tables_[m][0]);
     else interpolate(index_tables_[m], out);
   }
   // Absorption coefficients only when some glass absorbs (else one block of zeros, air's).
   rays.media_alpha.assign((absorbing ? media : 1) * count, 0.f);
   if (absorbing)
-    for (size_t m = 1; m < media; ++m) interpolate(absorption_tables_[m], &rays.media_alpha[m * count]);
+    for (size_t m = 1; m < media; ++m) interpolate(absorption_tables_[m], rays.media_alpha.data() + m * count);
   rays.depth.assign(count, 0.f);
   const int n = int(surfaces_.size());
   for (int k = 0; k < n; ++k) {
@@ -231,8 +226,9 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
     // Air is medium 0 (index one, no absorption); the ray starts in air (no absorption before
     // the first surface).
     const bool absorb = k > 0;
-    Step st{sf.z, sf.c, sf.k1, sf.semi2, sf.a2, {}, &rays.media_index[(m_in + 1) * count],
-            &rays.media_index[(m_out + 1) * count], &rays.media_alpha[(absorb && absorbing ? m_in + 1 : 0) * count]};
+    Step st{sf.z, sf.c, sf.k1, sf.semi2, sf.a2, {}, rays.media_index.data() + (m_in + 1) * count,
+            rays.media_index.data() + (m_out + 1) * count,
+            rays.media_alpha.data() + (absorb && absorbing ? m_in + 1 : 0) * count};
     std::copy(sf.a, sf.a + 7, st.a);
     const bool refract = m_in != m_out;  // the stop too, where it parts two media
     if (sf.plane) {

@@ -2,12 +2,12 @@
 // (surfaces in the outer loop, rays in the inner loop, branch-free, so that the compiler
 // vectorises it),
 // each ray with its own wavelength (each glass's index is tabulated at 1 nm). It follows the
-// double-precision LensTracer to well below 1e-4 mm at the film.
+// double-precision tracer (optics/lens_tracer.h) to well below 1e-4 mm at the film.
 #pragma once
 #include <cstdint>
 #include <vector>
 
-#include "optics/lens_tracer.h"
+#include "optics/lens_system.h"
 
 namespace objektiv {
 
@@ -43,16 +43,15 @@ struct RayBatch {
 
 class BatchLensTracer {
  public:
-  // Copies what it needs from `tracer` (surfaces, stop size and shape, film position).
-  explicit BatchLensTracer(const LensTracer& tracer);
+  // The lens compiled for tracing in single precision: its surfaces, the stop's size and
+  // opening, the film's position, and each medium's tables (the lens itself is not kept).
+  explicit BatchLensTracer(const LensSystem& lens);
   // In place, film toward object; rays that are blocked get alive = 0. With `transmission`
   // the Fresnel losses and glass absorption are multiplied into `transmittance`.
   void TraceFromFilm(RayBatch& rays, bool transmission = true) const;
   void TraceFromObject(RayBatch& rays, bool transmission = true) const;
   // Without the rims: only the stop clips (to show a lens without optical vignetting).
   void IgnoreRims();
-  // The same lens with another opening of the stop (the pupil bounds probe turned irises).
-  BatchLensTracer WithStopShape(const StopShape& shape) const;
   float FilmZ() const { return film_z_; }
 
  private:

@@ -28,7 +28,7 @@ ObjectRay TraceFromObjectPoint(const LensPrescription& lens, double s, double la
 FocusSolution ImageObject(const LensPrescription& lens, double s, double lambda_nm) {
   ObjectRay r = TraceFromObjectPoint(lens, s, lambda_nm);
   FocusSolution f;
-  f.object_distance = s;
+  f.object_to_first_vertex = s;
   f.back_focus = -r.y_end / r.nu_end;
   f.magnification = 1 / r.nu_end;  // Lagrange: n u / n' u' with n u = 1 at the object
   int stop = lens.StopIndex();

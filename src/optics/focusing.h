@@ -9,13 +9,13 @@ namespace objektiv {
 
 struct FocusSolution {
   double back_focus = 0;       // last vertex to film, mm (the last thickness)
-  double object_distance = 0;  // object to first vertex, mm
+  double object_to_first_vertex = 0;  // mm
   double magnification = 0;    // image height / object height (negative: inverted)
   double working_fnumber = 0;  // 1 / (2 |u'|) of the marginal ray at the film
 };
 
-// Paraxial image of an object `object_distance` mm in front of the first vertex.
-FocusSolution ImageObject(const LensPrescription& lens, double object_distance, double lambda_nm = 587.5618);
+// Paraxial image of an object `object_to_first_vertex` mm in front of the first vertex.
+FocusSolution ImageObject(const LensPrescription& lens, double object_to_first_vertex, double lambda_nm = 587.5618);
 
 // Unit focusing: the back focus that makes an object `distance_from_film` mm in front of the
 // film sharp (the lens moves as a whole). Nothing if the object is too close to be focused

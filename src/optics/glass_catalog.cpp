@@ -44,9 +44,9 @@ void GlassCatalog::LoadAgfText(const std::string& raw, const std::string& path, 
     if (type == "NM") {
       // NM name formula MIL nd vd [exclude status melt]
       if (f.size() < 5) throw MakeInputError(path, number, "NM line needs name, formula, MIL, nd and vd");
-      double formula_number = ParseFiniteNumber(f[1], path, number);
-      auto formula = DispersionFormulaFromNumber(int(formula_number));
-      if (!formula || formula_number != std::floor(formula_number))
+      std::optional<int> formula_number = ParseIntegerIn(f[1], 0, 1000);
+      auto formula = formula_number ? DispersionFormulaFromNumber(*formula_number) : std::nullopt;
+      if (!formula)
         throw MakeInputError(path, number, "glass {}: unknown dispersion formula {}", f[0], f[1]);
       auto glass = std::make_unique<Glass>(f[0], catalog, *formula, std::array<double, 10>{});
       glass->catalog_nd = ParseFiniteNumber(f[3], path, number);

@@ -41,15 +41,6 @@ std::shared_ptr<const Glass> ParseMedium(const std::string& m, const std::string
   return std::shared_ptr<const Glass>(std::shared_ptr<const Glass>(), g);
 }
 
-// Largest semi-diameter a conic surface reaches before its sag turns over: r^2 (1+k) c^2 < 1.
-void CheckReachable(const LensSurface& s, const std::string& path, int line) {
-  double c = s.Curvature();
-  if (c == 0 || s.conic <= -1) return;
-  double limit = 1 / (std::abs(c) * std::sqrt(1 + s.conic));
-  if (s.semi_diameter > limit)
-    throw MakeInputError(path, line, "semi-diameter {} is larger than the surface can reach ({:.4g})", s.semi_diameter, limit);
-}
-
 }  // namespace
 
 LensPrescription ParseNativeLens(const std::string& text, const std::string& path) {
@@ -116,9 +107,9 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
         s.coating = value;
         coated += fmt::format("{}surface {} (line {}, {})", coated.empty() ? "" : ", ", lens.surfaces.size() + 1, number, value);
       } else if (key.size() >= 2 && key[0] == 'a' && std::all_of(key.begin() + 1, key.end(), ::isdigit)) {
-        int order = std::atoi(key.c_str() + 1);
-        if (order < 4 || order > 16 || order % 2) throw MakeInputError(path, number, "aspheric terms are a4, a6, ..., a16");
-        s.aspheric[(order - 4) / 2] = ParseFiniteNumber(value, path, number);
+        std::optional<int> order = ParseIntegerIn(key.substr(1), 4, 16);
+        if (!order || *order % 2) throw MakeInputError(path, number, "aspheric terms are a4, a6, ..., a16");
+        s.aspheric[(*order - 4) / 2] = ParseFiniteNumber(value, path, number);
       } else {
         throw MakeInputError(path, number, "unknown option '{}' (k, a4..a16, coating)", key);
       }
@@ -165,7 +156,9 @@ LensPrescription ReadLensFile(const std::string& path) {
 std::string ResolveLens(const std::string& name, const std::string& base_dir) {
   fs::path p(name);
   if (p.is_relative() && !base_dir.empty()) p = fs::path(base_dir) / p;
-  if (fs::is_regular_file(p)) return p.string();
+  // Anything that exists at the path is the lens file (the reader refuses directories, pipes
+  // and devices with its own message).
+  if (fs::exists(p)) return p.string();
   const fs::path shipped = fs::path(DataDirectory()) / "lenses";
   if (IsLensExtension(LowerExtension(name)) && fs::is_regular_file(shipped / name)) return (shipped / name).string();
   for (const char* ext : kLensFileExtensions)

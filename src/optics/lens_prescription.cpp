@@ -1,6 +1,9 @@
 #include "optics/lens_prescription.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include "base/error.h"
 
 namespace objektiv {
 
@@ -19,6 +22,50 @@ double LensPrescription::TotalTrack() const {
   double t = 0;
   for (size_t i = 0; i + 1 < surfaces.size(); ++i) t += surfaces[i].thickness;
   return t;
+}
+
+double LensSurface::Sag(double r) const {
+  const LensSurface& s = *this;
+  double c = s.Curvature(), r2 = r * r;
+  double z = 0;
+  if (c != 0) {
+    double arg = 1 - (1 + s.conic) * c * c * r2;
+    z = c * r2 / (1 + std::sqrt(std::max(arg, 0.0)));
+  }
+  z += s.a2 * r2;
+  double rp = r2 * r2;  // r^4
+  for (double a : s.aspheric) {
+    z += a * rp;
+    rp *= r2;
+  }
+  return z;
+}
+
+double LensSurface::SagSlope(double r) const {
+  const LensSurface& s = *this;
+  double c = s.Curvature(), r2 = r * r;
+  double dz = 0;
+  if (c != 0) {
+    double arg = 1 - (1 + s.conic) * c * c * r2;
+    dz = c * r / std::sqrt(std::max(arg, 1e-300));
+  }
+  dz += 2 * s.a2 * r;
+  double rp = r2 * r;  // r^3
+  int order = 4;
+  for (double a : s.aspheric) {
+    dz += order * a * rp;
+    rp *= r2;
+    order += 2;
+  }
+  return dz;
+}
+
+void CheckReachable(const LensSurface& s, const std::string& path, int line) {
+  double c = s.Curvature();
+  if (c == 0 || s.conic <= -1) return;
+  double limit = 1 / (std::abs(c) * std::sqrt(1 + s.conic));
+  if (s.semi_diameter > limit)
+    throw MakeInputError(path, line, "semi-diameter {} is larger than the surface can reach ({:.4g})", s.semi_diameter, limit);
 }
 
 }  // namespace objektiv

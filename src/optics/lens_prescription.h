@@ -35,6 +35,9 @@ struct LensSurface {
     return false;
   }
   double IndexAfter(double lambda_nm) const { return medium ? medium->Index(lambda_nm) : 1.0; }
+  // Sag z(r) relative to the vertex (conic plus even aspheric terms), and dz/dr.
+  double Sag(double r) const;
+  double SagSlope(double r) const;
 };
 
 struct LensPrescription {
@@ -45,5 +48,9 @@ struct LensPrescription {
   int StopIndex() const;  // -1 if none
   double TotalTrack() const;  // first vertex to the last (without the distance to the film)
 };
+
+// Throws InputError "PATH:LINE: ..." if the surface's semi-diameter lies beyond the largest a
+// conic surface reaches before its sag turns over: r^2 (1+k) c^2 < 1 (for every reader).
+void CheckReachable(const LensSurface& s, const std::string& path, int line);
 
 }  // namespace objektiv

@@ -6,37 +6,13 @@
 
 namespace objektiv {
 
-LensTracer::LensTracer(LensPrescription lens) : lens_(std::move(lens)) {
-  double z = 0;
-  for (const LensSurface& s : lens_.surfaces) {
-    vertex_z_.push_back(z);
-    z += s.thickness;
-  }
-  film_z_ = z;
-  int stop = lens_.StopIndex();
-  stop_semi_ = stop >= 0 ? lens_.surfaces[stop].semi_diameter : 0;
-}
-
-void LensTracer::SetStopSemiDiameter(double r) {
-  int stop = lens_.StopIndex();
-  if (stop < 0) return;
-  stop_semi_ = std::clamp(r, 0.0, lens_.surfaces[stop].semi_diameter);
-}
-
-double LensTracer::StopSemiDiameter() const { return stop_semi_; }
-
-bool LensTracer::InsideStop(double x, double y) const {
-  if (x * x + y * y > stop_semi_ * stop_semi_) return false;
-  return stop_shape_.IsRound() || stop_shape_.Contains(x / stop_semi_, y / stop_semi_);
-}
-
-std::optional<Vec3d> LensTracer::StopCrossingFromFilm(const LensRay& ray, double lambda_nm) const {
-  const int stop = lens_.StopIndex();
+std::optional<Vec3d> StopCrossingFromFilm(const LensSystem& lens, const LensRay& ray, double lambda_nm) {
+  const int stop = lens.StopIndex();
   if (stop < 0) return std::nullopt;
   // The path holds the point on every surface the ray reached, the blocking one included.
   std::vector<Vec3d> path;
-  TraceFromFilm(ray, lambda_nm, &path);
-  const size_t k = lens_.surfaces.size() - 1 - size_t(stop);
+  TraceFromFilm(lens, ray, lambda_nm, &path);
+  const size_t k = size_t(lens.SurfaceCount()) - 1 - size_t(stop);
   if (path.size() <= k) return std::nullopt;
   return path[k];
 }
@@ -51,53 +27,22 @@ double FresnelReflectance(double n1, double n2, double cos_i) {
   return 0.5 * (rs * rs + rp * rp);
 }
 
-double LensTracer::Sag(int i, double r) const {
-  const LensSurface& s = lens_.surfaces[i];
-  double c = s.Curvature(), r2 = r * r;
-  double z = 0;
-  if (c != 0) {
-    double arg = 1 - (1 + s.conic) * c * c * r2;
-    z = c * r2 / (1 + std::sqrt(std::max(arg, 0.0)));
-  }
-  z += s.a2 * r2;
-  double rp = r2 * r2;  // r^4
-  for (double a : s.aspheric) {
-    z += a * rp;
-    rp *= r2;
-  }
-  return z;
-}
+namespace {
 
-double LensTracer::SagSlope(int i, double r) const {
-  const LensSurface& s = lens_.surfaces[i];
-  double c = s.Curvature(), r2 = r * r;
-  double dz = 0;
-  if (c != 0) {
-    double arg = 1 - (1 + s.conic) * c * c * r2;
-    dz = c * r / std::sqrt(std::max(arg, 1e-300));
-  }
-  dz += 2 * s.a2 * r;
-  double rp = r2 * r;  // r^3
-  int order = 4;
-  for (double a : s.aspheric) {
-    dz += order * a * rp;
-    rp *= r2;
-    order += 2;
-  }
-  return dz;
-}
-
-Vec3d LensTracer::Normal(int i, const Vec3d& p) const {
+// The unit normal of surface s at p (relative to the vertex or not: it depends on x, y only),
+// pointing toward +z.
+Vec3d Normal(const LensSurface& s, const Vec3d& p) {
   double r = std::sqrt(p.x * p.x + p.y * p.y);
   if (r == 0) return {0, 0, 1};
-  double slope = SagSlope(i, r);
+  double slope = s.SagSlope(r);
   Vec3d n(-slope * p.x / r, -slope * p.y / r, 1);
   return n / Length(n);
 }
 
-std::optional<double> LensTracer::Intersect(int i, const LensRay& ray) const {
-  const LensSurface& s = lens_.surfaces[i];
-  Vec3d o = ray.o - Vec3d(0, 0, vertex_z_[i]);  // relative to the vertex
+// Where the ray (lens space) meets surface i: the parameter t, or nothing.
+std::optional<double> Intersect(const LensSystem& lens, int i, const LensRay& ray) {
+  const LensSurface& s = lens.surface(i);
+  Vec3d o = ray.o - Vec3d(0, 0, lens.VertexZ(i));  // relative to the vertex
   const Vec3d& d = ray.d;
   double c = s.Curvature();
   bool aspheric = s.HasAsphericTerms();
@@ -133,9 +78,9 @@ std::optional<double> LensTracer::Intersect(int i, const LensRay& ray) const {
       Vec3d p = o + d * t;
       double r = std::sqrt(p.x * p.x + p.y * p.y);
       if (c != 0 && (1 + s.conic) * c * c * r * r > 1) return std::nullopt;
-      double f = p.z - Sag(i, r);
+      double f = p.z - s.Sag(r);
       double drdt = r > 0 ? (p.x * d.x + p.y * d.y) / r : 0;
-      double df = d.z - SagSlope(i, r) * drdt;
+      double df = d.z - s.SagSlope(r) * drdt;
       if (df == 0) return std::nullopt;
       double step = f / df;
       t -= step;
@@ -146,15 +91,15 @@ std::optional<double> LensTracer::Intersect(int i, const LensRay& ray) const {
   return t;
 }
 
-TraceResult LensTracer::Trace(const LensRay& in, double lambda_nm, bool from_film, std::vector<Vec3d>* path,
-                              std::vector<SurfaceEvent>* events) const {
-  const int n = int(lens_.surfaces.size());
+TraceResult Trace(const LensSystem& lens, const LensRay& in, double lambda_nm, bool from_film,
+                  std::vector<Vec3d>* path, std::vector<SurfaceEvent>* events) {
+  const int n = lens.SurfaceCount();
   LensRay ray = in;
   TraceResult result;
   for (int k = 0; k < n; ++k) {
     int i = from_film ? n - 1 - k : k;
-    const LensSurface& s = lens_.surfaces[i];
-    std::optional<double> t = Intersect(i, ray);
+    const LensSurface& s = lens.surface(i);
+    std::optional<double> t = Intersect(lens, i, ray);
     if (!t || *t < -1e-9) {
       result.failure = TraceFailure::kMissedSurface;
       result.surface = i;
@@ -163,7 +108,7 @@ TraceResult LensTracer::Trace(const LensRay& in, double lambda_nm, bool from_fil
     Vec3d p = ray.o + ray.d * *t;
     if (path) path->push_back(p);
     double r = std::sqrt(p.x * p.x + p.y * p.y);
-    bool blocked = s.is_stop ? !InsideStop(p.x, p.y) : r > s.semi_diameter;
+    bool blocked = s.is_stop ? !lens.InsideStop(p.x, p.y) : r > s.semi_diameter;
     if (blocked) {
       result.failure = TraceFailure::kClipped;
       result.surface = i;
@@ -172,18 +117,18 @@ TraceResult LensTracer::Trace(const LensRay& in, double lambda_nm, bool from_fil
     // Absorption along the segment just travelled, inside the medium between the surfaces.
     if (k > 0) {
       int medium_row = from_film ? i : i - 1;  // the row whose medium the segment crossed
-      if (const Glass* g = lens_.surfaces[medium_row].medium.get())
+      if (const Glass* g = lens.surface(medium_row).medium.get())
         result.internal_transmittance *= g->InternalTransmittance(lambda_nm, *t);
     }
     ray.o = p;
     // Indices on the incoming and outgoing sides (a stop inside glass has the same on both;
     // between different media it refracts as the flat interface it is).
-    double n_object_side = i > 0 ? lens_.surfaces[i - 1].IndexAfter(lambda_nm) : 1.0;
+    double n_object_side = i > 0 ? lens.surface(i - 1).IndexAfter(lambda_nm) : 1.0;
     double n_film_side = s.IndexAfter(lambda_nm);
     double n1 = from_film ? n_film_side : n_object_side, n2 = from_film ? n_object_side : n_film_side;
     if (n1 == n2) continue;
     // Vector Snell's law with the normal facing the incoming ray.
-    Vec3d nrm = Normal(i, p);
+    Vec3d nrm = Normal(s, p);
     if (Dot(nrm, ray.d) > 0) nrm = -nrm;
     double eta = n1 / n2, cos_i = -Dot(nrm, ray.d);
     double reflectance = FresnelReflectance(n1, n2, cos_i);
@@ -202,13 +147,15 @@ TraceResult LensTracer::Trace(const LensRay& in, double lambda_nm, bool from_fil
   return result;
 }
 
-TraceResult LensTracer::TraceFromObject(const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path,
-                                        std::vector<SurfaceEvent>* events) const {
-  return Trace(ray, lambda_nm, false, path, events);
+}  // namespace
+
+TraceResult TraceFromObject(const LensSystem& lens, const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path,
+                            std::vector<SurfaceEvent>* events) {
+  return Trace(lens, ray, lambda_nm, false, path, events);
 }
-TraceResult LensTracer::TraceFromFilm(const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path,
-                                      std::vector<SurfaceEvent>* events) const {
-  return Trace(ray, lambda_nm, true, path, events);
+TraceResult TraceFromFilm(const LensSystem& lens, const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path,
+                          std::vector<SurfaceEvent>* events) {
+  return Trace(lens, ray, lambda_nm, true, path, events);
 }
 
 }  // namespace objektiv

@@ -17,11 +17,14 @@ namespace {
 
 using PointSets = std::vector<const std::vector<Vec2d>*>;
 
-// The tracers that probe one azimuth of the table: the stop's opening turned as a film point
-// at that azimuth sees it.
-struct AzimuthTracers {
+// The lens as a film point at one azimuth of the table sees it (the stop's opening turned),
+// for both tracers.
+struct TurnedLens {
+  TurnedLens(LensSystem turned, bool rims) : exact(std::move(turned)), fast(exact) {
+    if (!rims) fast.IgnoreRims();
+  }
+  LensSystem exact;
   BatchLensTracer fast;
-  LensTracer exact;
 };
 
 // What a cell of the table is made of: the regions at its two azimuths (and half-way between
@@ -42,20 +45,19 @@ struct CellEnd {
 // node m at psi = span m / max_columns), each bin's columns refined, then each cell's bound.
 class PupilBounds::Builder {
  public:
-  Builder(PupilBounds& table, const LensTracer& tracer, const PupilBoundsOptions& options)
-      : t_(table), tracer_(tracer), lambdas_(options.wavelengths), fast_(tracer) {
-    if (!options.rims) fast_.IgnoreRims();
-    const LensPrescription& lens = tracer.lens();
+  Builder(PupilBounds& table, const LensSystem& lens_system, const PupilBoundsOptions& options)
+      : t_(table), lens_(lens_system), lambdas_(options.wavelengths), rims_(options.rims) {
+    const LensPrescription& lens = lens_system.prescription();
     const int last = int(lens.surfaces.size()) - 1;
     // Sample on the exit pupil's plane: light from every film point passes the same image of
     // the stop there, trimmed slowly by vignetting, so the region changes little across an
     // annulus (on the rear vertex plane it slides with the film position).
-    ParaxialData p = ComputeParaxial(lens, lambdas_.front(), tracer.StopSemiDiameter());
-    t_.rear_z_ = tracer.VertexZ(last) + p.exit_pupil_position;
+    ParaxialData p = ComputeParaxial(lens, lambdas_.front(), lens_system.StopSemiDiameter());
+    t_.rear_z_ = lens_system.VertexZ(last) + p.exit_pupil_position;
     // The window searched: wide enough for the rear element and the exit pupil; the edge's
     // tolerance a thousandth of the region's size (its first estimate: the exit pupil).
     window_ = std::max(lens.surfaces[last].semi_diameter, 1.5 * p.exit_pupil_diameter) +
-              std::abs(t_.rear_z_ - tracer.VertexZ(last));
+              std::abs(t_.rear_z_ - lens_system.VertexZ(last));
     tolerance_ = 1e-3 * std::max(p.exit_pupil_diameter, 1e-9);
     // Columns start at 90 degrees or less. The finest: 2.8 degrees for an iris (95% or more
     // of the rays then pass for every shipped lens); 5.6 degrees for an opening without
@@ -65,7 +67,7 @@ class PupilBounds::Builder {
     max_columns_ = first_columns_;
     const double finest = t_.symmetry_.order == 1 ? M_PI / 32 : M_PI / 64;
     while (!t_.round_ && t_.span_ / max_columns_ > finest) max_columns_ *= 2;
-    tracers_.resize(max_columns_ + 1);
+    turned_.resize(max_columns_ + 1);
     nodes_.assign(t_.bins_ + 1, std::vector<PupilRegion>(max_columns_ + 1));
     traced_.assign(t_.bins_ + 1, std::vector<uint8_t>(max_columns_ + 1, 0));
   }
@@ -82,8 +84,8 @@ class PupilBounds::Builder {
   // The region at radius r and azimuth node m, in the table's frame: probed with the film
   // point on +x (the opening turned by -(axis + psi)), then turned by psi.
   PupilRegion Trace(double r, int m) const {
-    const AzimuthTracers& at = *tracers_[m];
-    PupilRegionProbe probe{at.fast, at.exact, tracer_.FilmZ(), t_.rear_z_, window_, tolerance_, !t_.round_};
+    const TurnedLens& at = *turned_[m];
+    PupilRegionProbe probe{at.fast, at.exact, lens_.FilmZ(), t_.rear_z_, window_, tolerance_, !t_.round_};
     return TracePupilRegion(probe, r, lambdas_, Psi(m));
   }
 
@@ -97,11 +99,10 @@ class PupilBounds::Builder {
           if (!traced_[k][m]) traced_[k][m] = 1, todo.push_back({k, m});
     }
     for (auto [k, m] : todo)
-      if (!tracers_[m]) {
-        const StopShape turned = tracer_.stop_shape().Rotated(-(t_.symmetry_.axis + Psi(m)));
-        LensTracer exact = tracer_;
-        exact.SetStopShape(turned);
-        tracers_[m] = std::make_unique<AzimuthTracers>(AzimuthTracers{fast_.WithStopShape(turned), std::move(exact)});
+      if (!turned_[m]) {
+        LensSystem turned = lens_;
+        turned.SetStopShape(lens_.stop_shape().Rotated(-(t_.symmetry_.axis + Psi(m))));
+        turned_[m] = std::make_unique<TurnedLens>(std::move(turned), rims_);
       }
     tbb::parallel_for(size_t(0), todo.size(), [&](size_t i) {
       auto [k, m] = todo[i];
@@ -229,12 +230,12 @@ class PupilBounds::Builder {
   }
 
   PupilBounds& t_;
-  const LensTracer& tracer_;
+  const LensSystem& lens_;
   const std::vector<double>& lambdas_;
-  BatchLensTracer fast_;
+  bool rims_;
   double window_, tolerance_;
   int first_columns_, max_columns_;
-  std::vector<std::unique_ptr<AzimuthTracers>> tracers_;  // per azimuth node, made on demand
+  std::vector<std::unique_ptr<TurnedLens>> turned_;  // per azimuth node, made on demand
   std::vector<std::vector<PupilRegion>> nodes_;            // [k][m]
   std::vector<std::vector<uint8_t>> traced_;
   std::vector<std::vector<double>> margins_;  // per bin and column
@@ -263,8 +264,8 @@ PupilBounds::Region PupilBounds::MakeRegion(ConvexPolygon hull) {
   return region;
 }
 
-PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, const PupilBoundsOptions& options)
-    : symmetry_(tracer.stop_shape().symmetry()), film_radius_(film_radius) {
+PupilBounds::PupilBounds(const LensSystem& lens, double film_radius, const PupilBoundsOptions& options)
+    : symmetry_(lens.stop_shape().symmetry()), film_radius_(film_radius) {
   // A round stop: one column, regions in the film point's frame. Any other opening: regions
   // in the opening's frame (lens space turned by -axis, where the opening stays put and only
   // the vignetting and the pupil's aberrations turn with the film point), over azimuths psi
@@ -276,7 +277,7 @@ PupilBounds::PupilBounds(const LensTracer& tracer, double film_radius, const Pup
   span_ = round_ ? 0 : (symmetry_.mirror ? period_ / 2 : period_);
   for (int k = 0; k < (round_ ? 0 : symmetry_.order); ++k)
     turns_.push_back({std::cos(symmetry_.axis + k * period_), std::sin(symmetry_.axis + k * period_)});
-  Builder(*this, tracer, options).Build();
+  Builder(*this, lens, options).Build();
 }
 
 PupilBounds::Frame PupilBounds::FrameOf(Vec2d film) const {

@@ -22,7 +22,7 @@
 
 #include "base/convex_polygon.h"
 #include "base/vec.h"
-#include "optics/lens_tracer.h"
+#include "optics/lens_system.h"
 
 namespace objektiv {
 
@@ -37,7 +37,7 @@ struct PupilBoundsOptions {
 class PupilBounds {
  public:
   // `film_radius`: largest radial film distance needed (e.g. the half-diagonal, mm).
-  PupilBounds(const LensTracer& tracer, double film_radius, const PupilBoundsOptions& options = {});
+  PupilBounds(const LensSystem& lens, double film_radius, const PupilBoundsOptions& options = {});
 
   struct Sample {
     Vec3d point;  // on the sampling (exit pupil) plane, lens space (mm)

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <optional>
 
+#include "optics/lens_tracer.h"
+
 namespace objektiv {
 
 namespace {
@@ -12,7 +14,7 @@ namespace {
 // at one wavelength leaves the lens.
 class RegionProbe {
  public:
-  RegionProbe(const BatchLensTracer& fast, const LensTracer& exact, double r, double film_z, double plane_z,
+  RegionProbe(const BatchLensTracer& fast, const LensSystem& exact, double r, double film_z, double plane_z,
               double lambda_nm)
       : fast_(fast), exact_(exact), r_(r), film_z_(film_z), plane_z_(plane_z), lambda_(lambda_nm) {}
 
@@ -34,7 +36,7 @@ class RegionProbe {
   std::optional<Vec2d> ChiefAim() const {
     auto stop_x = [&](double a) -> std::optional<double> {
       Vec3d o(r_, 0, film_z_);
-      std::optional<Vec3d> hit = exact_.StopCrossingFromFilm({o, Normalize(Vec3d(a, 0, plane_z_) - o)}, lambda_);
+      std::optional<Vec3d> hit = StopCrossingFromFilm(exact_, {o, Normalize(Vec3d(a, 0, plane_z_) - o)}, lambda_);
       return hit ? std::optional<double>(hit->x) : std::nullopt;
     };
     double a0 = 0, a1 = 1e-3 * (1 + std::abs(r_));
@@ -104,7 +106,7 @@ class RegionProbe {
 
  private:
   const BatchLensTracer& fast_;
-  const LensTracer& exact_;
+  const LensSystem& exact_;
   double r_, film_z_, plane_z_, lambda_;
   mutable RayBatch batch_;
 };

@@ -23,7 +23,7 @@ struct PupilRegion {
 
 struct PupilRegionProbe {
   const BatchLensTracer& fast;  // which rays get through
-  const LensTracer& exact;      // the chief ray's aim
+  const LensSystem& exact;      // the chief ray's aim
   double film_z, plane_z;       // lens space z of the film and of the sampling plane
   double window;                // half-width of the square searched for light (mm)
   double tolerance;             // how far the edge may bulge out of a chord between edge points

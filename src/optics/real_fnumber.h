@@ -10,11 +10,11 @@
 namespace objektiv {
 
 // With the tracer's stop as it is (film at the paraxial infinity focus).
-double RealFNumber(const LensTracer& tracer, double lambda_nm = 587.5618);
+double RealFNumber(const LensSystem& lens, double lambda_nm = 587.5618);
 
 // The stop semi-diameter that gives f-number `fnumber`; nothing if the cone cannot reach the
 // stop (a rim behind it cuts it first) or needs a stop larger than the lens's.
-std::optional<double> StopSemiDiameterForFNumber(const LensTracer& tracer, double fnumber,
+std::optional<double> StopSemiDiameterForFNumber(const LensSystem& lens, double fnumber,
                                                  double lambda_nm = 587.5618);
 
 }  // namespace objektiv

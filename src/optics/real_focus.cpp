@@ -45,7 +45,7 @@ std::optional<double> LeastRmsPlane(const std::vector<LensRay>& rays) {
 // Rays from the axial object point (at lens z = object_z, or at infinity) through a grid
 // over the paraxial entrance pupil (a little enlarged); those that reach the last surface,
 // as they leave it.
-std::vector<LensRay> AxialBundle(const LensTracer& tracer, const ParaxialData& p, double object_z, bool infinite,
+std::vector<LensRay> AxialBundle(const LensSystem& lens, const ParaxialData& p, double object_z, bool infinite,
                                  double lambda_nm) {
   const double front = 0.6 * p.entrance_pupil_diameter, pupil_z = p.entrance_pupil_position;
   const int n = 25;
@@ -61,53 +61,53 @@ std::vector<LensRay> AxialBundle(const LensTracer& tracer, const ParaxialData& p
         ray.o = {0, 0, object_z};
         ray.d = Normalize(Vec3d(x, y, pupil_z) - ray.o);
       }
-      if (TraceResult t = tracer.TraceFromObject(ray, lambda_nm); t.ray) out.push_back(*t.ray);
+      if (TraceResult t = TraceFromObject(lens, ray, lambda_nm); t.ray) out.push_back(*t.ray);
     }
   return out;
 }
 
 }  // namespace
 
-double ClosestFocusDistance(const LensPrescription& lens, double lambda_nm) {
-  ParaxialData p = ComputeParaxial(lens, lambda_nm);
+double ClosestFocusDistance(const LensPrescription& rx, double lambda_nm) {
+  ParaxialData p = ComputeParaxial(rx, lambda_nm);
   double t = ClosestFocusBackFocus(p);
   // Object distance from the first vertex for the image at back focus t: Gaussian optics
   // about the principal planes (exact paraxially).
   double image = t - p.back_principal_plane;  // from H'
   double object = 1 / (1 / p.efl - 1 / image);  // in front of H
-  return t + lens.TotalTrack() + object - p.front_principal_plane;
+  return t + rx.TotalTrack() + object - p.front_principal_plane;
 }
 
-LensFocus ParaxialFocus(const LensPrescription& lens, double distance_from_film, double lambda_nm) {
-  ParaxialData p = ComputeParaxial(lens, lambda_nm);
+LensFocus ParaxialFocus(const LensPrescription& rx, double distance_from_film, double lambda_nm) {
+  ParaxialData p = ComputeParaxial(rx, lambda_nm);
   LensFocus focus;
   if (!(distance_from_film < kInfinity)) {
     focus.back_focus = p.bfl;
-    focus.object_distance = INFINITY;
-  } else if (auto s = FocusAtDistance(lens, distance_from_film, lambda_nm)) {
+    focus.plane_of_focus_to_film = INFINITY;
+  } else if (auto s = FocusAtDistance(rx, distance_from_film, lambda_nm)) {
     focus.back_focus = s->back_focus;
-    focus.object_distance = distance_from_film;
+    focus.plane_of_focus_to_film = distance_from_film;
   } else {
     focus.back_focus = ClosestFocusBackFocus(p);
-    focus.object_distance = ClosestFocusDistance(lens, lambda_nm);
+    focus.plane_of_focus_to_film = ClosestFocusDistance(rx, lambda_nm);
     focus.clamped = true;
   }
   return focus;
 }
 
-LensFocus FocusLens(const LensTracer& tracer, double distance_from_film, double lambda_nm) {
-  const LensPrescription& lens = tracer.lens();
-  ParaxialData p = ComputeParaxial(lens, lambda_nm, tracer.StopSemiDiameter());
-  LensFocus focus = ParaxialFocus(lens, distance_from_film, lambda_nm);
-  const bool infinite = std::isinf(focus.object_distance);
+LensFocus FocusLens(const LensSystem& lens, double distance_from_film, double lambda_nm) {
+  const LensPrescription& rx = lens.prescription();
+  ParaxialData p = ComputeParaxial(rx, lambda_nm, lens.StopSemiDiameter());
+  LensFocus focus = ParaxialFocus(rx, distance_from_film, lambda_nm);
+  const bool infinite = std::isinf(focus.plane_of_focus_to_film);
   // Real rays: the object stays at its distance from the film while the lens moves, so the
   // object point follows each new back focus; a few rounds converge.
-  LensTracer t = tracer;
-  const int last = int(lens.surfaces.size()) - 1;
+  LensSystem t = lens;
+  const int last = int(rx.surfaces.size()) - 1;
   double back = focus.back_focus;
   for (int round = 0; round < 12; ++round) {
     t.SetBackFocus(back);
-    double object_z = t.FilmZ() - focus.object_distance;
+    double object_z = t.FilmZ() - focus.plane_of_focus_to_film;
     std::vector<LensRay> rays = AxialBundle(t, p, object_z, infinite, lambda_nm);
     std::optional<double> z = LeastRmsPlane(rays);
     if (!z) return focus;  // too few rays: keep the paraxial focus
@@ -125,8 +125,8 @@ LensFocus FocusLens(const LensTracer& tracer, double distance_from_film, double 
 }
 
 std::string DescribeFocus(const LensFocus& f, double infinity_back_focus) {
-  std::string where = std::isinf(f.object_distance) ? std::string("infinity")
-                                                    : fmt::format("{:.4g} m from the film", f.object_distance * 1e-3);
+  std::string where = std::isinf(f.plane_of_focus_to_film) ? std::string("infinity")
+                                                    : fmt::format("{:.4g} m from the film", f.plane_of_focus_to_film * 1e-3);
   return fmt::format("focused at {}{}: lens {:.3f} mm forward of its infinity position, back focus {:.3f} mm ({})",
                      where, f.clamped ? " (the closest the lens can focus)" : "", f.back_focus - infinity_back_focus,
                      f.back_focus,

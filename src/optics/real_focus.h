@@ -10,7 +10,7 @@ namespace objektiv {
 
 struct LensFocus {
   double back_focus = 0;       // last vertex to film, mm
-  double object_distance = 0;  // film to the plane in focus, mm (infinite for infinity)
+  double plane_of_focus_to_film = 0;  // mm (infinite for infinity)
   bool clamped = false;        // the object was closer than the lens can focus: closest focus
   bool real_rays = false;      // refined with real rays (false: the paraxial solution)
   int rays_used = 0;           // real rays in the final best-focus fit
@@ -18,7 +18,7 @@ struct LensFocus {
 
 // `distance_from_film` in mm; infinity (or anything beyond 1e12) focuses at infinity.
 // Never fails: too close gives the closest focus, too few real rays the paraxial focus.
-LensFocus FocusLens(const LensTracer& tracer, double distance_from_film, double lambda_nm = 587.5618);
+LensFocus FocusLens(const LensSystem& lens, double distance_from_film, double lambda_nm = 587.5618);
 
 // The paraxial part of the above: the back focus that images the object sharp by first-order
 // optics (the closest focus if it is too close).

@@ -11,31 +11,31 @@ constexpr double kStartZ = -50;  // rays start this far in front of the first ve
 
 // The same lens with every aperture opened (semi-diameters and stop unbounded): chief rays and
 // image heights are geometric, whatever the rims do to the rest of the beam.
-LensTracer Unclipped(const LensTracer& tracer, int last_surface) {
-  LensPrescription open = tracer.lens();
+LensSystem Unclipped(const LensSystem& lens, int last_surface) {
+  LensPrescription open = lens.prescription();
   open.surfaces.resize(size_t(last_surface) + 1);
   for (LensSurface& s : open.surfaces) s.semi_diameter = 1e30;
-  LensTracer t(open);
+  LensSystem t(open);
   t.SetStopSemiDiameter(1e30);
   return t;
 }
 
 // Height at which a ray from direction theta, entering at height y0 (at kStartZ), crosses the
 // stop plane; nothing if it does not get there.
-std::optional<double> HeightAtStop(const LensTracer& front, double theta, double y0, double lambda_nm) {
+std::optional<double> HeightAtStop(const LensSystem& front, double theta, double y0, double lambda_nm) {
   LensRay r{{0, y0, kStartZ}, {0, std::sin(theta), std::cos(theta)}};
-  TraceResult t = front.TraceFromObject(r, lambda_nm);
+  TraceResult t = TraceFromObject(front, r, lambda_nm);
   if (!t.ray) return std::nullopt;
   return t.ray->o.y;
 }
 }  // namespace
 
-std::optional<LensRay> ChiefRay(const LensTracer& tracer, double field_deg, double lambda_nm) {
+std::optional<LensRay> ChiefRay(const LensSystem& lens, double field_deg, double lambda_nm) {
   double theta = field_deg * M_PI / 180;
-  LensTracer front = Unclipped(tracer, tracer.lens().StopIndex());
+  LensSystem front = Unclipped(lens, lens.prescription().StopIndex());
   auto make = [&](double y) { return LensRay{{0, y, kStartZ}, {0, std::sin(theta), std::cos(theta)}}; };
   // Secant iteration from the paraxial entrance pupil.
-  ParaxialData p = ComputeParaxial(tracer.lens(), lambda_nm);
+  ParaxialData p = ComputeParaxial(lens.prescription(), lambda_nm);
   double y_a = -std::tan(theta) * (p.entrance_pupil_position - kStartZ), y_b = y_a + 1e-3;
   std::optional<double> h_a = HeightAtStop(front, theta, y_a, lambda_nm), h_b = HeightAtStop(front, theta, y_b, lambda_nm);
   for (int it = 0; it < 60 && h_a && h_b && *h_b != *h_a; ++it) {
@@ -48,7 +48,7 @@ std::optional<LensRay> ChiefRay(const LensTracer& tracer, double field_deg, doub
   // Far off axis the pupil moves and the secant can leave the lens: bracket a sign change by
   // scanning entrance heights, then bisect.
   double guess = -std::tan(theta) * (p.entrance_pupil_position - kStartZ);
-  double span = 4 * tracer.lens().surfaces.front().semi_diameter / std::max(std::cos(theta), 0.05) + 1;
+  double span = 4 * lens.prescription().surfaces.front().semi_diameter / std::max(std::cos(theta), 0.05) + 1;
   const int steps = 400;
   std::optional<double> prev_h;
   double prev_y = 0;
@@ -72,18 +72,18 @@ std::optional<LensRay> ChiefRay(const LensTracer& tracer, double field_deg, doub
   return std::nullopt;
 }
 
-std::optional<double> RealImageHeight(const LensTracer& tracer, double field_deg, double lambda_nm) {
-  std::optional<LensRay> chief = ChiefRay(tracer, field_deg, lambda_nm);
+std::optional<double> RealImageHeight(const LensSystem& lens, double field_deg, double lambda_nm) {
+  std::optional<LensRay> chief = ChiefRay(lens, field_deg, lambda_nm);
   if (!chief) return std::nullopt;
-  const int last = int(tracer.lens().surfaces.size()) - 1;
-  LensTracer open = Unclipped(tracer, last);
-  TraceResult t = open.TraceFromObject(*chief, lambda_nm);
+  const int last = int(lens.prescription().surfaces.size()) - 1;
+  LensSystem open = Unclipped(lens, last);
+  TraceResult t = TraceFromObject(open, *chief, lambda_nm);
   if (!t.ray || t.ray->d.z <= 0) return std::nullopt;
-  return t.ray->o.y + t.ray->d.y * (tracer.FilmZ() - t.ray->o.z) / t.ray->d.z;
+  return t.ray->o.y + t.ray->d.y * (lens.FilmZ() - t.ray->o.z) / t.ray->d.z;
 }
 
-std::optional<double> Distortion(const LensTracer& tracer, double efl, double field_deg, double lambda_nm) {
-  std::optional<double> h = RealImageHeight(tracer, field_deg, lambda_nm);
+std::optional<double> Distortion(const LensSystem& lens, double efl, double field_deg, double lambda_nm) {
+  std::optional<double> h = RealImageHeight(lens, field_deg, lambda_nm);
   if (!h) return std::nullopt;
   // Light travelling toward +y comes from an object below the axis, imaged (inverted) above it.
   double ideal = efl * std::tan(field_deg * M_PI / 180);
@@ -99,7 +99,7 @@ struct Beam {
   int launched = 0;
   bool rim_passed = false;
 };
-Beam TraceBeam(const LensTracer& tracer, double field_deg, double lambda_nm, double y_centre, double radius, int n) {
+Beam TraceBeam(const LensSystem& lens, double field_deg, double lambda_nm, double y_centre, double radius, int n) {
   Beam b;
   double theta = field_deg * M_PI / 180;
   for (int i = 0; i < n; ++i)
@@ -110,32 +110,32 @@ Beam TraceBeam(const LensTracer& tracer, double field_deg, double lambda_nm, dou
       ++b.launched;
       // Perpendicular to the beam the offset is y; in the plane z = kStartZ it is y / cos.
       LensRay r{{x, y_centre + y / std::cos(theta), kStartZ}, {0, std::sin(theta), std::cos(theta)}};
-      TraceResult t = tracer.TraceFromObject(r, lambda_nm);
+      TraceResult t = TraceFromObject(lens, r, lambda_nm);
       if (!t.ray || t.ray->d.z <= 0) continue;
       if (rr > 0.8 * 0.8 * radius * radius) b.rim_passed = true;
-      double s = (tracer.FilmZ() - t.ray->o.z) / t.ray->d.z;
+      double s = (lens.FilmZ() - t.ray->o.z) / t.ray->d.z;
       b.points.push_back({t.ray->o.x + t.ray->d.x * s, t.ray->o.y + t.ray->d.y * s});
     }
   return b;
 }
 
-double BeamCentre(const LensTracer& tracer, double field_deg, double lambda_nm) {
-  std::optional<LensRay> chief = ChiefRay(tracer, field_deg, lambda_nm);
+double BeamCentre(const LensSystem& lens, double field_deg, double lambda_nm) {
+  std::optional<LensRay> chief = ChiefRay(lens, field_deg, lambda_nm);
   if (chief) return chief->o.y;
-  ParaxialData p = ComputeParaxial(tracer.lens(), lambda_nm, tracer.StopSemiDiameter());
+  ParaxialData p = ComputeParaxial(lens.prescription(), lambda_nm, lens.StopSemiDiameter());
   return -std::tan(field_deg * M_PI / 180) * (p.entrance_pupil_position - kStartZ);
 }
 }  // namespace
 
-std::optional<double> RelativeIllumination(const LensTracer& tracer, double field_deg, double lambda_nm) {
+std::optional<double> RelativeIllumination(const LensSystem& lens, double field_deg, double lambda_nm) {
   const int n = 61;
-  ParaxialData p = ComputeParaxial(tracer.lens(), lambda_nm, tracer.StopSemiDiameter());
+  ParaxialData p = ComputeParaxial(lens.prescription(), lambda_nm, lens.StopSemiDiameter());
   // Beam cross-section that gets through, in a disk widened until its rim is blocked
   // (real pupils grow off axis, strongly so in fisheyes).
   auto beam_area = [&](double field) {
     double radius = 0.75 * p.entrance_pupil_diameter;
     for (int k = 0; k < 6; ++k) {
-      Beam b = TraceBeam(tracer, field, lambda_nm, BeamCentre(tracer, field, lambda_nm), radius, n);
+      Beam b = TraceBeam(lens, field, lambda_nm, BeamCentre(lens, field, lambda_nm), radius, n);
       if (!b.rim_passed || k == 5) return b.launched ? M_PI * radius * radius * b.points.size() / b.launched : 0.0;
       radius *= 1.6;
     }
@@ -144,9 +144,9 @@ std::optional<double> RelativeIllumination(const LensTracer& tracer, double fiel
   double a0 = beam_area(0);
   if (field_deg == 0) return 1.0;
   double theta = field_deg * M_PI / 180, dtheta = 1e-3 * std::max(1.0, field_deg) * M_PI / 180;
-  std::optional<double> h = RealImageHeight(tracer, field_deg, lambda_nm);
-  std::optional<double> h1 = RealImageHeight(tracer, field_deg + dtheta * 180 / M_PI, lambda_nm);
-  std::optional<double> h0 = RealImageHeight(tracer, field_deg - dtheta * 180 / M_PI, lambda_nm);
+  std::optional<double> h = RealImageHeight(lens, field_deg, lambda_nm);
+  std::optional<double> h1 = RealImageHeight(lens, field_deg + dtheta * 180 / M_PI, lambda_nm);
+  std::optional<double> h0 = RealImageHeight(lens, field_deg - dtheta * 180 / M_PI, lambda_nm);
   if (!h || !h0 || !h1 || a0 == 0) return std::nullopt;
   double dh = (*h1 - *h0) / (2 * dtheta);
   if (*h * dh <= 0) return std::nullopt;
@@ -156,16 +156,16 @@ std::optional<double> RelativeIllumination(const LensTracer& tracer, double fiel
   return e / e0;
 }
 
-std::optional<FieldCurvature> FieldCurvatureAt(const LensTracer& tracer, double field_deg, double lambda_nm) {
-  std::optional<LensRay> chief = ChiefRay(tracer, field_deg, lambda_nm);
+std::optional<FieldCurvature> FieldCurvatureAt(const LensSystem& lens, double field_deg, double lambda_nm) {
+  std::optional<LensRay> chief = ChiefRay(lens, field_deg, lambda_nm);
   if (!chief) return std::nullopt;
-  ParaxialData p = ComputeParaxial(tracer.lens(), lambda_nm, tracer.StopSemiDiameter());
+  ParaxialData p = ComputeParaxial(lens.prescription(), lambda_nm, lens.StopSemiDiameter());
   double theta = field_deg * M_PI / 180, eps = 1e-4 * p.entrance_pupil_diameter;
   auto trace = [&](double dx, double dy) -> std::optional<LensRay> {
     LensRay r{{dx, chief->o.y + dy / std::cos(theta), kStartZ}, chief->d};
-    LensTracer open = tracer;
+    LensSystem open = lens;
     open.SetStopSemiDiameter(1e30);
-    TraceResult t = open.TraceFromObject(r, lambda_nm);
+    TraceResult t = TraceFromObject(open, r, lambda_nm);
     if (!t.ray) return std::nullopt;
     return t.ray;
   };
@@ -179,14 +179,14 @@ std::optional<FieldCurvature> FieldCurvatureAt(const LensTracer& tracer, double 
   double zt = cross_yz(*tp, *tm);
   // Sagittal focus: where the skew neighbour crosses the meridional plane x = 0.
   double zs = sp->o.z - sp->o.x * sp->d.z / sp->d.x;
-  return FieldCurvature{zt - tracer.FilmZ(), zs - tracer.FilmZ()};
+  return FieldCurvature{zt - lens.FilmZ(), zs - lens.FilmZ()};
 }
 
-Spot SpotDiagram(const LensTracer& tracer, double field_deg, double lambda_nm, int n) {
+Spot SpotDiagram(const LensSystem& lens, double field_deg, double lambda_nm, int n) {
   Spot spot;
-  ParaxialData p = ComputeParaxial(tracer.lens(), lambda_nm, tracer.StopSemiDiameter());
+  ParaxialData p = ComputeParaxial(lens.prescription(), lambda_nm, lens.StopSemiDiameter());
   double theta = field_deg * M_PI / 180;
-  std::optional<LensRay> chief = ChiefRay(tracer, field_deg, lambda_nm);
+  std::optional<LensRay> chief = ChiefRay(lens, field_deg, lambda_nm);
   // Centre the grid on the chief ray's entrance (the real entrance pupil's centre).
   double y_centre = chief ? chief->o.y : -std::tan(theta) * (p.entrance_pupil_position - kStartZ);
   double radius = 0.6 * p.entrance_pupil_diameter;  // 1.2 pupil radii
@@ -199,9 +199,9 @@ Spot SpotDiagram(const LensTracer& tracer, double field_deg, double lambda_nm, i
       // Parallel rays: same direction, shifted in the plane perpendicular to the axis
       // (entrance heights measured at kStartZ along the tilted beam).
       LensRay r{{x, y_centre + y / std::cos(theta), kStartZ}, {0, std::sin(theta), std::cos(theta)}};
-      TraceResult t = tracer.TraceFromObject(r, lambda_nm);
+      TraceResult t = TraceFromObject(lens, r, lambda_nm);
       if (!t.ray || t.ray->d.z <= 0) continue;
-      double s = (tracer.FilmZ() - t.ray->o.z) / t.ray->d.z;
+      double s = (lens.FilmZ() - t.ray->o.z) / t.ray->d.z;
       spot.points.push_back({t.ray->o.x + t.ray->d.x * s, t.ray->o.y + t.ray->d.y * s});
     }
   spot.transmitted = launched ? double(spot.points.size()) / launched : 0;
@@ -220,9 +220,9 @@ Spot SpotDiagram(const LensTracer& tracer, double field_deg, double lambda_nm, i
 namespace {
 // The largest field angle (degrees) the lens forms an image of: light from it still gets
 // through the real apertures (the edge of the image circle), and its chief ray exists.
-double MaxImagedField(const LensTracer& tracer, double lambda_nm) {
+double MaxImagedField(const LensSystem& lens, double lambda_nm) {
   auto images = [&](double field) {
-    return RealImageHeight(tracer, field, lambda_nm) && SpotDiagram(tracer, field, lambda_nm, 15).transmitted > 0;
+    return RealImageHeight(lens, field, lambda_nm) && SpotDiagram(lens, field, lambda_nm, 15).transmitted > 0;
   };
   double lo = 0, hi = 89.9;
   if (images(hi)) return hi;
@@ -240,29 +240,29 @@ double MaxImagedField(const LensTracer& tracer, double lambda_nm) {
 
 // The field angle whose real image height is h; the edge of the image circle when h lies
 // beyond it (as for a fisheye's corners).
-double FieldForHeight(const LensTracer& tracer, double h, double max_field, double lambda_nm) {
-  std::optional<double> h_max = RealImageHeight(tracer, max_field, lambda_nm);
+double FieldForHeight(const LensSystem& lens, double h, double max_field, double lambda_nm) {
+  std::optional<double> h_max = RealImageHeight(lens, max_field, lambda_nm);
   if (!h_max || std::abs(*h_max) <= h) return max_field;
   double lo = 0, hi = max_field;
   for (int it = 0; it < 60; ++it) {
     double mid = 0.5 * (lo + hi);
-    std::optional<double> hm = RealImageHeight(tracer, mid, lambda_nm);
+    std::optional<double> hm = RealImageHeight(lens, mid, lambda_nm);
     (hm && std::abs(*hm) < h ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
 }
 }  // namespace
 
-FieldOfView SensorFieldOfView(const LensTracer& tracer, double width, double height, double lambda_nm) {
-  double max_field = MaxImagedField(tracer, lambda_nm);
-  return {2 * FieldForHeight(tracer, width / 2, max_field, lambda_nm),
-          2 * FieldForHeight(tracer, height / 2, max_field, lambda_nm),
-          2 * FieldForHeight(tracer, std::hypot(width, height) / 2, max_field, lambda_nm)};
+FieldOfView SensorFieldOfView(const LensSystem& lens, double width, double height, double lambda_nm) {
+  double max_field = MaxImagedField(lens, lambda_nm);
+  return {2 * FieldForHeight(lens, width / 2, max_field, lambda_nm),
+          2 * FieldForHeight(lens, height / 2, max_field, lambda_nm),
+          2 * FieldForHeight(lens, std::hypot(width, height) / 2, max_field, lambda_nm)};
 }
 
-double RealBackFocus(const LensTracer& tracer, double lambda_nm) {
-  ParaxialData p = ComputeParaxial(tracer.lens(), lambda_nm, tracer.StopSemiDiameter());
-  LensTracer t = tracer;
+double RealBackFocus(const LensSystem& lens, double lambda_nm) {
+  ParaxialData p = ComputeParaxial(lens.prescription(), lambda_nm, lens.StopSemiDiameter());
+  LensSystem t = lens;
   auto rms = [&](double back_focus) {
     t.SetBackFocus(back_focus);
     return SpotDiagram(t, 0, lambda_nm, 41).rms_radius;
@@ -283,12 +283,12 @@ double RealBackFocus(const LensTracer& tracer, double lambda_nm) {
   return 0.5 * (a + b);
 }
 
-std::optional<double> LongitudinalAberration(const LensTracer& tracer, double height, double lambda_nm) {
-  ParaxialData p = ComputeParaxial(tracer.lens(), lambda_nm);
-  TraceResult t = tracer.TraceFromObject({{0, height, kStartZ}, {0, 0, 1}}, lambda_nm);
+std::optional<double> LongitudinalAberration(const LensSystem& lens, double height, double lambda_nm) {
+  ParaxialData p = ComputeParaxial(lens.prescription(), lambda_nm);
+  TraceResult t = TraceFromObject(lens, {{0, height, kStartZ}, {0, 0, 1}}, lambda_nm);
   if (!t.ray || t.ray->d.y == 0) return std::nullopt;
   double z = t.ray->o.z - t.ray->o.y * t.ray->d.z / t.ray->d.y;
-  double last = tracer.VertexZ(int(tracer.lens().surfaces.size()) - 1);
+  double last = lens.VertexZ(int(lens.prescription().surfaces.size()) - 1);
   return (z - last) - p.bfl;
 }
 

@@ -10,14 +10,14 @@ namespace objektiv {
 
 // The chief ray for a field angle (degrees, in the y-z plane) from an object at infinity:
 // the ray that crosses the stop at its centre, found by iteration on its entrance height.
-std::optional<LensRay> ChiefRay(const LensTracer& tracer, double field_deg, double lambda_nm);
+std::optional<LensRay> ChiefRay(const LensSystem& lens, double field_deg, double lambda_nm);
 
 // Height of the chief ray on the film (mm). Rays travel toward +y for positive fields.
-std::optional<double> RealImageHeight(const LensTracer& tracer, double field_deg, double lambda_nm);
+std::optional<double> RealImageHeight(const LensSystem& lens, double field_deg, double lambda_nm);
 
 // Distortion at a field angle: (real - ideal) / ideal image height, with the ideal height
 // EFL tan(theta) (rectilinear). Negative: barrel, positive: pincushion.
-std::optional<double> Distortion(const LensTracer& tracer, double efl, double field_deg, double lambda_nm);
+std::optional<double> Distortion(const LensSystem& lens, double efl, double field_deg, double lambda_nm);
 
 struct Spot {
   std::vector<Vec2d> points;  // on the film, mm
@@ -28,19 +28,19 @@ struct Spot {
 
 // Rays from a field angle over the entrance pupil (a square grid of `n` x `n` rays cut to
 // a circle 1.2 entrance-pupil radii wide, so that vignetting shows), traced to the film.
-Spot SpotDiagram(const LensTracer& tracer, double field_deg, double lambda_nm, int n = 31);
+Spot SpotDiagram(const LensSystem& lens, double field_deg, double lambda_nm, int n = 31);
 
 // Relative illumination at a field angle (1 on axis): the image irradiance from a uniform
 // distant scene, E ~ A(theta) sin(theta) / (h dh/dtheta), with A the cross-section of the
 // beam from that direction that reaches the film (vignetting) and h the real image height
 // (distortion). For a thin lens with the stop at the lens this is the cos^4 law.
-std::optional<double> RelativeIllumination(const LensTracer& tracer, double field_deg, double lambda_nm);
+std::optional<double> RelativeIllumination(const LensSystem& lens, double field_deg, double lambda_nm);
 
 struct FieldCurvature {
   double tangential = 0, sagittal = 0;  // focus positions relative to the film, along the axis (mm)
 };
 // Tangential and sagittal foci of the thin pencils around the chief ray at a field angle.
-std::optional<FieldCurvature> FieldCurvatureAt(const LensTracer& tracer, double field_deg, double lambda_nm);
+std::optional<FieldCurvature> FieldCurvatureAt(const LensSystem& lens, double field_deg, double lambda_nm);
 
 // Full field of view (degrees) of a sensor `width` x `height` mm: the field angles whose real
 // chief rays reach the edges and the corner (distortion included); where the sensor extends
@@ -48,14 +48,14 @@ std::optional<FieldCurvature> FieldCurvatureAt(const LensTracer& tracer, double 
 struct FieldOfView {
   double horizontal = 0, vertical = 0, diagonal = 0;
 };
-FieldOfView SensorFieldOfView(const LensTracer& tracer, double width, double height, double lambda_nm);
+FieldOfView SensorFieldOfView(const LensSystem& lens, double width, double height, double lambda_nm);
 
 // The real back focus: the film distance behind the last vertex that minimises the RMS
 // radius of the on-axis spot (in mm).
-double RealBackFocus(const LensTracer& tracer, double lambda_nm);
+double RealBackFocus(const LensSystem& lens, double lambda_nm);
 
 // Longitudinal spherical aberration: where a ray parallel to the axis at `height` mm crosses
 // the axis, minus the paraxial focus (mm; negative = in front of it).
-std::optional<double> LongitudinalAberration(const LensTracer& tracer, double height, double lambda_nm);
+std::optional<double> LongitudinalAberration(const LensSystem& lens, double height, double lambda_nm);
 
 }  // namespace objektiv

@@ -17,7 +17,7 @@ namespace objektiv {
 namespace {
 
 struct ZSurface {
-  int line = 0;
+  int line = 0, glass_line = 0;
   std::string type = "STANDARD";
   double curv = 0, disz = 0, diam = 0, coni = 0;
   bool stop = false, infinite_thickness = false;
@@ -26,8 +26,10 @@ struct ZSurface {
   double parm[9] = {};
 };
 
-// Zemax writes infinite thicknesses and radii as words.
-double Number(const std::string& s, const std::string& path, int line) {
+// A thickness: Zemax writes an infinite one (the object at infinity) as a word. Every other
+// value must be finite (an infinite curvature, diameter or conic would be a silently wrong
+// lens).
+double Thickness(const std::string& s, const std::string& path, int line) {
   if (s == "INFINITY" || s == "Infinity" || s == "inf") return INFINITY;
   return ParseFiniteNumber(s, path, line);
 }
@@ -98,31 +100,32 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path)
         throw MakeInputError(path, number, "surface type {} is not supported (STANDARD and EVENASPH are)", f[0]);
     } else if (key == "CURV") {
       need(1);
-      cur->curv = Number(f[0], path, number);
+      cur->curv = ParseFiniteNumber(f[0], path, number);
     } else if (key == "DISZ") {
       need(1);
-      cur->disz = Number(f[0], path, number);
+      cur->disz = Thickness(f[0], path, number);
       cur->infinite_thickness = std::isinf(cur->disz);
     } else if (key == "DIAM") {
       need(1);
-      cur->diam = Number(f[0], path, number);
+      cur->diam = ParseFiniteNumber(f[0], path, number);
     } else if (key == "CONI") {
       need(1);
-      cur->coni = Number(f[0], path, number);
+      cur->coni = ParseFiniteNumber(f[0], path, number);
     } else if (key == "STOP") {
       cur->stop = true;
     } else if (key == "GLAS") {
       need(1);
       cur->glass = f[0];
+      cur->glass_line = number;
       if (f.size() >= 5) {
-        cur->model_nd = Number(f[3], path, number);
-        cur->model_vd = Number(f[4], path, number);
+        cur->model_nd = ParseFiniteNumber(f[3], path, number);
+        cur->model_vd = ParseFiniteNumber(f[4], path, number);
       }
     } else if (key == "PARM") {
       need(2);
-      int k = std::atoi(f[0].c_str());
-      if (k < 1 || k > 8) throw MakeInputError(path, number, "PARM index {} outside 1-8", f[0]);
-      cur->parm[k] = Number(f[1], path, number);
+      std::optional<int> k = ParseIntegerIn(f[0], 1, 8);
+      if (!k) throw MakeInputError(path, number, "PARM index '{}' is not an integer from 1 to 8", f[0]);
+      cur->parm[*k] = ParseFiniteNumber(f[1], path, number);
     } else if (!kIgnored.count(key)) {
       warn_once(key, number);
     }
@@ -153,16 +156,20 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path)
       const Glass* g = z.glass == "___BLANK" ? nullptr : GlassCatalog::Default().Find(z.glass);
       if (g) {
         s.medium = std::shared_ptr<const Glass>(std::shared_ptr<const Glass>(), g);
-      } else if (z.glass == "___BLANK" && z.model_nd > 0 && z.model_vd > 0) {
-        s.medium = std::make_shared<const Glass>(Glass::Model(z.model_nd, z.model_vd));  // Zemax's model glass
-      } else if (z.model_nd > 0 && z.model_vd > 0) {
-        spdlog::warn("{}:{}: glass {} is in no catalog; using a model glass nd {} vd {}", path, z.line, z.glass,
-                     z.model_nd, z.model_vd);
+      } else if (z.glass == "___BLANK" || (z.model_nd > 0 && z.model_vd > 0)) {
+        // Zemax's model glass (___BLANK), or the stand-in for a glass in no catalog.
+        if (z.model_nd < 1 || !(z.model_vd > 0))
+          throw MakeInputError(path, z.glass_line, "model glass needs nd >= 1 and vd > 0, got nd {} vd {}", z.model_nd,
+                               z.model_vd);
+        if (z.glass != "___BLANK")
+          spdlog::warn("{}:{}: glass {} is in no catalog; using a model glass nd {} vd {}", path, z.glass_line, z.glass,
+                       z.model_nd, z.model_vd);
         s.medium = std::make_shared<const Glass>(Glass::Model(z.model_nd, z.model_vd));
       } else {
-        throw MakeInputError(path, z.line, "unknown glass '{}'", z.glass);
+        throw MakeInputError(path, z.glass_line, "unknown glass '{}'", z.glass);
       }
     }
+    CheckReachable(s, path, z.line);
     if (z.stop) {
       have_stop = true;
       if (s.flat && !s.HasAsphericTerms()) {

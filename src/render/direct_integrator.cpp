@@ -4,7 +4,8 @@
 namespace objektiv {
 
 SampledSpectrum DirectIntegrator::Li(const Ray& ray, const std::optional<SurfaceInteraction>& si,
-                                     SampledWavelengths& lambda, Sampler& sampler, RayCounts& counts) const {
+                                     SampledWavelengths& lambda, Sampler& sampler, BlockContext& ctx) const {
+  RayCounts& counts = ctx.rays();
   SampledSpectrum L(0.f);
   if (!si) {
     for (const InfiniteLight* light : scene_.infinite_lights()) L += light->Le(ray.d, lambda);

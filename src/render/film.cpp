@@ -1,5 +1,7 @@
 #include "render/film.h"
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "base/cie.h"
@@ -8,7 +10,8 @@ namespace objektiv {
 
 Film::Film(int width, int height, CropWindow crop, std::shared_ptr<const Filter> filter)
     : width_(width), height_(height), crop_(crop), filter_(std::move(filter)),
-      pixels_(size_t(crop.Width()) * crop.Height()) {}
+      inv_filter_integral_(1 / filter_->Integral()), pixels_(size_t(crop.Width()) * crop.Height()),
+      splat_xyz_(3 * pixels_.size(), 0.0) {}
 
 Vec3f SampledToXYZ(const SampledSpectrum& L, const SampledWavelengths& lambda) {
   Vec3f xyz(0.f);
@@ -22,9 +25,31 @@ Vec3f SampledToXYZ(const SampledSpectrum& L, const SampledWavelengths& lambda) {
 
 void Film::AddSample(Vec2i pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float weight) {
   Vec3f xyz = SampledToXYZ(L, lambda);
-  Pixel& px = At(pixel);
+  Pixel& px = pixels_[Index(pixel)];
   for (int c = 0; c < 3; ++c) px.xyz[c] += double(weight) * xyz[c];
   px.weight += weight;
+}
+
+void Film::AddSplat(Vec2f p_film, const SampledSpectrum& L, const SampledWavelengths& lambda) {
+  Vec3f xyz = SampledToXYZ(L, lambda);
+  if (xyz == Vec3f(0.f)) return;
+  // Pixels whose centre (x + 0.5, y + 0.5) lies within the filter's radius of p_film (none if
+  // p_film is far outside the crop window or not finite).
+  const float r = filter_->Radius();
+  if (!(p_film.x > crop_.x0 - r - 1 && p_film.x < crop_.x1 + r + 1 && p_film.y > crop_.y0 - r - 1 &&
+        p_film.y < crop_.y1 + r + 1))
+    return;
+  const int x0 = std::max(crop_.x0, int(std::ceil(p_film.x - 0.5f - r)));
+  const int x1 = std::min(crop_.x1 - 1, int(std::floor(p_film.x - 0.5f + r)));
+  const int y0 = std::max(crop_.y0, int(std::ceil(p_film.y - 0.5f - r)));
+  const int y1 = std::min(crop_.y1 - 1, int(std::floor(p_film.y - 0.5f + r)));
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) {
+      float w = filter_->Evaluate(Vec2f(p_film.x - (x + 0.5f), p_film.y - (y + 0.5f))) * inv_filter_integral_;
+      if (w == 0) continue;
+      double* sum = &splat_xyz_[3 * Index(Vec2i(x, y))];
+      for (int c = 0; c < 3; ++c) std::atomic_ref<double>(sum[c]).fetch_add(double(w) * xyz[c], std::memory_order_relaxed);
+    }
 }
 
 Image Film::ToImage(const ColorSpace& cs, float exposure_stops) const {
@@ -32,9 +57,16 @@ Image Film::ToImage(const ColorSpace& cs, float exposure_stops) const {
   float scale = std::exp2(exposure_stops);
   for (int y = 0; y < crop_.Height(); ++y)
     for (int x = 0; x < crop_.Width(); ++x) {
-      const Pixel& px = pixels_[size_t(y) * crop_.Width() + x];
+      const size_t i = size_t(y) * crop_.Width() + x;
+      const Pixel& px = pixels_[i];
+      const double* splat = &splat_xyz_[3 * i];
       Vec3f xyz(0.f);
-      if (px.weight != 0) xyz = Vec3f(float(px.xyz[0] / px.weight), float(px.xyz[1] / px.weight), float(px.xyz[2] / px.weight));
+      for (int c = 0; c < 3; ++c) {
+        double v = px.weight != 0 ? px.xyz[c] / px.weight : 0;
+        // (Only where splats landed: adding zero would turn a -0 into +0.)
+        if (splat[c] != 0 && samples_per_pixel_ > 0) v += splat[c] / double(samples_per_pixel_);
+        xyz[c] = float(v);
+      }
       Vec3f rgb = cs.ToRGB(xyz) * scale;
       for (int c = 0; c < 3; ++c) img.At(x, y, c) = rgb[c];
     }

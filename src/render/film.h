@@ -1,6 +1,13 @@
-// The film accumulates spectral radiance as CIE XYZ, per pixel of the crop window:
-// sum of w * XYZ and sum of w, in double so that sums of sample ranges merge exactly enough.
+// The film accumulates spectral radiance as CIE XYZ, per pixel of the crop window, in double
+// so that sums of sample ranges merge exactly enough. Two estimates add up in each pixel:
+// - camera samples of the pixel: sum of w * XYZ and sum of w (w the filter's sample weight;
+//   the pixel reads their ratio, the filtered radiance);
+// - splats: contributions at any film position (light paths reaching the sensor), spread over
+//   the pixels by the normalised filter f(p - centre) / integral of f, so that a pixel measures
+//   what its camera samples measure; the pixel reads their sum divided by the samples per
+//   pixel rendered (pbrt-v4's light tracer normalisation).
 #pragma once
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -18,12 +25,37 @@ struct CropWindow {
 };
 
 class Film {
+  struct Pixel {
+    double xyz[3] = {0, 0, 0};
+    double weight = 0;
+  };
+
  public:
   Film(int width, int height, CropWindow crop, std::shared_ptr<const Filter> filter);
 
+  // A camera sample of a pixel in the crop window. Not synchronised: one thread writes a pixel
+  // at a time (the renderer gives each pixel to one block).
   void AddSample(Vec2i pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float weight);
-  // Linear RGB in the given colour space, scaled by 2^exposure; crop-window sized.
+  // A contribution at a continuous film position (full-film pixel coordinates); the parts that
+  // fall outside the crop window are dropped. Thread-safe: atomic adds in double. The sum of a
+  // pixel's splats is exact up to double rounding, whose order is the order the threads happen
+  // to deliver them: with one thread it is bit for bit reproducible; on any number of threads
+  // it differs from that by double rounding only (relative 1e-16 per splat; in the float image
+  // that rarely shows, and then by an ulp). Splats of exactly representable sums (such as
+  // repeated equal contributions) are bit for bit the same on any thread count.
+  void AddSplat(Vec2f p_film, const SampledSpectrum& L, const SampledWavelengths& lambda);
+  // The renderer records every sample range it renders into the film (splats are divided by
+  // the samples per pixel in all, so that ranges rendered one after another add up).
+  void AddSamplesPerPixel(int n) { samples_per_pixel_ += n; }
+  int64_t samples_per_pixel() const { return samples_per_pixel_; }
+  // Linear RGB in the given colour space, scaled by 2^exposure; crop-window sized: the
+  // filtered camera samples plus the splats.
   Image ToImage(const ColorSpace& cs, float exposure_stops = 0) const;
+
+  // Bytes of the accumulators for a crop window (allocated by the constructor).
+  static uint64_t AccumulatorBytes(const CropWindow& crop) {
+    return uint64_t(crop.Width()) * crop.Height() * (sizeof(Pixel) + 3 * sizeof(double));  // samples and splats
+  }
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -31,15 +63,14 @@ class Film {
   const Filter& filter() const { return *filter_; }
 
  private:
-  struct Pixel {
-    double xyz[3] = {0, 0, 0};
-    double weight = 0;
-  };
-  Pixel& At(Vec2i p) { return pixels_[size_t(p.y - crop_.y0) * crop_.Width() + (p.x - crop_.x0)]; }
+  size_t Index(Vec2i p) const { return size_t(p.y - crop_.y0) * crop_.Width() + (p.x - crop_.x0); }
   int width_, height_;
   CropWindow crop_;
   std::shared_ptr<const Filter> filter_;
+  float inv_filter_integral_;
   std::vector<Pixel> pixels_;
+  std::vector<double> splat_xyz_;  // 3 per pixel, added to through std::atomic_ref
+  int64_t samples_per_pixel_ = 0;
 };
 
 // XYZ of a spectral sample (Monte Carlo estimate over the wavelength bundle).

@@ -1,6 +1,7 @@
 #include "render/filter.h"
 
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 namespace objektiv {
@@ -34,6 +35,13 @@ float GaussianFilter::G(float x) const {
 
 float GaussianFilter::Evaluate(Vec2f p) const { return G(p.x) * G(p.y); }
 
+// Separable: the square of the 1D integral over [-r, r] of the Gaussian less its value at r.
+float GaussianFilter::Integral() const {
+  double s = sigma_, r = r_;
+  double g = s * std::sqrt(2 * std::numbers::pi) * std::erf(r / (s * std::sqrt(2.0))) - 2 * r * std::exp(-r * r / (2 * s * s));
+  return float(g * g);
+}
+
 BlackmanHarrisFilter::BlackmanHarrisFilter(float radius) : TabulatedFilter(radius) { Tabulate(); }
 
 float BlackmanHarrisFilter::W(float x) const {
@@ -43,5 +51,11 @@ float BlackmanHarrisFilter::W(float x) const {
 }
 
 float BlackmanHarrisFilter::Evaluate(Vec2f p) const { return W(p.x) * W(p.y); }
+
+// Separable; over [-r, r] the cosines run whole periods and integrate to zero.
+float BlackmanHarrisFilter::Integral() const {
+  float w = 0.35875f * 2 * r_;
+  return w * w;
+}
 
 }  // namespace objektiv

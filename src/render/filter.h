@@ -20,6 +20,8 @@ class Filter {
   virtual float Evaluate(Vec2f p) const = 0;
   virtual FilterSample Sample(Vec2f u) const = 0;
   virtual float Radius() const = 0;
+  // The integral of Evaluate over the plane (splats are weighted by Evaluate / Integral).
+  virtual float Integral() const = 0;
 };
 
 class BoxFilter final : public Filter {
@@ -28,6 +30,7 @@ class BoxFilter final : public Filter {
   float Evaluate(Vec2f p) const override { return (std::abs(p.x) <= r_ && std::abs(p.y) <= r_) ? 1.f : 0.f; }
   FilterSample Sample(Vec2f u) const override { return {{(2 * u.x - 1) * r_, (2 * u.y - 1) * r_}, 1.f}; }
   float Radius() const override { return r_; }
+  float Integral() const override { return 4 * r_ * r_; }
 
  private:
   float r_;
@@ -41,6 +44,7 @@ class TentFilter final : public Filter {
   }
   FilterSample Sample(Vec2f u) const override { return {{SampleTent(u.x, r_), SampleTent(u.y, r_)}, 1.f}; }
   float Radius() const override { return r_; }
+  float Integral() const override { return r_ * r_ * r_ * r_; }  // (integral of r - |x|)^2
 
  private:
   float r_;
@@ -67,6 +71,7 @@ class GaussianFilter final : public TabulatedFilter {
  public:
   explicit GaussianFilter(float stddev = 0.5f);
   float Evaluate(Vec2f p) const override;
+  float Integral() const override;
 
  private:
   float G(float x) const;
@@ -78,6 +83,7 @@ class BlackmanHarrisFilter final : public TabulatedFilter {
  public:
   explicit BlackmanHarrisFilter(float radius = 1.5f);
   float Evaluate(Vec2f p) const override;
+  float Integral() const override;
 
  private:
   float W(float x) const;

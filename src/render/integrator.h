@@ -1,39 +1,51 @@
-// Integrators estimate the radiance arriving along a camera ray.
+// Integrators turn blocks of work (a tile of pixels, a range of sample indices) into film
+// writes: they make and trace their own rays (camera paths, light paths, photons) against the
+// contract of render/block_context.h, and the renderer schedules the blocks.
 #pragma once
-#include <cstdint>
-
-#include "render/sampler.h"
+#include "render/block_context.h"
 #include "scene/scene.h"
 
 namespace objektiv {
-
-struct RayCounts {
-  uint64_t closest = 0, shadow = 0;
-};
 
 class Integrator {
  public:
   explicit Integrator(const Scene& scene) : scene_(scene) {}
   virtual ~Integrator() = default;
-  // Radiance along a camera ray whose first intersection the caller has already found (the
-  // renderer traces a pixel's camera rays together, Scene::IntersectCoherent; empty: a miss).
-  virtual SampledSpectrum Li(const Ray& ray, const std::optional<SurfaceInteraction>& first_hit,
-                             SampledWavelengths& lambda, Sampler& sampler, RayCounts& counts) const = 0;
+  // Takes the block's samples of every pixel of the block (ctx.ForEachPixel) and writes what
+  // they estimate through ctx. Called for many blocks at once on different threads: const, with
+  // whatever changes kept in locals.
+  virtual void RenderBlock(BlockContext& ctx) const = 0;
   const Scene& scene() const { return scene_; }
 
  protected:
   const Scene& scene_;
 };
 
+// Integrators that estimate the radiance arriving along camera rays. They share the block loop
+// (render/camera_path_integrator.cpp): per pixel, up to 64 samples at a time, the filter places
+// each sample on the film, the camera makes their rays together (a lens traces them faster
+// together) and their first hits are traced together (coherent rays: Embree packets pay); then
+// Li per sample, each with its own sampler state, written as the pixel's filtered sample.
+class CameraPathIntegrator : public Integrator {
+ public:
+  using Integrator::Integrator;
+  void RenderBlock(BlockContext& ctx) const final;
+  // Radiance along a camera ray whose first intersection is given (empty: a miss). Rays are
+  // counted in ctx.rays(); what a path brings elsewhere on the film (a light subpath seen by
+  // the camera) may be splatted through ctx.AddSplat.
+  virtual SampledSpectrum Li(const Ray& ray, const std::optional<SurfaceInteraction>& first_hit,
+                             SampledWavelengths& lambda, Sampler& sampler, BlockContext& ctx) const = 0;
+};
+
 // Unidirectional path tracing with next-event estimation and multiple importance sampling.
 // max_depth counts path segments as Mitsuba does (1: emitters seen directly, 2: direct
 // lighting, -1: unbounded); Russian roulette from rr_depth on.
-class PathIntegrator final : public Integrator {
+class PathIntegrator final : public CameraPathIntegrator {
  public:
   PathIntegrator(const Scene& scene, int max_depth, int rr_depth)
-      : Integrator(scene), max_depth_(max_depth), rr_depth_(rr_depth) {}
+      : CameraPathIntegrator(scene), max_depth_(max_depth), rr_depth_(rr_depth) {}
   SampledSpectrum Li(const Ray& ray, const std::optional<SurfaceInteraction>& first_hit, SampledWavelengths& lambda,
-                     Sampler& sampler, RayCounts& counts) const override;
+                     Sampler& sampler, BlockContext& ctx) const override;
 
  private:
   int max_depth_, rr_depth_;
@@ -41,12 +53,12 @@ class PathIntegrator final : public Integrator {
 
 // Direct illumination only: emitter and BSDF samples combined with the power heuristic
 // (Mitsuba's `direct`).
-class DirectIntegrator final : public Integrator {
+class DirectIntegrator final : public CameraPathIntegrator {
  public:
   DirectIntegrator(const Scene& scene, int emitter_samples, int bsdf_samples)
-      : Integrator(scene), emitter_samples_(emitter_samples), bsdf_samples_(bsdf_samples) {}
+      : CameraPathIntegrator(scene), emitter_samples_(emitter_samples), bsdf_samples_(bsdf_samples) {}
   SampledSpectrum Li(const Ray& ray, const std::optional<SurfaceInteraction>& first_hit, SampledWavelengths& lambda,
-                     Sampler& sampler, RayCounts& counts) const override;
+                     Sampler& sampler, BlockContext& ctx) const override;
 
  private:
   int emitter_samples_, bsdf_samples_;

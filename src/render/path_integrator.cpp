@@ -6,7 +6,8 @@
 namespace objektiv {
 
 SampledSpectrum PathIntegrator::Li(const Ray& camera_ray, const std::optional<SurfaceInteraction>& first_hit,
-                                   SampledWavelengths& lambda, Sampler& sampler, RayCounts& counts) const {
+                                   SampledWavelengths& lambda, Sampler& sampler, BlockContext& ctx) const {
+  RayCounts& counts = ctx.rays();
   SampledSpectrum L(0.f), beta(1.f);
   Ray ray = camera_ray;
   bool specular_bounce = false;

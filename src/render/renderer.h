@@ -1,4 +1,5 @@
-// Renders an image: tiles over TBB, each pixel's samples in index order (deterministic).
+// Renders an image: the crop window in tiles over TBB, each tile a block of work for the
+// integrator (render/block_context.h); progress, the stop flag and statistics are kept here.
 #pragma once
 #include <atomic>
 #include <cstdint>
@@ -20,6 +21,7 @@ struct RenderStats {
   // Pixels of the crop window, and those that got all their samples (fewer when stopped).
   uint64_t pixels = 0, pixels_completed = 0;
   bool Partial() const { return pixels_completed < pixels; }
+  uint64_t skipped_rays = 0;  // rays Embree could not take (see Scene::SkippedRays)
   double SamplesPerSecond() const { return seconds > 0 ? samples / seconds : 0; }
   double MraysPerSecond() const { return seconds > 0 ? rays / seconds * 1e-6 : 0; }
   // Camera rays that came out of the lens per camera ray traced (1 for ideal cameras).

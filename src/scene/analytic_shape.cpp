@@ -133,6 +133,7 @@ Sphere::Sphere(const Vec3f& center, float radius, bool flip_normals, const Trans
   center_ = to_world.Point(Vec3d(center));
   radius_ = double(radius) * s0;
   if (!(radius_ > 0)) throw std::invalid_argument("sphere: radius must be positive");
+  CheckSceneLimit(WorldBounds(), "the sphere");
 }
 
 bool Sphere::Intersect(const Vec3d& o, const Vec3d& d, double tmax, double* t, Vec2f* param) const {
@@ -247,6 +248,7 @@ Disk::Disk(const Transform& to_world, bool flip_normals) : to_world_(to_world), 
   normal_ = Normalize(to_world.Normal(Vec3f(0, 0, 1)));
   if (flip_) normal_ = -normal_;
   area_ = float(M_PI * Length(Cross(Column(to_world, 0), Column(to_world, 1))));
+  CheckSceneLimit(WorldBounds(), "the disk");
 }
 
 bool Disk::Intersect(const Vec3d& o, const Vec3d& d, double tmax, double* t, Vec2f* param) const {
@@ -295,6 +297,7 @@ Cylinder::Cylinder(const Transform& object_to_world, bool flip_normals) : to_wor
       std::abs(Dot(c1, c2)) > tol * h)
     throw std::invalid_argument("cylinder: to_world must keep the cross-section circular (no shear or unequal scale)");
   area_ = float(2 * M_PI * r0 * h);
+  CheckSceneLimit(WorldBounds(), "the cylinder");
 }
 
 bool Cylinder::Intersect(const Vec3d& o, const Vec3d& d, double tmax, double* t, Vec2f* param) const {
@@ -362,6 +365,9 @@ ShapeSample Cylinder::SampleArea(Vec2f u) const {
 // --- Infinite plane -----------------------------------------------------------------
 
 InfinitePlane::InfinitePlane(const Transform& to_world, bool flip_normals) : to_world_(to_world), flip_(flip_normals) {
+  Bounds3f origin;
+  origin.Extend(to_world.Point(Vec3f(0.f)));
+  CheckSceneLimit(origin, "the plane's origin");
   normal_ = Normalize(to_world.Normal(Vec3f(0, 0, 1)));
   if (flip_) normal_ = -normal_;
   // The points p of the plane n.(p - p0) = 0 inside the cube |p_j| <= R satisfy, along axis i,

@@ -1,6 +1,7 @@
 #include "scene/infinite_light.h"
 
 #include <cmath>
+#include <limits>
 
 #include "base/color_space.h"
 #include "scene/texture.h"
@@ -60,7 +61,9 @@ Vec3f EnvironmentMap::UvToDirection(Vec2f uv) const {
 
 Vec3f EnvironmentMap::Lookup(Vec2f uv) const {
   // Bilinear, wrapping in u and clamping in v.
-  float x = uv.x * image_.width - 0.5f, y = uv.y * image_.height - 0.5f;
+  float x = WrapTexelCoordinate(uv.x * image_.width - 0.5f, WrapMode::kRepeat, image_.width);
+  float y = WrapTexelCoordinate(uv.y * image_.height - 0.5f, WrapMode::kClamp, image_.height);
+  if (std::isnan(x) || std::isnan(y)) return Vec3f(std::numeric_limits<float>::quiet_NaN());  // a NaN direction
   int x0 = int(std::floor(x)), y0 = int(std::floor(y));
   float dx = x - x0, dy = y - y0;
   auto texel = [&](int xi, int yi) {
@@ -91,7 +94,7 @@ std::optional<LightSample> EnvironmentMap::SampleLi(const Vec3f& ref, Vec2f u, c
 float EnvironmentMap::PdfLi(const Vec3f& w) const {
   Vec2f uv = DirectionToUv(w);
   float sin_theta = std::sin(uv.y * kPi);
-  if (sin_theta == 0) return 0;
+  if (!(sin_theta > 0)) return 0;  // a pole, or a NaN direction
   return distribution_.Pdf(uv) / (2 * kPi * kPi * sin_theta);
 }
 

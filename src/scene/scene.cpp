@@ -1,5 +1,6 @@
 #include "scene/scene.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -10,6 +11,14 @@ namespace objektiv {
 namespace {
 void EmbreeError(void*, RTCError code, const char* str) {
   spdlog::error("Embree error {}: {}", int(code), str ? str : "");
+}
+
+// Whether Embree takes the ray: its traversal (assertions on in Debian's build) requires
+// every origin and direction component within 1.844e18 in magnitude, and a length that is
+// not NaN (infinity is allowed).
+bool EmbreeTakes(const Ray& r) {
+  auto ok = [](float v) { return std::abs(v) <= 1.844e18f; };  // false for NaN
+  return ok(r.o.x) && ok(r.o.y) && ok(r.o.z) && ok(r.d.x) && ok(r.d.y) && ok(r.d.z) && !std::isnan(r.tmax);
 }
 }  // namespace
 
@@ -63,6 +72,11 @@ void Scene::AddShapeToGroup(int group, std::unique_ptr<Shape> shape, std::shared
 
 void Scene::AddInstance(int group, const Transform& to_world) {
   ShapeGroup& g = groups_.at(group);
+  Bounds3f placed;
+  for (int i = 0; i < 8 && !g.bounds.Empty(); ++i)
+    placed.Extend(to_world.Point(Vec3f(i & 1 ? g.bounds.hi.x : g.bounds.lo.x, i & 2 ? g.bounds.hi.y : g.bounds.lo.y,
+                                       i & 4 ? g.bounds.hi.z : g.bounds.lo.z)));
+  if (!g.bounds.Empty()) CheckSceneLimit(placed, "the instance");
   // Embree needs the child BVH built before an instance of it is committed.
   rtcCommitScene(g.scene);
   RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
@@ -75,10 +89,7 @@ void Scene::AddInstance(int group, const Transform& to_world) {
   unsigned id = rtcAttachGeometry(scene_, geom);
   rtcReleaseGeometry(geom);
   if (id != shapes_.size()) throw std::logic_error("Embree geometry IDs out of step with shapes");
-  if (!g.bounds.Empty())
-    for (int i = 0; i < 8; ++i)
-      bounds_.Extend(to_world.Point(Vec3f(i & 1 ? g.bounds.hi.x : g.bounds.lo.x, i & 2 ? g.bounds.hi.y : g.bounds.lo.y,
-                                          i & 4 ? g.bounds.hi.z : g.bounds.lo.z)));
+  bounds_.Extend(placed);
   instances_.push_back(Instance{group, to_world, to_world.Inverse()});
   shapes_.push_back(ShapeRecord{nullptr, nullptr, nullptr, int(instances_.size()) - 1});
 }
@@ -117,6 +128,10 @@ void Scene::Commit() {
 }
 
 std::optional<SurfaceInteraction> Scene::Intersect(const Ray& ray) const {
+  if (!EmbreeTakes(ray)) {
+    skipped_rays_.fetch_add(1, std::memory_order_relaxed);
+    return std::nullopt;
+  }
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
   RTCRayHit rh;
@@ -155,6 +170,10 @@ void Scene::IntersectCoherent(std::span<const Ray* const> rays, std::span<std::o
     alignas(32) RTCRayHit8 packet;
     for (int k = 0; k < kPacket; ++k) {
       const Ray* ray = k < n ? rays[start + k] : nullptr;
+      if (ray && !EmbreeTakes(*ray)) {
+        skipped_rays_.fetch_add(1, std::memory_order_relaxed);
+        ray = nullptr;
+      }
       valid[k] = ray ? -1 : 0;
       if (!ray) continue;
       packet.ray.org_x[k] = ray->o.x;
@@ -221,6 +240,10 @@ SurfaceInteraction Scene::InstanceInteraction(const Ray& ray, const RTCRayHit& r
 }
 
 bool Scene::Occluded(const Ray& ray) const {
+  if (!EmbreeTakes(ray)) {
+    skipped_rays_.fetch_add(1, std::memory_order_relaxed);
+    return true;
+  }
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
   RTCRay r;

@@ -2,6 +2,7 @@
 #pragma once
 #include <embree3/rtcore.h>
 
+#include <atomic>
 #include <memory>
 #include <optional>
 #include <span>
@@ -38,6 +39,7 @@ class Scene {
   // places the whole group with a transform. Instanced shapes cannot emit.
   int AddShapeGroup();
   void AddShapeToGroup(int group, std::unique_ptr<Shape> shape, std::shared_ptr<const Material> material);
+  // Throws std::invalid_argument if the placed group reaches beyond kMaxSceneCoordinate.
   void AddInstance(int group, const Transform& to_world);
   // Builds the BVH, preprocesses lights, builds the light-selection distribution.
   void Commit();
@@ -49,6 +51,11 @@ class Scene {
   // out[i] stays empty where rays[i] is null.
   void IntersectCoherent(std::span<const Ray* const> rays, std::span<std::optional<SurfaceInteraction>> out) const;
   bool Occluded(const Ray& ray) const;
+  // Rays that Embree could not take (an origin or direction non-finite or beyond its range,
+  // a NaN length), skipped rather than traced: a miss for Intersect, occluded for Occluded.
+  // Geometry is bounded at load (kMaxSceneCoordinate); this guards against what the
+  // arithmetic may still produce. Counted since the scene was built.
+  uint64_t SkippedRays() const { return skipped_rays_.load(std::memory_order_relaxed); }
 
   const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
   const std::vector<const InfiniteLight*>& infinite_lights() const { return infinite_lights_; }
@@ -81,6 +88,7 @@ class Scene {
   std::vector<const InfiniteLight*> infinite_lights_;
   Distribution1D light_distribution_;
   Bounds3f bounds_;
+  mutable std::atomic<uint64_t> skipped_rays_{0};
 };
 
 }  // namespace objektiv

@@ -1,5 +1,9 @@
 #include "scene/shape.h"
 
+#include <stdexcept>
+
+#include <fmt/format.h>
+
 namespace objektiv {
 
 float AreaToSolidAnglePdf(float pdf_area, const Vec3f& ref, const Vec3f& p, const Vec3f& n) {
@@ -20,6 +24,18 @@ ShapeSample Shape::SampleFrom(const Vec3f& ref, Vec2f u) const {
 
 float Shape::PdfFrom(const Vec3f& ref, const SurfaceInteraction& hit) const {
   return AreaToSolidAnglePdf(1 / Area(), ref, hit.p, hit.n);
+}
+
+bool WithinSceneLimit(const Vec3f& p) {
+  return std::abs(p.x) <= kMaxSceneCoordinate && std::abs(p.y) <= kMaxSceneCoordinate &&
+         std::abs(p.z) <= kMaxSceneCoordinate;
+}
+
+void CheckSceneLimit(const Bounds3f& b, const char* what) {
+  if (b.Empty() || !WithinSceneLimit(b.lo) || !WithinSceneLimit(b.hi))
+    throw std::invalid_argument(fmt::format("{} reaches ({:g}, {:g}, {:g}) - ({:g}, {:g}, {:g}), beyond the scene's coordinate limit "
+                                            "of {:g}",
+                                            what, b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z, kMaxSceneCoordinate));
 }
 
 }  // namespace objektiv

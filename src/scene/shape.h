@@ -36,6 +36,16 @@ class Shape {
   virtual float PdfFrom(const Vec3f& ref, const SurfaceInteraction& hit) const;
 };
 
+// Largest magnitude of any coordinate of a scene point, in scene units. Far beyond any real
+// scene (a single-precision coordinate there resolves only 8 units), it keeps what light
+// sampling computes from positions, up to fourth powers of distances (1e33 at most), within
+// single precision (3.4e38), and every ray within the range Embree accepts (1.8e18).
+inline constexpr float kMaxSceneCoordinate = 1e8f;
+// Whether every coordinate of p lies within kMaxSceneCoordinate (false for NaN).
+bool WithinSceneLimit(const Vec3f& p);
+// Throws std::invalid_argument naming `what` unless b is non-empty and within the limit.
+void CheckSceneLimit(const Bounds3f& b, const char* what);
+
 // Solid-angle density at `ref` of area density `pdf_area` at a point p with normal n.
 float AreaToSolidAnglePdf(float pdf_area, const Vec3f& ref, const Vec3f& p, const Vec3f& n);
 

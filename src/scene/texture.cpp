@@ -1,6 +1,8 @@
 #include "scene/texture.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "base/cie.h"
 
@@ -38,10 +40,29 @@ SampledSpectrum RgbToSampled(Vec3f rgb, SpectrumUsage usage, const SampledWavele
   return {};
 }
 
+float WrapTexelCoordinate(float x, WrapMode wrap, int n) {
+  switch (wrap) {
+    case WrapMode::kRepeat:
+      return std::fmod(x, float(n));
+    case WrapMode::kMirror:
+      return std::fmod(x, 2.f * float(n));
+    case WrapMode::kClamp:
+      return std::isnan(x) ? x : std::clamp(x, -1.f, float(n));
+  }
+  return x;
+}
+
+namespace {
+// Whether floor(x) is odd, in floating point (x may lie far beyond an int's range).
+bool FloorIsOdd(float x) {
+  float r = std::fmod(std::floor(x), 2.f);  // -1, 0 or 1; NaN for NaN or infinite x
+  return r == 1 || r == -1;
+}
+}  // namespace
+
 SampledSpectrum CheckerboardTexture::Evaluate(Vec2f uv, const SampledWavelengths& lambda) const {
   Vec3f p = to_uv_.Point(Vec3f(uv.x, uv.y, 0));
-  int x = int(std::floor(p.x * 2)), y = int(std::floor(p.y * 2));
-  return ((x + y) & 1) == 0 ? c0_->Evaluate(uv, lambda) : c1_->Evaluate(uv, lambda);
+  return FloorIsOdd(p.x * 2) == FloorIsOdd(p.y * 2) ? c0_->Evaluate(uv, lambda) : c1_->Evaluate(uv, lambda);
 }
 
 BitmapTexture::BitmapTexture(Image image, SpectrumUsage usage, FilterMode filter, WrapMode wrap, const Transform& to_uv)
@@ -73,9 +94,14 @@ Vec3f BitmapTexture::LookupRgb(Vec2f uv) const {
   Vec3f p = to_uv_.Point(Vec3f(uv.x, uv.y, 0));
   // Row 0 is the top of the image; v = 0 is its bottom.
   float x = p.x * image_.width, y = (1 - p.y) * image_.height;
+  if (filter_ == FilterMode::kBilinear) {
+    x -= 0.5f;
+    y -= 0.5f;
+  }
+  x = WrapTexelCoordinate(x, wrap_, image_.width);
+  y = WrapTexelCoordinate(y, wrap_, image_.height);
+  if (std::isnan(x) || std::isnan(y)) return Vec3f(std::numeric_limits<float>::quiet_NaN());
   if (filter_ == FilterMode::kNearest) return Texel(int(std::floor(x)), int(std::floor(y)));
-  x -= 0.5f;
-  y -= 0.5f;
   int x0 = int(std::floor(x)), y0 = int(std::floor(y));
   float dx = x - x0, dy = y - y0;
   return (Texel(x0, y0) * (1 - dx) + Texel(x0 + 1, y0) * dx) * (1 - dy) +

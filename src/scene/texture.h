@@ -40,19 +40,28 @@ class ConstantTexture final : public SpectrumTexture {
 // after the to_uv transform.
 class CheckerboardTexture final : public SpectrumTexture {
  public:
+  // The mean is taken once here: the two colours may be one texture (a scene can nest such
+  // checkerboards, and asking each for its mean on every call would take exponential time).
   CheckerboardTexture(std::shared_ptr<const SpectrumTexture> c0, std::shared_ptr<const SpectrumTexture> c1,
                       const Transform& to_uv)
-      : c0_(std::move(c0)), c1_(std::move(c1)), to_uv_(to_uv) {}
+      : c0_(std::move(c0)), c1_(std::move(c1)), to_uv_(to_uv), mean_((c0_->MeanRgb() + c1_->MeanRgb()) * 0.5f) {}
   SampledSpectrum Evaluate(Vec2f uv, const SampledWavelengths& lambda) const override;
-  Vec3f MeanRgb() const override { return (c0_->MeanRgb() + c1_->MeanRgb()) * 0.5f; }
+  Vec3f MeanRgb() const override { return mean_; }
 
  private:
   std::shared_ptr<const SpectrumTexture> c0_, c1_;
   Transform to_uv_;
+  Vec3f mean_;
 };
 
 enum class WrapMode { kRepeat, kMirror, kClamp };
 enum class FilterMode { kBilinear, kNearest };
+
+// A texel coordinate x (in texels, on an axis of n texels) brought into a range where its
+// floor fits an int, without changing the texel it wraps to: moved by whole periods (n for
+// repeat, 2n for mirror; exact, so the fraction is kept) or clamped to [-1, n]. NaN where
+// there is no answer (x is NaN, or infinite and repeating); the caller then returns NaN.
+float WrapTexelCoordinate(float x, WrapMode wrap, int n);
 
 // An RGB image (linear, already decoded from sRGB by the loader) looked up at uv, v = 0 at
 // the bottom row as in Mitsuba.

@@ -3,6 +3,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "base/rng.h"
 
 namespace objektiv {
@@ -22,7 +24,13 @@ TriangleMesh::TriangleMesh(MeshData data, const Transform& to_world, bool flip_n
     // A mirroring transform turns counter-clockwise into clockwise: keep the front side.
     if (to_world.SwapsHandedness()) flip_ = !flip_;
   }
-  for (const Vec3f& p : data_.positions) bounds_.Extend(p);
+  for (size_t i = 0; i < data_.positions.size(); ++i) {
+    const Vec3f& p = data_.positions[i];
+    if (!WithinSceneLimit(p))
+      throw std::invalid_argument(fmt::format("vertex {} lies at ({:g}, {:g}, {:g}), beyond the scene's coordinate limit of {:g}",
+                                              i, p.x, p.y, p.z, kMaxSceneCoordinate));
+    bounds_.Extend(p);
+  }
   std::vector<float> areas(TriangleCount());
   face_normals_.resize(TriangleCount());
   for (size_t i = 0; i < areas.size(); ++i) {

@@ -1,0 +1,80 @@
+#include "optics/lens_setup.h"
+
+#include <fmt/format.h>
+
+#include "base/error.h"
+#include "base/log.h"
+#include "optics/real_fnumber.h"
+
+namespace objektiv {
+
+double WideOpenFNumber(const LensPrescription& prescription) { return RealFNumber(LensSystem(prescription)); }
+
+namespace {
+
+void SetStop(LensSystem& lens, const StopRequest& stop) {
+  const LensPrescription& rx = lens.prescription();
+  const double full = lens.FullStopSemiDiameter();
+  if (stop.diameter_mm > 0) {
+    if (stop.diameter_mm / 2 > full * (1 + 1e-9))
+      throw InputError(fmt::format("stop diameter {} mm is larger than {}'s stop ({:.4g} mm)", stop.diameter_mm,
+                                   rx.name, 2 * full));
+    lens.SetStopSemiDiameter(stop.diameter_mm / 2);
+  } else if (stop.fnumber > 0) {
+    std::optional<double> semi = StopSemiDiameterForFNumber(lens, stop.fnumber);
+    if (!semi) {
+      // A lens sold as f/2.8 may open to f/2.81 by the real rays: a request within 2% of the
+      // widest aperture means wide open.
+      const double wide_open = RealFNumber(lens);
+      if (stop.fnumber < wide_open / 1.02)
+        throw InputError(fmt::format("f/{} is faster than {} opens (f/{:.3g})", stop.fnumber, rx.name, wide_open));
+      spdlog::info("lens {}: f/{} taken as wide open (f/{:.3g})", rx.name, stop.fnumber, wide_open);
+      semi = full;
+    }
+    lens.SetStopSemiDiameter(*semi);
+  }
+}
+
+// The plane in focus as a distance from the film. Given from the entrance pupil, it depends
+// on where focusing puts the lens: a few rounds of first-order focusing settle it (the pupil
+// moves by the focusing travel, a few mm on a distance of metres, and real rays move it by a
+// fraction of that).
+double DistanceFromFilm(const LensSystem& lens, const FocusRequest& focus) {
+  if (focus.from == FocusRequest::From::kFilm || !(focus.distance_mm < INFINITY)) return focus.distance_mm;
+  LensSystem t = lens;
+  double distance = focus.distance_mm;
+  for (int round = 0; round < 6; ++round) {
+    t.SetBackFocus(ParaxialFocus(t.prescription(), distance).back_focus);
+    distance = focus.distance_mm + (t.FilmZ() - t.EntrancePupilZ());
+  }
+  return distance;
+}
+
+}  // namespace
+
+LensSetup SetUpLens(LensPrescription prescription, const StopRequest& stop, const FocusRequest& focus) {
+  LensSetup setup{LensSystem(std::move(prescription)), 0, {}, ""};
+  LensSystem& lens = setup.lens;
+  SetStop(lens, stop);
+  setup.fnumber = RealFNumber(lens);
+  lens.SetStopShape(stop.opening);
+  const double distance = DistanceFromFilm(lens, focus);
+  setup.focus = focus.real_rays ? FocusLens(lens, distance, focus.lambda_nm)
+                                : ParaxialFocus(lens.prescription(), distance, focus.lambda_nm);
+  lens.SetBackFocus(setup.focus.back_focus);
+  const ParaxialData& p = lens.paraxial();
+  const int blades = stop.opening.blades();
+  setup.report = fmt::format("lens {}: EFL {:.2f} mm, f/{:.3g} (paraxial f/{:.3g}){}; {}", lens.prescription().name,
+                             p.efl, setup.fnumber, p.fnumber, blades >= 3 ? fmt::format(", {} blades", blades) : "",
+                             DescribeFocus(setup.focus, p.bfl));
+  return setup;
+}
+
+LensSystem AtParaxialInfinityFocus(LensPrescription prescription, double lambda_nm) {
+  FocusRequest focus;
+  focus.real_rays = false;
+  focus.lambda_nm = lambda_nm;
+  return SetUpLens(std::move(prescription), {}, focus).lens;
+}
+
+}  // namespace objektiv

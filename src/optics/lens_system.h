@@ -1,0 +1,60 @@
+// The lens as set up: a prescription with its aperture stop set (its semi-diameter and the
+// shape of its opening) and its film placed (the back focus: last vertex to film), with the
+// first-order data of that arrangement computed once, when the stop changes. Everything that
+// traces or analyses a lens takes one: the exact and batch tracers, the pupil bounds,
+// focusing, the f-number and the real-ray analyses; coatings, ghosts and diffraction will
+// hang off it. optics/lens_setup.h builds one as a camera or `objektiv lens` asks for it.
+//
+// Lens space: millimetres, z along the axis toward the film, the first vertex at z = 0.
+#pragma once
+#include <vector>
+
+#include "optics/lens_prescription.h"
+#include "optics/paraxial.h"
+#include "optics/stop_shape.h"
+
+namespace objektiv {
+
+class LensSystem {
+ public:
+  // The stop fully open and round, the film where the prescription puts it (its last
+  // thickness behind the last vertex).
+  explicit LensSystem(LensPrescription prescription);
+
+  const LensPrescription& prescription() const { return prescription_; }
+  const LensSurface& surface(int i) const { return prescription_.surfaces[i]; }
+  int SurfaceCount() const { return int(prescription_.surfaces.size()); }
+  int StopIndex() const { return stop_index_; }  // -1 if none
+
+  // The stop's semi-diameter (mm): narrowed, never widened beyond the prescription's.
+  void SetStopSemiDiameter(double mm);
+  double StopSemiDiameter() const { return stop_semi_; }
+  double FullStopSemiDiameter() const;  // the prescription's
+  // The opening's shape (round, an iris of blades, cut by a mask's support).
+  void SetStopShape(const StopShape& shape) { stop_shape_ = shape; }
+  const StopShape& stop_shape() const { return stop_shape_; }
+  // Whether (x, y) in the stop's plane (mm from the axis) lies inside the opening.
+  bool InsideStop(double x, double y) const;
+
+  // The film `mm` behind the last vertex (the last thickness).
+  void SetBackFocus(double mm) { film_z_ = vertex_z_.back() + mm; }
+  double BackFocus() const { return film_z_ - vertex_z_.back(); }
+  double VertexZ(int i) const { return vertex_z_[i]; }
+  double FilmZ() const { return film_z_; }
+
+  // First-order data at the d line, object at infinity, for the stop as set.
+  const ParaxialData& paraxial() const { return paraxial_; }
+  // Lens-space z of the entrance and exit pupils (paraxial, d line).
+  double EntrancePupilZ() const { return vertex_z_.front() + paraxial_.entrance_pupil_position; }
+  double ExitPupilZ() const { return vertex_z_.back() + paraxial_.exit_pupil_position; }
+
+ private:
+  LensPrescription prescription_;
+  std::vector<double> vertex_z_;
+  int stop_index_ = -1;
+  double film_z_ = 0, stop_semi_ = 0;
+  StopShape stop_shape_;
+  ParaxialData paraxial_;
+};
+
+}  // namespace objektiv

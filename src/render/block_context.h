@@ -1,0 +1,116 @@
+// The contract between the render loop and an integrator. The renderer splits the crop window
+// into blocks (a tile of pixels and a range of sample indices) and hands each to the integrator
+// with a BlockContext: the camera, the sampler to copy, the film writes and this thread's
+// counters. The integrator makes and traces its own rays. The renderer keeps what is common to
+// all: the schedule, progress, the stop flag (ForEachPixel), statistics and NaN/Inf counting
+// (AddSample, AddSplat), so that no integrator repeats them.
+//
+// Determinism: every random number must come from a copy of sampler() started at a (pixel,
+// sample index) of the block (Sampler::StartPixelSample); nothing may depend on which thread
+// runs a block or on the order of blocks. Film writes:
+// - AddSample: a camera sample of a pixel of this block (only this block writes that pixel:
+//   no synchronisation, and the pixel's sums are made in sample order, bit for bit the same on
+//   any thread count and tiling).
+// - AddSplat: a contribution at any film position (a light path reaching the sensor), from any
+//   block at any time (atomic adds; see Film::AddSplat for what is guaranteed).
+#pragma once
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+
+#include "camera/camera.h"
+#include "render/film.h"
+#include "render/sampler.h"
+
+namespace objektiv {
+
+struct RayCounts {
+  uint64_t closest = 0, shadow = 0;
+};
+
+// One thread's statistics, summed by the renderer at the end.
+struct RenderCounters {
+  RayCounts rays;
+  CameraRayCount camera;
+  uint64_t nan = 0, inf = 0;  // radiance samples and splats dropped
+  uint64_t pixels = 0;        // pixels that got all the samples of their block
+};
+
+// A tile of pixels (half-open bounds on the full film, inside the crop window) and the sample
+// indices [sample_begin, sample_end) to take for each of its pixels.
+struct PixelBlock {
+  Vec2i p0, p1;
+  int sample_begin = 0, sample_end = 0;
+};
+
+class BlockContext {
+ public:
+  BlockContext(const PixelBlock& block, const Camera& camera, const Sampler& sampler, Film& film,
+               RenderCounters& counters, const std::atomic<bool>* stop)
+      : block_(block), camera_(camera), sampler_(sampler), film_(film), counters_(counters), stop_(stop) {}
+
+  const PixelBlock& block() const { return block_; }
+  const Camera& camera() const { return camera_; }
+  // The render's sampler, to be copied (one copy per sample in flight) and started per sample.
+  const Sampler& sampler() const { return sampler_; }
+  // The film's reconstruction filter: camera samples are placed by Filter::Sample.
+  const Filter& filter() const { return film_.filter(); }
+
+  // The pixel loop of every integrator: fn(pixel) for the block's pixels in scanline order,
+  // each taking all of the block's samples. Once the render is stopped (Ctrl-C) no pixel is
+  // started any more; the pixels that ran to the end are counted (the partial image's).
+  template <class PixelFn>
+  void ForEachPixel(PixelFn&& fn) {
+    for (int y = block_.p0.y; y < block_.p1.y; ++y)
+      for (int x = block_.p0.x; x < block_.p1.x; ++x) {
+        if (Stopped()) return;
+        fn(Vec2i(x, y));
+        ++counters_.pixels;
+      }
+  }
+  bool Stopped() const { return stop_ && stop_->load(std::memory_order_relaxed); }
+
+  // One camera sample of a pixel of this block, weighted by the filter's sample weight.
+  void AddSample(Vec2i pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float filter_weight) {
+    if (Finite(L)) film_.AddSample(pixel, L, lambda, filter_weight);
+  }
+  // A contribution at a continuous film position (full-film pixel coordinates, as
+  // CameraSample::p_film), spread over the pixels by the filter. The image shows the sum of a
+  // pixel's splats divided by the samples per pixel of the render: an integrator that traces
+  // one light path per (pixel, sample index) splats what that path brings to the sensor.
+  void AddSplat(Vec2f p_film, const SampledSpectrum& L, const SampledWavelengths& lambda) {
+    if (!std::isfinite(p_film.x) || !std::isfinite(p_film.y)) {
+      ++counters_.nan;  // a position gone wrong is a NaN sample too
+      return;
+    }
+    if (Finite(L)) film_.AddSplat(p_film, L, lambda);
+  }
+
+  // Every ray traced is counted here (closest hits and shadow rays), camera rays through a lens
+  // in camera_rays() (Camera::GenerateRays does that).
+  RayCounts& rays() { return counters_.rays; }
+  CameraRayCount& camera_rays() { return counters_.camera; }
+
+ private:
+  // Non-finite radiance is counted and dropped, never written to the film.
+  bool Finite(const SampledSpectrum& L) {
+    if (L.HasNaN()) {
+      ++counters_.nan;
+      return false;
+    }
+    if (L.HasInf()) {
+      ++counters_.inf;
+      return false;
+    }
+    return true;
+  }
+
+  const PixelBlock& block_;
+  const Camera& camera_;
+  const Sampler& sampler_;
+  Film& film_;
+  RenderCounters& counters_;
+  const std::atomic<bool>* stop_;
+};
+
+}  // namespace objektiv

@@ -1,0 +1,36 @@
+# The fuzzing findings of issue 10, run through the command line (inputs and what each broke:
+# data/fuzz/README.md). Each must end in its expected exit status, an error naming the file
+# where it fails, never a signal or a hang.
+set(FUZZ ${CMAKE_CURRENT_SOURCE_DIR}/data/fuzz)
+set(FUZZ_OUT ${CMAKE_CURRENT_BINARY_DIR}/fuzz)
+file(MAKE_DIRECTORY ${FUZZ_OUT})
+
+# fuzz_test(NAME CODE TEXT ARGS...): objektiv ARGS exits with CODE and prints TEXT.
+function(fuzz_test name code text)
+  list(JOIN ARGN "$<SEMICOLON>" args)
+  add_test(NAME fuzz_${name} COMMAND ${CMAKE_COMMAND} -DCMD=${OBJ}$<SEMICOLON>${args}
+    -DEXPECT_CODE=${code} -DEXPECT_TEXT=${text} -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_exit.cmake)
+  set_tests_properties(fuzz_${name} PROPERTIES TIMEOUT 60)
+endfunction()
+
+fuzz_test(texture_uv_huge 0 "NaN 0" render ${FUZZ}/03-texture-to-uv-huge.xml --spp 1 -o ${FUZZ_OUT}/03.exr)
+fuzz_test(zmx_curv_infinity 1 "05-zmx-curv-infinity.zmx:11: 'INFINITY' is not a finite number"
+  lens info ${FUZZ}/05-zmx-curv-infinity.zmx)
+fuzz_test(png_header_12000 1 "06-png-header-12000x12000.png: cannot decode image"
+  render ${FUZZ}/06-texture-scene.xml -o ${FUZZ_OUT}/06.exr)
+fuzz_test(ply_bad_index 1 "07-ply-bad-index-segv.ply: the file ends in face 8 of 36"
+  render ${FUZZ}/07-mesh-scene.xml -o ${FUZZ_OUT}/07.exr)
+fuzz_test(ply_triangulate_assert 1 "08-ply-triangulate-assert.ply:83: '0.23' is not a list length"
+  render ${FUZZ}/07-mesh-scene.xml -D meshfile=08-ply-triangulate-assert.ply -o ${FUZZ_OUT}/08.exr)
+fuzz_test(ply_header_hang 1 "09-ply-truncated-header-hang.ply:14: unknown header line"
+  render ${FUZZ}/07-mesh-scene.xml -D meshfile=09-ply-truncated-header-hang.ply -o ${FUZZ_OUT}/09.exr)
+fuzz_test(huge_vertex_area_light 1 "02-embree-assert-scene.xml:12: vertex 63 lies at (-0.523986, 9.22337e+18, 0.0906492)"
+  render ${FUZZ}/02-embree-assert-scene.xml -o ${FUZZ_OUT}/02.exr)
+# A 65536x65536 film (or 40000x30000) ended in std::bad_alloc with no message, or on a big
+# machine would allocate and render: refused against the memory budget, --max-memory.
+fuzz_test(film_over_budget 1 "cornell-box.xml:29: rendering 65536x65536 pixels needs 332 GiB, more than the memory budget of 16 GiB"
+  render ${CORNELL} -D res=65536 -o ${FUZZ_OUT}/film.exr)
+fuzz_test(film_budget_option 1 "rendering 64x64 pixels needs 0.000317 GiB, more than the memory budget of 0.0001 GiB"
+  render ${CORNELL} -D res=64 --max-memory 0.0001 -o ${FUZZ_OUT}/film.exr)
+fuzz_test(film_crop_within_budget 0 "4x4, 1 spp" render ${CORNELL} -D res=65536 --crop 0,0,4,4 --spp 1 -o ${FUZZ_OUT}/film.exr)
+fuzz_test(film_budget_not_positive 2 "--max-memory" render ${CORNELL} --max-memory 0 -o ${FUZZ_OUT}/film.exr)
