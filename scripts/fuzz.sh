@@ -18,7 +18,8 @@
 # under the sanitizers, and a niced fuzzer on a busy machine gets a fraction of a core) or
 # allocates over 2 GiB is a finding: it is minimised, copied into
 # fuzz/regressions/HARNESS/ (one per distinct report; the test suite replays that folder), and
-# the harness goes on fuzzing for the rest of its time. Exits 1 if anything was found.
+# the harness goes on fuzzing for the rest of its time. Ends with a table of each harness's
+# executions, per second and per CPU second; exits 1 if anything was found.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -107,7 +108,7 @@ finding_key() {
 }
 
 # fuzz_one HARNESS: fuzzes for time_per seconds, restarting after each finding; writes
-# "HARNESS SECONDS EXECS FINDINGS" to DIR/logs/HARNESS.stats.
+# "HARNESS SECONDS EXECS FINDINGS CPU_SECONDS" to DIR/logs/HARNESS.stats.
 fuzz_one() {
   local h=$1 bin=$root/$build/fuzz/fuzz_$1
   local corpus=$corpus_root/$h art=$corpus_root/artifacts/$h logs=$corpus_root/logs
@@ -152,7 +153,11 @@ fuzz_one() {
       echo "      reproduce: $build/fuzz/fuzz_$h fuzz/regressions/$h/$name  (log: $log)" >&2
     fi
   done
-  echo "$h $((SECONDS - start)) $execs ${#found[@]}" > "$logs/$h.stats"
+  # The fuzzers' CPU time (user + system, from the shell's `times`): on a busy machine, or
+  # niced, executions per CPU second say what a machine of one's own would reach.
+  local cpu
+  cpu=$(times | tail -1 | awk '{ t = 0; for (i = 1; i <= 2; ++i) { split($i, p, /[ms]/); t += 60 * p[1] + p[2] } printf "%d", t }')
+  echo "$h $((SECONDS - start)) $execs ${#found[@]} $cpu" > "$logs/$h.stats"
   for key in "${!found[@]}"; do echo "$key"; done > "$logs/$h.found"
 }
 
@@ -169,10 +174,11 @@ done
 wait
 
 status=0
-printf '%-12s %8s %12s %10s %9s\n' harness seconds execs exec/s findings
+printf '%-12s %8s %8s %12s %8s %12s %9s\n' harness seconds "CPU s" execs exec/s "exec/CPU s" findings
 for h in "${harnesses[@]}"; do
-  read -r _ secs execs found < "$corpus_root/logs/$h.stats"
-  printf '%-12s %8d %12d %10d %9d\n' "$h" "$secs" "$execs" $((execs / (secs > 0 ? secs : 1))) "$found"
+  read -r _ secs execs found cpu < "$corpus_root/logs/$h.stats"
+  printf '%-12s %8d %8d %12d %8d %12d %9d\n' "$h" "$secs" "$cpu" "$execs" $((execs / (secs > 0 ? secs : 1))) \
+    $((execs / (cpu > 0 ? cpu : 1))) "$found"
   (( found == 0 )) || { status=1; sed 's/^/    /' "$corpus_root/logs/$h.found"; }
 done
 exit $status
