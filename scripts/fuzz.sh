@@ -155,8 +155,10 @@ fuzz_one() {
   done
   # The fuzzers' CPU time (user + system, from the shell's `times`): on a busy machine, or
   # niced, executions per CPU second say what a machine of one's own would reach.
+  # `times` itself, not in a pipe or $(...): a forked shell starts with no children's time.
+  times > "$logs/$h.times"
   local cpu
-  cpu=$(times | tail -1 | awk '{ t = 0; for (i = 1; i <= 2; ++i) { split($i, p, /[ms]/); t += 60 * p[1] + p[2] } printf "%d", t }')
+  cpu=$(awk 'NR == 2 { t = 0; for (i = 1; i <= 2; ++i) { split($i, p, /[ms]/); t += 60 * p[1] + p[2] } printf "%d", t }' "$logs/$h.times")
   echo "$h $((SECONDS - start)) $execs ${#found[@]} $cpu" > "$logs/$h.stats"
   for key in "${!found[@]}"; do echo "$key"; done > "$logs/$h.found"
 }
