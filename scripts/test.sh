@@ -19,7 +19,7 @@ stage "tests" ctest --test-dir build --output-on-failure -j "$jobs"
 
 if [[ ${CI:-} != true && ${OBJEKTIV_SANITIZERS:-0} != 1 ]]; then
   echo "test: sanitizer build, tests under ASan+UBSan and fuzzing skipped (CI=true bash scripts/test.sh runs them too:" \
-       "about 20 more minutes on 2 cores)"
+       "about 20 more minutes of CPU)"
   exit 0
 fi
 
