@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Installs the Debian packages Objektiv needs to build, test and benchmark.
+# Installs the Debian packages Objektiv needs to build, test and benchmark; with
+# --sanitizers also clang, its sanitizer and libFuzzer runtimes and llvm-symbolizer (for the
+# sanitizer build, the fuzz harnesses and readable reports).
 # Idempotent: when every package is present it prints nothing and does nothing.
 set -euo pipefail
 
@@ -10,6 +12,7 @@ packages=(
   libcli11-dev libfmt-dev libspdlog-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )
+[[ ${1:-} == --sanitizers ]] && packages+=(clang libclang-rt-14-dev llvm)
 
 missing=()
 for p in "${packages[@]}"; do

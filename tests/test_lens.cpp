@@ -162,6 +162,16 @@ TEST(NativeLens, BadFilesNameTheLine) {
   }
 }
 
+// Found by fuzzing: "c=0.0" or a subnormal curvature gave a surface of infinite radius that
+// was not flat.
+TEST(NativeLens, AnyZeroCurvatureIsAPlane) {
+  for (const char* c : {"c=0", "c=0.0", "c=-0", "c=.0e3", "c=0x1p-1074"}) {
+    LensPrescription l = ParseNativeLens(fmt::format("stop 1 air 4\nsurface {} 5 n=1.5 10\nsurface -50 40 air 10\n", c), "c.lens");
+    EXPECT_TRUE(l.surfaces[1].flat) << c;
+    EXPECT_EQ(l.surfaces[1].radius, 0) << c;
+  }
+}
+
 TEST(NativeLens, ConicsAspheresCurvaturesAndModelGlasses) {
   LensPrescription l = ParseNativeLens(
       "stop 1 air 4\nsurface c=0.02 5 nd=1.5168,vd=64.17 10 k=-1 a4=1e-6 a6=-2e-9 coating=MgF2\n"

@@ -98,6 +98,21 @@ TEST(ShapeSampling, AreasAreExact) {
   EXPECT_THROW(Sphere(Vec3f(0.f), 1, false, Transform::Scale({1, 2, 1})), std::invalid_argument);
 }
 
+// Two triangles, the first degenerate with one position at two of its corners (a fuzzed OBJ,
+// fuzz/regressions/mesh_obj): the quad detection matched both to one corner of the second
+// triangle and read past the index buffer (AddressSanitizer: heap-buffer-overflow).
+TEST(ShapeSampling, DegenerateTriangleBesideAnotherIsNoQuad) {
+  MeshData m;
+  m.positions = {{0, 0, 0}, {0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 1, 1}};
+  m.indices = {0, 1, 2, 0, 3, 4};
+  TriangleMesh mesh(m, Transform(), false);
+  EXPECT_NEAR(mesh.Area(), 0.5f * std::sqrt(3.f), 1e-6f);
+  for (float u : {0.1f, 0.5f, 0.9f}) {
+    ShapeSample s = mesh.SampleArea({u, 0.3f});
+    EXPECT_NEAR(s.p.z - s.p.x - s.p.y, 0, 1e-6f);  // on the second triangle's plane
+  }
+}
+
 TEST(EnvironmentMap, SamplingMatchesPdf) {
   Image img(64, 32, {"R", "G", "B"});
   for (int y = 0; y < 32; ++y)

@@ -92,7 +92,7 @@ TEST(PbrtScenes, AreNamedForWhatTheyAre) {
   const char* pbrt = "# a pbrt-v4 scene\nLookAt 0 0 5  0 0 0  0 1 0\nCamera \"perspective\"\nWorldBegin\n";
   for (auto [text, name] : {std::pair{pbrt, "scene.xml"}, std::pair{pbrt, "scene.pbrt"},
                             std::pair{"<scene version=\"3.0.0\"/>", "scene.pbrt"}}) {
-    std::string msg = ErrorOf([&] { ParseSceneString(text, name, {}); });
+    std::string msg = ErrorOf([&, text = text, name = name] { ParseSceneString(text, name, {}); });  // clang 14 captures no bindings
     EXPECT_EQ(msg.rfind(std::string(name) + ": a pbrt scene", 0), 0u) << msg;
     EXPECT_EQ(msg.find("XML syntax"), std::string::npos) << msg;
   }

@@ -78,6 +78,21 @@ TEST(Zemax, EvenAsphereCoefficientsBecomeTheSag) {
   EXPECT_NEAR(l.surfaces[1].ParaxialCurvature(), 0.022, 1e-15);
 }
 
+// Found by fuzzing: a curvature so small that its radius overflows (a subnormal number) gave
+// a surface of infinite radius that was not flat.
+TEST(Zemax, CurvatureTooSmallForARadiusIsAPlane) {
+  for (const char* curv : {"0", "-0", "0x1p-1074"}) {
+    std::string z = fmt::format(
+        "UNIT MM\nSURF 0\n DISZ INFINITY\nSURF 1\n STOP\n DISZ 1\n DIAM 4\nSURF 2\n CURV {}\n GLAS N-BK7\n"
+        " DISZ 5\n DIAM 10\nSURF 3\n CURV -0.02\n DISZ 40\n DIAM 10\nSURF 4\n DISZ 0\n DIAM 10\n",
+        curv);
+    LensPrescription l = ParseZemaxLens(z, "plane.zmx");
+    ASSERT_EQ(l.surfaces.size(), 3u);
+    EXPECT_TRUE(l.surfaces[1].flat) << curv;
+    EXPECT_EQ(l.surfaces[1].radius, 0) << curv;
+  }
+}
+
 TEST(Zemax, UnsupportedThingsAreNamed) {
   std::string bad_type = "SURF 0\n DISZ INFINITY\nSURF 1\n STOP\n TYPE TOROIDAL\n DISZ 1\n DIAM 4\nSURF 2\n DISZ 0\n DIAM 4\n";
   try {

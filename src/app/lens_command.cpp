@@ -187,7 +187,7 @@ std::function<int()> AddLensCommand(CLI::App& app) {
       "analyze", "Real-ray analysis: spot diagrams, distortion, field curvature, relative illumination, colour (SVG + JSON)");
   analyze->add_option("lens", args->lens, lens_help)->required();
   analyze->add_option("-o,--output", args->output, "Output directory")->required();
-  return [args, list, info, plot, analyze] {
+  return [args, list, plot, analyze] {
     if (list->parsed()) return RunList();
     if (plot->parsed()) return RunPlot(*args);
     if (analyze->parsed()) return RunAnalyze(*args);

@@ -19,7 +19,8 @@ class SampledSpectrum {
   explicit SampledSpectrum(float c) : v_{c, c, c, c} {}
 
   float operator[](int i) const { return v_[i]; }
-  float& operator[](int i) { return v_[i]; }
+  // Through a float pointer: GCC binds a reference to a vector element, clang does not.
+  float& operator[](int i) { return reinterpret_cast<float*>(&v_)[i]; }
 
 #define OBJEKTIV_SS_OP(op)                                                     \
   SampledSpectrum& operator op##=(const SampledSpectrum& o) {                  \

@@ -117,7 +117,7 @@ void StepAll(const Step& s, RayBatch& b) {
       bool ok1 = (t1 > -1e-6f) & (s.k1 * s.c * (z0 + t1 * dz) <= 1);
       bool ok2 = (t2 > -1e-6f) & (s.k1 * s.c * (z0 + t2 * dz) <= 1);
       ok &= ok1 | ok2;
-      t = ok1 & ok2 ? std::min(t1, t2) : (ok1 ? t1 : t2);
+      t = (ok1 & ok2) ? std::min(t1, t2) : (ok1 ? t1 : t2);
     }
     if constexpr (kAspheric) {
       // Newton on z(t) - sag(r(t)) from the conic's intersection (a fixed count of steps).

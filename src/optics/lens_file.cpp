@@ -80,10 +80,10 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       next = 1;
     } else if (f[0] == "surface") {
       if (f.size() < 5) throw MakeInputError(path, number, "a surface line is: surface RADIUS THICKNESS MEDIUM SEMI_DIAMETER [options]");
-      if (f[1] == "inf" || f[1] == "c=0") {
+      if (f[1] == "inf") {
         s.flat = true;
       } else if (f[1].rfind("c=", 0) == 0) {
-        s.radius = 1 / ParseFiniteNumber(f[1].substr(2), path, number);
+        s.SetCurvature(ParseFiniteNumber(f[1].substr(2), path, number));
       } else {
         s.radius = ParseFiniteNumber(f[1], path, number);
         if (s.radius == 0) throw MakeInputError(path, number, "radius 0: write inf for a plane (the stop is its own line)");

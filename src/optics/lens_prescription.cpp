@@ -7,6 +7,11 @@
 
 namespace objektiv {
 
+void LensSurface::SetCurvature(double c) {
+  flat = !std::isfinite(1 / c);
+  radius = flat ? 0 : 1 / c;
+}
+
 int LensPrescription::StopIndex() const {
   for (size_t i = 0; i < surfaces.size(); ++i)
     if (surfaces[i].is_stop) return int(i);

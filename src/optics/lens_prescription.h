@@ -23,6 +23,9 @@ struct LensSurface {
   std::shared_ptr<const Glass> medium;
 
   double Curvature() const { return (flat || is_stop || radius == 0) ? 0.0 : 1.0 / radius; }
+  // Sets the radius from a curvature c (1/mm): a plane where c is 0 or so small (a subnormal
+  // number) that 1/c overflows.
+  void SetCurvature(double c);
   // Curvature at the vertex, including the r^2 aspheric term: what paraxial optics sees.
   double ParaxialCurvature() const { return Curvature() + 2 * a2; }
   bool HasAsphericTerms() const {

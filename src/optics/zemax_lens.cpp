@@ -158,8 +158,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
     s.thickness = z.disz * unit;
     s.semi_diameter = z.diam * unit;
     s.conic = z.coni;
-    if (z.curv == 0) s.flat = true;
-    else s.radius = unit / z.curv;
+    s.SetCurvature(z.curv / unit);
     if (z.type == "EVENASPH") {
       // PARM k multiplies r^(2k) in lens units: convert to mm.
       s.a2 = z.parm[1] / unit;

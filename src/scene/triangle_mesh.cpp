@@ -101,12 +101,15 @@ void TriangleMesh::FindParallelogram() {
   if (TriangleCount() != 2 || !(area_ > 0)) return;
   const uint32_t *a = &data_.indices[0], *b = &data_.indices[3];
   auto pos = [&](uint32_t v) { return data_.positions[v]; };
-  // The two vertices both triangles share (by position: OBJ quads may repeat vertices).
+  // The two vertices both triangles share (by position: OBJ quads may repeat vertices), each
+  // corner of b matched once (a degenerate a may hold one position twice).
   int shared_a[3] = {-1, -1, -1}, shared = 0;
+  bool matched_b[3] = {false, false, false};
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
-      if (pos(a[i]) == pos(b[j])) {
+      if (!matched_b[j] && pos(a[i]) == pos(b[j])) {
         shared_a[i] = j;
+        matched_b[j] = true;
         ++shared;
         break;
       }
