@@ -6,6 +6,6 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace objektiv;
   fuzz::Quiet();
-  fuzz::IgnoringInputErrors([&] { fuzz::ExerciseLens(ParseNativeLens(std::string(fuzz::Bytes(data, size)), "fuzz.lens")); });
+  fuzz::IgnoringInputErrors([&] { fuzz::ExerciseLens(ParseNativeLens(std::string(fuzz::Bytes(data, size)), "fuzz.lens", GlassCatalog::Default())); });
   return 0;
 }

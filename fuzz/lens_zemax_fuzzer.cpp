@@ -6,6 +6,6 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace objektiv;
   fuzz::Quiet();
-  fuzz::IgnoringInputErrors([&] { fuzz::ExerciseLens(ParseZemaxLens(std::string(fuzz::Bytes(data, size)), "fuzz.zmx")); });
+  fuzz::IgnoringInputErrors([&] { fuzz::ExerciseLens(ParseZemaxLens(std::string(fuzz::Bytes(data, size)), "fuzz.zmx", GlassCatalog::Default())); });
   return 0;
 }

@@ -35,7 +35,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   fuzz::Quiet();
   std::string path = fuzz::WriteScratchFile("scene.xml", fuzz::Bytes(data, size));
   fuzz::IgnoringInputErrors([&] {
-    RenderSetup setup = LoadScene(path, {});
+    RenderSetup setup = LoadScene(path, {}, GlassCatalog::Default());
     const FilmSettings& f = setup.film;
     int x0 = std::max(0, f.width / 2 - 1), y0 = std::max(0, f.height / 2 - 1);
     CropWindow crop{x0, y0, std::min(f.width, x0 + 2), std::min(f.height, y0 + 2)};

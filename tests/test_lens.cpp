@@ -166,7 +166,7 @@ TEST(NativeLens, BadFilesNameTheLine) {
 // was not flat.
 TEST(NativeLens, AnyZeroCurvatureIsAPlane) {
   for (const char* c : {"c=0", "c=0.0", "c=-0", "c=.0e3", "c=0x1p-1074"}) {
-    LensPrescription l = ParseNativeLens(fmt::format("stop 1 air 4\nsurface {} 5 n=1.5 10\nsurface -50 40 air 10\n", c), "c.lens");
+    LensPrescription l = ParseNativeLens(fmt::format("stop 1 air 4\nsurface {} 5 n=1.5 10\nsurface -50 40 air 10\n", c), "c.lens", GlassCatalog::Default());
     EXPECT_TRUE(l.surfaces[1].flat) << c;
     EXPECT_EQ(l.surfaces[1].radius, 0) << c;
   }

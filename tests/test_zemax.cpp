@@ -86,7 +86,7 @@ TEST(Zemax, CurvatureTooSmallForARadiusIsAPlane) {
         "UNIT MM\nSURF 0\n DISZ INFINITY\nSURF 1\n STOP\n DISZ 1\n DIAM 4\nSURF 2\n CURV {}\n GLAS N-BK7\n"
         " DISZ 5\n DIAM 10\nSURF 3\n CURV -0.02\n DISZ 40\n DIAM 10\nSURF 4\n DISZ 0\n DIAM 10\n",
         curv);
-    LensPrescription l = ParseZemaxLens(z, "plane.zmx");
+    LensPrescription l = ParseZemaxLens(z, "plane.zmx", GlassCatalog::Default());
     ASSERT_EQ(l.surfaces.size(), 3u);
     EXPECT_TRUE(l.surfaces[1].flat) << curv;
     EXPECT_EQ(l.surfaces[1].radius, 0) << curv;
