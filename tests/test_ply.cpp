@@ -123,6 +123,12 @@ TEST(Ply, BrokenFilesAreErrors) {
        "0 0 0 0 0\n1 0 0 inf 0\n0 1 0 0 0\n3 0 1 2\n",
        "non-finite texture coordinate"},
       {"lines.ply", head + verts + "2 0 1\n", "mesh has no triangles"},
+      // Each record on its own line, as Assimp reads them: a short or a long row (the fuzzer's
+      // "-1 1-1" row put a 57-digit list length where Assimp read it: 3.8 GB allocated).
+      {"short_row.ply", head + "0 0\n0 1 0 0\n0 1 0\n3 0 1 2\n", ":10: vertex 0 has fewer values on its line"},
+      {"long_row.ply", head + "0 0 0 7\n1 0 0\n0 1 0\n3 0 1 2\n", ":10: more values on the line than a record holds"},
+      {"uchar_count.ply", head + verts + "300 0 1 2\n", "'300' is not a list length from 0 to 255"},
+      {"trailing.ply", head + verts + "3 0 1 2\n5 5\n", ":14: values after the last record"},
   };
   for (const Bad& b : cases) {
     fs::path p = WritePly(b.name, b.bytes);

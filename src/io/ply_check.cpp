@@ -90,7 +90,15 @@ PlyLayout ReadHeader(const std::string& bytes, const std::string& path, size_t* 
   return h;
 }
 
-// Walks the ASCII body: one token per value, a list's count then its items.
+// The largest list length a count of this type can hold (at most INT_MAX).
+int64_t MaxListLength(const PlyProperty& p) {
+  const int bits = 8 * p.count_size - (p.count_signed ? 1 : 0);
+  return bits >= 31 ? INT_MAX : (int64_t(1) << bits) - 1;
+}
+
+// Walks the ASCII body: one token per value, a list's count then its items, each record on a
+// line of its own (as Assimp reads them: a record that runs onto the next line, or leaves
+// values over, would be read out of step).
 void CheckAsciiBody(const std::string& bytes, size_t pos, int line, const PlyLayout& h, const std::string& path) {
   int token_line = line - 1;  // of the last token read (the end_header line at first)
   auto token = [&]() -> std::string_view {
@@ -101,19 +109,38 @@ void CheckAsciiBody(const std::string& bytes, size_t pos, int line, const PlyLay
     if (pos > start) token_line = line;
     return std::string_view(bytes).substr(start, pos - start);
   };
+  int record_line = token_line;
+  auto same_line = [&](const PlyElement& e, int64_t r) {
+    if (token_line != record_line)
+      throw MakeInputError(path, record_line, "{} {} has fewer values on its line than the header declares (line {})", e.name,
+                           r, e.line);
+  };
   for (const PlyElement& e : h.elements)
     for (int64_t r = 0; r < e.count && !e.properties.empty(); ++r)
-      for (const PlyProperty& p : e.properties) {
+      for (size_t i = 0; i < e.properties.size(); ++i) {
+        const PlyProperty& p = e.properties[i];
+        const int previous_line = token_line;
         std::string_view t = token();
         if (t.empty())
           throw MakeInputError(path, token_line, "the file ends in {} {} of {} (declared on line {})", e.name, r, e.count, e.line);
+        if (i == 0) {
+          if (token_line == previous_line)
+            throw MakeInputError(path, token_line, "more values on the line than a record holds (the header's line {})", e.line);
+          record_line = token_line;
+        }
+        same_line(e, r);
         if (!p.count_size) continue;
-        std::optional<int> items = ParseIntegerIn(std::string(t), 0, INT_MAX);
-        if (!items) throw MakeInputError(path, token_line, "'{}' is not a list length ({} {})", Shown(t), e.name, r);
-        for (int k = 0; k < *items; ++k)
+        std::optional<int> items = ParseIntegerIn(std::string(t), 0, int(MaxListLength(p)));
+        if (!items)
+          throw MakeInputError(path, token_line, "'{}' is not a list length from 0 to {} ({} {})", Shown(t), MaxListLength(p),
+                               e.name, r);
+        for (int k = 0; k < *items; ++k) {
           if (token().empty())
             throw MakeInputError(path, token_line, "the file ends in {} {} of {} (declared on line {})", e.name, r, e.count, e.line);
+          same_line(e, r);
+        }
       }
+  if (!token().empty()) throw MakeInputError(path, token_line, "values after the last record the header declares");
 }
 
 // Walks the binary body by sizes, reading each list's count.
