@@ -43,3 +43,9 @@ fuzz_test(obj_bad_corner 1 "10-obj-bad-corner.obj:4: 'x3' is not a corner"
 # Assimp read a count: 3.8 GB allocated (found by fuzz_mesh_ply). Records are one to a line.
 fuzz_test(ply_list_length_oom 1 "11-ply-list-length-oom.ply:17: vertex 7 has fewer values on its line"
   render ${FUZZ}/07-mesh-scene.xml -D meshfile=11-ply-list-length-oom.ply -o ${FUZZ_OUT}/11.exr)
+# BMPs of a few hundred bytes claiming 3493896x8 and 13107208x8 pixels: OpenImageIO's BMP
+# reader allocated 2.7 and 10 GB for the claim (found by fuzz_image).
+fuzz_test(bmp_claims_3493896x8 1 "12-bmp-claims-3493896x8.bmp: cannot read image: its header claims 3493896x8 pixels, more than a 189-byte BMP file can hold"
+  render ${FUZZ}/06-texture-scene.xml -D texfile=12-bmp-claims-3493896x8.bmp -o ${FUZZ_OUT}/12a.exr)
+fuzz_test(bmp_claims_13107208x8 1 "12-bmp-claims-13107208x8.bmp: cannot read image: its header claims 13107208x8 pixels"
+  render ${FUZZ}/06-texture-scene.xml -D texfile=12-bmp-claims-13107208x8.bmp -o ${FUZZ_OUT}/12b.exr)
