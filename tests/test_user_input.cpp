@@ -197,6 +197,27 @@ TEST(IgnoredInput, RealLensOnlySettingsAreWarnedAboutInTheIdealModels) {
   EXPECT_FALSE(log.Has("does nothing")) << log.Text();
 }
 
+// A <ref> to an object of a kind the plugin does not take is warned about, even when the
+// object is used elsewhere (it was ignored silently: the defaults rendered).
+TEST(IgnoredInput, ReferencesToTheWrongKindAreWarnedAbout) {
+  test::LogCapture log;
+  LoadSceneFromString(R"(<scene version="3.0.0">
+<sensor type="perspective"><film type="hdrfilm"><integer name="width" value="6"/><integer name="height" value="4"/></film></sensor>
+<texture type="checkerboard" id="t"/>
+<bsdf type="diffuse" id="d"/>
+<shape type="sphere">
+<ref id="t"/></shape>
+<shape type="sphere"><bsdf type="diffuse">
+<ref name="reflectance" id="d"/></bsdf>
+<emitter type="area">
+<ref name="radiance" id="d"/></emitter></shape>
+</scene>)",
+                      "w.xml", {});
+  EXPECT_TRUE(log.Has("w.xml:3: shape 'sphere' does not use the nested texture 'checkerboard'")) << log.Text();
+  EXPECT_TRUE(log.Has("w.xml:4: bsdf 'diffuse' does not use the nested bsdf 'diffuse'")) << log.Text();
+  EXPECT_TRUE(log.Has("w.xml:4: emitter 'area' does not use the nested bsdf 'diffuse'")) << log.Text();
+}
+
 // Text between tags and elements beside the root mean nothing in the language: said so.
 TEST(IgnoredInput, TextAndElementsOutsideTheLanguageAreWarnedAbout) {
   test::LogCapture log;

@@ -212,7 +212,10 @@ std::vector<std::shared_ptr<ObjectNode>> Properties::Children(const std::string&
   Declared(tag, {}, /*nested=*/true);
   std::vector<std::shared_ptr<ObjectNode>> out;
   for (const auto& c : node_.children)
-    if (c->tag == tag) out.push_back(c);
+    if (c->tag == tag) {
+      out.push_back(c);
+      handed_out_.insert(c.get());
+    }
   return out;
 }
 
@@ -221,7 +224,7 @@ void Properties::WarnUnused() const {
     if (!p.used)
       spdlog::warn("{}:{}: {} '{}' does not use the property '{}'", p.loc.file, p.loc.line, node_.tag, node_.type, p.name);
   for (const auto& c : node_.children)
-    if (!c->used)
+    if (!c->used || !handed_out_.count(c.get()))
       spdlog::warn("{}:{}: {} '{}' does not use the nested {} '{}'", c->loc.file, c->loc.line, node_.tag, node_.type,
                    c->tag, c->type);
 }

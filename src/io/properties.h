@@ -9,6 +9,7 @@
 #pragma once
 #include <array>
 #include <optional>
+#include <set>
 #include <span>
 #include <string_view>
 
@@ -120,6 +121,9 @@ class Properties {
   const ObjectNode& node_;
   const std::vector<PropertyDecl>& common_;
   const std::vector<PropertyDecl>& own_;
+  // The nested objects Children() handed to the plugin: a <ref> can bring in an object that is
+  // used elsewhere (so marked used) but is of a kind this plugin never asks for.
+  mutable std::set<const ObjectNode*> handed_out_;
 };
 
 }  // namespace objektiv
