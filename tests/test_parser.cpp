@@ -79,6 +79,8 @@ TEST(Parser, BadInputNamesFileAndLine) {
        "</sampler></sensor></scene>",
        3, "outside"},
       {"<scene>\n<sensor type=\"fisheye\"/></scene>", 2, "unknown sensor type"},
+      {"<scene>\n<sensor type=\"thinlens\"><float name=\"fov\" value=\"40\"/></sensor></scene>", 2,
+       "thinlens needs the property 'focus_distance'"},
       {Wrap("<shape type=\"sphere\">\n<float name=\"radius\" value=\"1e39\"/></shape>"), 5, "too large"},
       {Wrap("<emitter type=\"point\">\n<rgb name=\"intensity\" value=\"-5\"/></emitter>"), 5, "not negative"},
       {Wrap("<emitter type=\"constant\">\n<spectrum name=\"radiance\" value=\"400:1, 500:-2\"/></emitter>"), 5,

@@ -82,8 +82,8 @@ std::unique_ptr<Camera> BuildPerspective(const Properties& p, const SensorBase& 
   } else {
     radius = float(p.FloatIn("aperture_radius", 0.1, 0, 1e30));
   }
-  float focus = float(p.FloatIn("focus_distance", 0, 1e-6, 1e30));
   if (!p.Has("focus_distance")) throw ErrorAt(p.loc(), "thinlens needs the property 'focus_distance'");
+  float focus = float(p.FloatIn("focus_distance", 0, 1e-6, 1e30));
   int blades = int(p.IntIn("blades", 0, 0, 64));
   if (blades == 1 || blades == 2) throw ErrorAt(p.LocOf("blades"), "blades must be 0 (circular) or at least 3");
   return std::make_unique<ThinLensCamera>(b.to_world, w, h, fov, axis, near_clip, b.far_clip, radius, focus, blades,
