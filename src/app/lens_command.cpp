@@ -6,6 +6,7 @@
 
 #include "app/commands.h"
 #include "base/error.h"
+#include "base/output_file.h"
 #include "io/lens_analysis.h"
 #include "io/lens_plot.h"
 #include "optics/dispersion.h"
@@ -153,6 +154,12 @@ int RunAnalyze(const LensArgs& a) {
 }
 
 int RunPlot(const LensArgs& a) {
+  // An output that cannot be written is a bad command-line value (exit status 2), as for render.
+  try {
+    CheckOutputFile(a.output);
+  } catch (const InputError& e) {
+    throw CLI::ValidationError(fmt::format("the plot cannot be written: {}", e.what()));
+  }
   const LensSystem system = LoadImagingLens(a.lens, a.wavelength);
   std::vector<double> fields = a.fields.empty() ? DefaultFields(system, a.wavelength) : a.fields;
   PlotLensLayout(system, fields, a.wavelength).Write(a.output);
