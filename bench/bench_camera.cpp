@@ -7,6 +7,7 @@
 
 #include "base/rng.h"
 #include "camera/lens_camera_setup.h"
+#include "optics/coating_library.h"
 #include "optics/lens_file.h"
 
 namespace objektiv {
@@ -14,20 +15,21 @@ namespace {
 
 const char* const kLenses[] = {"dgauss.50mm", "wide.22mm", "fisheye.10mm", "telephoto.250mm", "tessar.brendel.100mm"};
 
-std::unique_ptr<Camera> MakeCamera(const char* lens, double fnumber) {
+std::unique_ptr<Camera> MakeCamera(const char* lens, double fnumber, const char* coating = nullptr) {
   LensCameraSpec spec;
   spec.lens = LoadLens(lens, GlassCatalog::Default());
+  if (coating) Recoat(spec.lens, CoatingForLens(coating, spec.lens));
   spec.fnumber = fnumber;
   spec.focus_distance = 5;
   return MakeLensCamera(Transform(), 768, 512, spec);
 }
 
-void BM_CameraRays(benchmark::State& state) {
-  const char* lens = kLenses[state.range(0)];
+// Camera rays through `lens` at `fnumber`, its air-glass surfaces coated so (null: as the file says).
+void TraceCameraRays(benchmark::State& state, const char* lens, double fnumber, const char* coating) {
   spdlog::set_level(spdlog::level::warn);
   // The f-number (0: wide open), or wide open for the lenses that do not open that far.
-  const double fnumber = std::max(state.range(1) / 10.0, WideOpenFNumber(LoadLens(lens, GlassCatalog::Default())));
-  auto cam = MakeCamera(lens, fnumber);
+  fnumber = std::max(fnumber, WideOpenFNumber(LoadLens(lens, GlassCatalog::Default())));
+  auto cam = MakeCamera(lens, fnumber, coating);
   PCG32 rng(2, 9);
   const int n = 64;
   std::vector<CameraSample> samples(n);
@@ -47,8 +49,18 @@ void BM_CameraRays(benchmark::State& state) {
   }
   state.SetItemsProcessed(state.iterations() * n);
   state.counters["pass_rate"] = count.traced ? double(count.passed) / count.traced : 0;
-  state.SetLabel(fmt::format("{} f/{:.3g}", lens, fnumber));
+  state.SetLabel(fmt::format("{} f/{:.3g}{}{}", lens, fnumber, coating ? " coating " : "", coating ? coating : ""));
 }
+
+// Arguments: the lens, 10 x the f-number.
+void BM_CameraRays(benchmark::State& state) { TraceCameraRays(state, kLenses[state.range(0)], state.range(1) / 10.0, nullptr); }
+
+// The coatings' cost: the double Gauss at f/2.8 bare (0), MgF2 (1) and multi-coated (2).
+void BM_CameraRaysCoated(benchmark::State& state) {
+  const char* const coatings[] = {"none", "MgF2", "multi"};
+  TraceCameraRays(state, "dgauss.50mm", 2.8, coatings[state.range(0)]);
+}
+BENCHMARK(BM_CameraRaysCoated)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_CameraRays)->ArgsProduct({{0, 1, 2, 3, 4}, {28, 80}})->Unit(benchmark::kMicrosecond);
 // The pass rate at every full stop from wide open to f/16 (the rays per second as above).
 BENCHMARK(BM_CameraRays)

@@ -47,6 +47,13 @@ void ExerciseLens(const LensPrescription& lens) {
   if (!std::isfinite(d.efl) || std::abs(d.efl) > 1e12) return;
   FocusAtDistance(lens, 2000, kLambdaD);
   const LensSystem system = AtParaxialInfinityFocus(lens, kLambdaD);
+  // Every surface's reflectance, bare or coated, both ways, is a fraction.
+  for (int i = 0; i < system.SurfaceCount(); ++i)
+    for (double cos_i : {1.0, 0.4})
+      for (bool toward_film : {true, false}) {
+        double r = system.SurfaceReflectance(i, 480, cos_i, toward_film);
+        Require(r >= 0 && r <= 1, "surface reflectance not in [0, 1]", size_t(i));
+      }
   RealBackFocus(system, kLambdaD);
   ChiefRay(system, 0, kLambdaD);
   ChiefRay(system, 15, kLambdaD);

@@ -58,7 +58,7 @@ TEST(BatchTracer, FollowsTheDoubleTracerFromTheFilm) {
       ++both;
       worst_pos = std::max({worst_pos, std::abs(e.ray->o.x - b.ox[i]), std::abs(e.ray->o.y - b.oy[i]), std::abs(e.ray->o.z - b.oz[i])});
       worst_dir = std::max({worst_dir, std::abs(e.ray->d.x - b.dx[i]), std::abs(e.ray->d.y - b.dy[i])});
-      worst_t = std::max(worst_t, std::abs(e.fresnel_transmittance * e.internal_transmittance - b.transmittance[i]));
+      worst_t = std::max(worst_t, std::abs(e.surface_transmittance * e.internal_transmittance - b.transmittance[i]));
     }
     // Rays aimed from anywhere on a 24 x 16 mm film at the rear element: for the wide angles
     // most are cut by the apertures, but enough get through to compare.

@@ -182,7 +182,8 @@ TEST(NativeLens, ConicsAspheresCurvaturesAndModelGlasses) {
   EXPECT_EQ(l.surfaces[1].conic, -1);
   EXPECT_EQ(l.surfaces[1].aspheric[0], 1e-6);
   EXPECT_EQ(l.surfaces[1].aspheric[1], -2e-9);
-  EXPECT_EQ(l.surfaces[1].coating, "MgF2");
+  ASSERT_TRUE(l.surfaces[1].coating);
+  EXPECT_EQ(l.surfaces[1].coating->name(), "MgF2");
   EXPECT_TRUE(l.surfaces[2].flat);
   EXPECT_NEAR(l.surfaces[1].medium->ComputedNd(), 1.5168, 1e-12);
   // Plano-convex with the flat side toward the film: EFL = R / (n - 1).

@@ -130,7 +130,7 @@ TEST(LensSystem, FresnelAndAbsorptionThroughAPlate) {
     TraceResult r = TraceFromObject(plate, {{0, 0, -5}, {0, 0, 1}}, lambda);
     ASSERT_TRUE(r.ray);
     double n = plate.prescription().surfaces[1].medium->Index(lambda), R = Sqr(float((n - 1) / (n + 1)));
-    EXPECT_NEAR(r.fresnel_transmittance, (1 - R) * (1 - R), 1e-6);
+    EXPECT_NEAR(r.surface_transmittance, (1 - R) * (1 - R), 1e-6);
     EXPECT_NEAR(r.internal_transmittance, plate.prescription().surfaces[1].medium->InternalTransmittance(lambda, 10), 1e-12);
   }
   // The catalog row for N-BK7 at 300 nm over 10 mm.
@@ -140,7 +140,7 @@ TEST(LensSystem, FresnelAndAbsorptionThroughAPlate) {
   Vec3d d = Normalize(Vec3d(0, std::sin(0.6), std::cos(0.6)));
   TraceResult oblique = TraceFromObject(plate, {{0, 0, -5}, d}, 300);
   EXPECT_LT(oblique.internal_transmittance, uv.internal_transmittance);
-  EXPECT_LT(oblique.fresnel_transmittance, uv.fresnel_transmittance);
+  EXPECT_LT(oblique.surface_transmittance, uv.surface_transmittance);
   EXPECT_NEAR(FresnelReflectance(1, 1.5, 1), 0.04, 1e-12);
   // Per surface: the two faces, each with its own reflectance, multiplying to the total.
   std::vector<SurfaceEvent> events;
@@ -148,7 +148,7 @@ TEST(LensSystem, FresnelAndAbsorptionThroughAPlate) {
   ASSERT_EQ(events.size(), 2u);
   EXPECT_EQ(events[0].surface, 1);
   EXPECT_EQ(events[1].surface, 2);
-  EXPECT_NEAR((1 - events[0].reflectance) * (1 - events[1].reflectance), again.fresnel_transmittance, 1e-15);
+  EXPECT_NEAR((1 - events[0].reflectance) * (1 - events[1].reflectance), again.surface_transmittance, 1e-15);
   EXPECT_NEAR(events[0].cos_incidence, d.z, 1e-12);
   EXPECT_EQ(FresnelReflectance(1.5, 1, 0.5), 1.0);  // beyond the critical angle
 }

@@ -116,11 +116,24 @@ TEST(KnownTypes, ErrorsListEveryRegisteredType) {
   EXPECT_NE(msg.find("blackman-harris"), std::string::npos) << msg;
 }
 
-TEST(Coatings, AreWarnedAboutOncePerLens) {
-  test::LogCapture log;
-  ParseNativeLens("surface 40 5 N-BK7 10 coating=MgF2\nstop 2 air 8\nsurface -40 40 air 10 coating=V-coat\n", "c.lens", GlassCatalog::Default());
-  EXPECT_EQ(log.Count("c.lens: coatings are not simulated yet"), 1) << log.Text();
-  EXPECT_TRUE(log.Has("surface 1 (line 1, MgF2), surface 3 (line 3, V-coat)")) << log.Text();
+// The scene's coating property: a built-in coating on every air-glass surface, checked names,
+// and a warning where it can do nothing.
+TEST(Coatings, SceneChoosesTheLensCoating) {
+  const std::string lens = "<string name=\"lens\" value=\"dgauss.50mm\"/>\n";
+  {
+    test::LogCapture log;
+    LoadSceneFromString(RealisticScene(lens + "<string name=\"coating\" value=\"multi@520\"/>"), "s.xml", {});
+    EXPECT_FALSE(log.Has("coating")) << log.Text();
+  }
+  std::string msg = ErrorOf([&] {
+    LoadSceneFromString(RealisticScene(lens + "<string name=\"coating\" value=\"Zap\"/>"), "s.xml", {});
+  });
+  EXPECT_NE(msg.find("s.xml:4: unknown coating 'Zap' (built in: none, MgF2[@NM], multi[@NM], I.xx"), std::string::npos) << msg;
+  for (const char* other : {"<string name=\"lens_model\" value=\"thin\"/>", "<boolean name=\"transmission\" value=\"false\"/>"}) {
+    test::LogCapture log;
+    LoadSceneFromString(RealisticScene(lens + "<string name=\"coating\" value=\"MgF2\"/>\n" + other), "s.xml", {});
+    EXPECT_TRUE(log.Has("s.xml:4: coating does nothing with")) << log.Text();
+  }
 }
 
 std::string ShiftedScene(double shift) {

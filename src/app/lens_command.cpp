@@ -9,6 +9,7 @@
 #include "base/output_file.h"
 #include "io/lens_analysis.h"
 #include "io/lens_plot.h"
+#include "optics/coating_library.h"
 #include "optics/dispersion.h"
 #include "optics/focusing.h"
 #include "optics/lens_file.h"
@@ -25,6 +26,7 @@ struct LensArgs {
   double wavelength = kLambdad;
   double focus_m = 0;  // 0: infinity
   std::string sensor = "36x24";
+  std::string coating;  // every air-glass surface's, instead of the file's
   bool json = false;
 };
 
@@ -39,8 +41,15 @@ std::pair<double, double> ParseSensor(const std::string& s) {
 
 // The lens commands describe imaging lenses (an afocal system has no finite first-order data),
 // set up as AtParaxialInfinityFocus takes them: fully open, at the paraxial focus.
-LensSystem LoadImagingLens(const std::string& name, double lambda_nm) {
+LensSystem LoadImagingLens(const std::string& name, double lambda_nm, const std::string& coating = "") {
   LensPrescription lens = LoadLens(name, GlassCatalog::Default());
+  if (!coating.empty()) {
+    try {
+      Recoat(lens, CoatingForLens(coating, lens));
+    } catch (const InputError& e) {  // a bad command-line value: exit status 2
+      throw CLI::ValidationError("--coating", e.what());
+    }
+  }
   double efl = ComputeParaxial(lens, lambda_nm).efl;
   if (!std::isfinite(efl) || std::abs(efl) > 1e12)
     throw InputError(fmt::format("{}: the lens has no optical power (afocal): it forms no image", name));
@@ -69,7 +78,7 @@ int RunList() {
 }
 
 int RunInfo(const LensArgs& a) {
-  const LensSystem system = LoadImagingLens(a.lens, a.wavelength);
+  const LensSystem system = LoadImagingLens(a.lens, a.wavelength, a.coating);
   const LensPrescription& lens = system.prescription();
   ParaxialData d = system.Paraxial(a.wavelength);
   int stop = system.StopIndex();
@@ -105,6 +114,22 @@ int RunInfo(const LensArgs& a) {
                               {"fov_horizontal_deg", fov.horizontal},
                               {"fov_vertical_deg", fov.vertical},
                               {"fov_diagonal_deg", fov.diagonal}};
+  const AxialTransmittance transmittance = AxialTransmittanceOf(system, a.wavelength);
+  j["axial_transmittance"] = transmittance.Total();
+  j["axial_surface_transmittance"] = transmittance.surfaces;
+  j["axial_glass_transmittance"] = transmittance.glass;
+  // Each coating and the surfaces (1-based rows) that carry it.
+  std::vector<std::pair<std::shared_ptr<const Coating>, std::vector<int>>> coatings;
+  for (int i = 0; i < system.SurfaceCount(); ++i) {
+    const std::shared_ptr<const Coating>& c = lens.surfaces[i].coating;
+    if (!c || !system.Coated(i)) continue;
+    auto it = std::find_if(coatings.begin(), coatings.end(), [&](const auto& e) { return e.first == c; });
+    if (it == coatings.end()) it = coatings.insert(coatings.end(), {c, {}});
+    it->second.push_back(i + 1);
+  }
+  j["coatings"] = nlohmann::ordered_json::array();
+  for (const auto& [c, rows] : coatings)
+    j["coatings"].push_back({{"name", c->name()}, {"layers", c->Describe()}, {"surfaces", rows}});
   // The file's own metadata (native .lens files), where given.
   std::string design;
   auto add_design = [&](double v, const char* text, const char* key) {
@@ -141,6 +166,14 @@ int RunInfo(const LensArgs& a) {
   std::printf("  real back focus (smallest on-axis spot): %.4f mm\n", real_bfl);
   std::printf("  field of view on %gx%g mm (real chief rays): %.2f x %.2f deg, %.2f deg diagonal\n", sw, sh,
               fov.horizontal, fov.vertical, fov.diagonal);
+  std::printf("  on-axis transmittance at %.2f nm: %.1f%% (surface reflections %.1f%%, glass absorption %.1f%%)\n",
+              a.wavelength, 100 * transmittance.Total(), 100 * transmittance.surfaces, 100 * transmittance.glass);
+  if (coatings.empty()) std::printf("  coatings: none (bare glass)\n");
+  for (const auto& [c, rows] : coatings) {
+    std::string list;
+    for (int r : rows) list += fmt::format("{}{}", list.empty() ? "" : ", ", r);
+    std::printf("  coating %s on rows %s: %s\n", c->name().c_str(), list.c_str(), c->Describe().c_str());
+  }
   if (focus)
     std::printf("  focused at %.4g m from the film (unit focusing): back focus %.4f mm, object %.2f mm in front of the\n"
                 "  first vertex, magnification %.6f, working f-number %.3f\n",
@@ -182,6 +215,8 @@ std::function<int()> AddLensCommand(CLI::App& app) {
   info->add_option("--focus", args->focus_m, "Also focus on an object this many metres from the film (unit focusing)")
       ->check(CLI::PositiveNumber);
   info->add_option("--sensor", args->sensor, "Sensor size WIDTHxHEIGHT in mm for the field of view (default 36x24)");
+  info->add_option("--coating", args->coating,
+                   "Coat every air-glass surface so (none, MgF2[@NM], multi[@NM], I.xx, or one the lens file defines)");
   info->add_flag("--json", args->json, "Print the figures as a JSON object");
   CLI::App* plot = lens->add_subcommand("plot", "Draw the lens layout (elements, stop, ray fans) as SVG");
   plot->add_option("lens", args->lens, lens_help)->required();

@@ -8,6 +8,7 @@
 #include "camera/realistic_camera.h"
 #include "io/image_io.h"
 #include "io/loader_context.h"
+#include "optics/coating_library.h"
 #include "optics/paraxial.h"
 #include "optics/lens_file.h"
 
@@ -58,6 +59,16 @@ LensPrescription LoadSceneLens(const Properties& p, const GlassCatalog& glasses)
   }
 }
 
+// The coating property (optics/coating_library.h: Recoat).
+void RecoatAsAsked(const Properties& p, LensPrescription& lens) {
+  if (!p.Has("coating")) return;
+  try {
+    Recoat(lens, CoatingForLens(p.String("coating"), lens));
+  } catch (const InputError& e) {
+    throw ErrorAt(p.LocOf("coating"), "{}", e.what());
+  }
+}
+
 // The sensor's size; the image (its pixel aspect) takes the largest centred rectangle of it.
 Vec2d SensorSize(const Properties& p, int width, int height) {
   double w = 36, h = 24;
@@ -105,6 +116,7 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b
   spec.lens = LoadSceneLens(p, *b.glasses);
   // The prescription scaled as a whole to another focal length (radii, thicknesses, apertures).
   if (p.Has("focal_length")) spec.lens = ScaledToFocalLength(spec.lens, p.FloatIn("focal_length", 50, 1e-3, 1e6));
+  RecoatAsAsked(p, spec.lens);
   spec.model = p.Choice("lens_model", LensModel::kReal, kLensModels);
   if (p.Has("fnumber") && p.Has("aperture_diameter"))
     throw ErrorAt(p.LocOf("aperture_diameter"), "give either fnumber or aperture_diameter, not both");
@@ -128,9 +140,15 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b
   s.exposure_scale = p.FloatIn("exposure_scale", 1, 0, 1e30);
   s.vignetting = p.Choice("vignetting", Vignetting::kFull, kVignettingModes);
   s.transmission = p.Bool("transmission", true);
+  if (!s.transmission && p.Has("coating") && spec.model == LensModel::kReal)
+    spdlog::warn("{}:{}: coating does nothing with transmission false (the surfaces' losses are not applied)",
+                 p.LocOf("coating").file, p.LocOf("coating").line);
   // The ideal models have no glass and no rims: what only the real lens has is said to do nothing.
   if (spec.model != LensModel::kReal) {
     const char* model = spec.model == LensModel::kThick ? "thick" : "thin";
+    if (p.Has("coating"))
+      spdlog::warn("{}:{}: coating does nothing with lens_model '{}', which has no glass surfaces",
+                   p.LocOf("coating").file, p.LocOf("coating").line, model);
     if (p.Has("transmission"))
       spdlog::warn("{}:{}: transmission (the real lens's Fresnel and glass losses) does nothing with lens_model '{}', "
                    "which has no glass",
@@ -182,6 +200,7 @@ SensorRegistry::PluginType RealisticSensorPlugin() {
            {"exposure_scale", PropType::kFloat},
            {"vignetting", kVignettingModes},
            {"transmission", PropType::kBoolean},
+           {"coating", PropType::kString},
            {"aperture_mask", PropType::kString}},
           BuildLensCamera};
 }

@@ -2,7 +2,9 @@
 // (surfaces in the outer loop, rays in the inner loop, branch-free, so that the compiler
 // vectorises it),
 // each ray with its own wavelength (each glass's index is tabulated at 1 nm). It follows the
-// double-precision tracer (optics/lens_tracer.h) to well below 1e-4 mm at the film.
+// double-precision tracer (optics/lens_tracer.h) to well below 1e-4 mm at the film. Coated
+// surfaces' reflectances are tabulated over wavelength and angle from the lens's own
+// (LensSystem::SurfaceReflectance).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -27,8 +29,11 @@ struct RayBatch {
   bool record_stop = false;
   std::vector<float> stop_x, stop_y;
   // Scratch for the tracer: per medium and ray, the index and absorption coefficient at the
-  // ray's wavelength; per ray, the optical depth crossed.
+  // ray's wavelength; per ray, the optical depth crossed; for coated surfaces, per ray, the
+  // row of the coatings' tables at its wavelength, the weight of the next row, and cos(incidence).
   std::vector<float> media_index, media_alpha, depth;
+  std::vector<int32_t> coat_row;
+  std::vector<float> coat_weight, coat_cos;
   void Resize(size_t n);
   size_t Size() const { return ox.size(); }
   void Push(const FloatRay& r) {  // appended alive
@@ -60,6 +65,7 @@ class BatchLensTracer {
     bool plane, aspheric, is_stop;
     float a2, a[7];
     int medium_after;            // glass index (-1: air); its tables are at medium_after + 1
+    int coating;                 // -1: bare (Fresnel's equations inline); else coating_tables_[2 coating + toward object]
   };
   void Trace(RayBatch& rays, bool from_film, bool transmission) const;
 
@@ -67,6 +73,9 @@ class BatchLensTracer {
   // Per medium (air first), 360..830 nm at 1 nm: index, absorption coefficient per mm.
   std::vector<std::vector<float>> index_tables_, absorption_tables_;
   std::vector<uint8_t> constant_index_;  // per medium: the same index at every wavelength
+  // Per coated surface and direction (toward the film, toward the object): its reflectance
+  // over wavelength (rows) and cos(incidence) (columns).
+  std::vector<std::vector<float>> coating_tables_;
   bool absorbing_ = false;               // any glass absorbs somewhere in the range
   float film_z_;
   // The opening, where not round (the circle is tested inline), and the stop's radius.

@@ -41,6 +41,13 @@ Glass Glass::Constant(double n) {
   return g;
 }
 
+Glass Glass::Named(std::string name, std::string catalog) const {
+  Glass g = *this;
+  g.name_ = std::move(name);
+  g.catalog_ = std::move(catalog);
+  return g;
+}
+
 double Glass::Index(double lambda_nm) const {
   double l = lambda_nm * 1e-3;
   switch (kind_) {

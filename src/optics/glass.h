@@ -23,6 +23,8 @@ class Glass {
   // formula 2).
   static Glass Sellmeier(const std::array<double, 3>& b, const std::array<double, 3>& c);
   static Glass Constant(double n);
+  // The same index model under another name (coating materials: "MgF2" in catalog "COATING").
+  Glass Named(std::string name, std::string catalog) const;
 
   double Index(double lambda_nm) const;
   // Internal transmittance through `thickness_mm` of glass (1 where the catalog has no data):

@@ -11,6 +11,7 @@
 #include "base/error.h"
 #include "base/log.h"
 #include "base/text_file.h"
+#include "optics/coating_library.h"
 #include "optics/glass_catalog.h"
 #include "optics/pbrt_lens.h"
 #include "optics/zemax_lens.h"
@@ -42,6 +43,42 @@ std::shared_ptr<const Glass> ParseMedium(const std::string& m, const GlassCatalo
   return std::shared_ptr<const Glass>(std::shared_ptr<const Glass>(), g);
 }
 
+// The coatings a lens file defines (`coating NAME ...` lines), and which of them it used.
+struct FileCoatings {
+  struct Defined {
+    std::shared_ptr<const Coating> coating;
+    int line;
+    bool used = false;
+  };
+  std::vector<Defined> defined;
+
+  void Define(const std::vector<std::string>& f, const GlassCatalog& glasses, const std::string& path, int line) {
+    if (f.size() < 3) throw MakeInputError(path, line, "a coating line is: coating NAME [design=NM] MATERIAL:THICKNESS...");
+    const std::string& name = f[1];
+    if (FindBuiltInCoating(name)) throw MakeInputError(path, line, "coating '{}' is built in; give yours another name", name);
+    for (const Defined& d : defined)
+      if (d.coating->name() == name) throw MakeInputError(path, line, "coating '{}' is defined twice (first on line {})", name, d.line);
+    defined.push_back({ParseCoatingDefinition(name, std::span(f).subspan(2), glasses, path, line), line});
+  }
+  // A coating by name: the file's, then the built-in ones (null: none/uncoated).
+  std::shared_ptr<const Coating> Find(const std::string& name, const std::string& path, int line) {
+    for (Defined& d : defined)
+      if (d.coating->name() == name) {
+        d.used = true;
+        return d.coating;
+      }
+    if (std::optional<std::shared_ptr<const Coating>> c = FindBuiltInCoating(name)) return *c;
+    std::string mine;
+    for (const Defined& d : defined) mine += (mine.empty() ? "" : ", ") + d.coating->name();
+    throw MakeInputError(path, line, "unknown coating '{}' (built in: {}{}{}; a coating line must define it before use)",
+                         name, BuiltInCoatingNames(), mine.empty() ? "" : "; defined in this file: ", mine);
+  }
+  void WarnUnused(const std::string& path) const {
+    for (const Defined& d : defined)
+      if (!d.used) spdlog::warn("{}:{}: coating '{}' is defined but no surface uses it", path, d.line, d.coating->name());
+  }
+};
+
 }  // namespace
 
 LensPrescription ParseNativeLens(const std::string& text, const std::string& path, const GlassCatalog& glasses) {
@@ -51,7 +88,9 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
   std::istringstream lines(text);
   std::string line;
   int number = 0, stop_line = 0, last_line = 0;
-  std::string coated;  // the surfaces with a coating, for one warning
+  FileCoatings coatings;
+  std::shared_ptr<const Coating> default_coating;
+  std::vector<size_t> explicitly_coated;  // surfaces with their own coating=
   while (std::getline(lines, line)) {
     ++number;
     if (size_t h = line.find('#'); h != std::string::npos) line.resize(h);
@@ -66,7 +105,12 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       else if (key == "focal_length") lens.design_focal_length = ParseFiniteNumber(value, path, number);
       else if (key == "fnumber") lens.design_fnumber = ParseFiniteNumber(value, path, number);
       else if (key == "image_circle") lens.image_circle = ParseFiniteNumber(value, path, number);
-      else throw MakeInputError(path, number, "unknown key '{}' (name, source, focal_length, fnumber, image_circle)", key);
+      else if (key == "default_coating") default_coating = coatings.Find(value, path, number);
+      else throw MakeInputError(path, number, "unknown key '{}' (name, source, focal_length, fnumber, image_circle, default_coating)", key);
+      continue;
+    }
+    if (f[0] == "coating") {
+      coatings.Define(f, glasses, path, number);
       continue;
     }
     LensSurface s;
@@ -90,7 +134,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       }
       next = 2;
     } else {
-      throw MakeInputError(path, number, "unknown line '{}' (surface, stop, or key: value)", f[0]);
+      throw MakeInputError(path, number, "unknown line '{}' (surface, stop, coating, or key: value)", f[0]);
     }
     s.thickness = ParseFiniteNumber(f[next], path, number);
     if (s.thickness < 0) throw MakeInputError(path, number, "thickness must not be negative");
@@ -105,8 +149,8 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       if (key == "k") {
         s.conic = ParseFiniteNumber(value, path, number);
       } else if (key == "coating") {
-        s.coating = value;
-        coated += fmt::format("{}surface {} (line {}, {})", coated.empty() ? "" : ", ", lens.surfaces.size() + 1, number, value);
+        s.coating = coatings.Find(value, path, number);
+        explicitly_coated.push_back(lens.surfaces.size());
       } else if (key.size() >= 2 && key[0] == 'a' && std::all_of(key.begin() + 1, key.end(), ::isdigit)) {
         std::optional<int> order = ParseIntegerIn(key.substr(1), 4, 16);
         if (!order || *order % 2) throw MakeInputError(path, number, "aspheric terms are a4, a6, ..., a16");
@@ -122,8 +166,14 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
   if (lens.surfaces.empty()) throw MakeInputError(path, 0, "no surfaces");
   if (!stop_line) throw MakeInputError(path, 0, "no stop line");
   if (lens.surfaces.back().medium) throw MakeInputError(path, last_line, "the last surface must leave the lens into air");
-  if (!coated.empty())
-    spdlog::warn("{}: coatings are not simulated yet; these surfaces are traced uncoated: {}", path, coated);
+  // The default on the other air-glass surfaces (a surface's own coating=none stays bare).
+  if (default_coating) {
+    std::vector<std::shared_ptr<const Coating>> own;
+    for (size_t i : explicitly_coated) own.push_back(lens.surfaces[i].coating);
+    CoatAirGlassSurfaces(lens, default_coating, true);
+    for (size_t k = 0; k < explicitly_coated.size(); ++k) lens.surfaces[explicitly_coated[k]].coating = own[k];
+  }
+  coatings.WarnUnused(path);
   return lens;
 }
 

@@ -87,3 +87,16 @@ LensPrescription LensPrescription::Scaled(double factor) const {
 }
 
 }  // namespace objektiv
+
+namespace objektiv {
+
+void CoatAirGlassSurfaces(LensPrescription& lens, const std::shared_ptr<const Coating>& coating, bool only_bare) {
+  for (size_t i = 0; i < lens.surfaces.size(); ++i) {
+    LensSurface& s = lens.surfaces[i];
+    const bool glass_before = i > 0 && lens.surfaces[i - 1].medium, glass_after = bool(s.medium);
+    if (glass_before == glass_after) continue;  // air on both sides, or cemented
+    if (!only_bare || !s.coating) s.coating = coating;
+  }
+}
+
+}  // namespace objektiv

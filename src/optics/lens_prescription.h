@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "optics/coating.h"
 #include "optics/glass.h"
 
 namespace objektiv {
@@ -18,7 +19,9 @@ struct LensSurface {
   double conic = 0;           // k: 0 sphere, -1 paraboloid
   std::array<double, 7> aspheric{};  // even aspheric coefficients a4, a6, ..., a16
   double a2 = 0;              // r^2 aspheric term (Zemax EVENASPH PARM 1); adds 2 a2 to the paraxial curvature
-  std::string coating;        // anti-reflection coating name (empty: uncoated)
+  // Anti-reflection coating (optics/coating.h); null: bare. It lies on the surface's glass: on
+  // the side of the glass where the other side is air, on the film side between two glasses.
+  std::shared_ptr<const Coating> coating;
   // Medium after this surface (towards the film); null means air.
   std::shared_ptr<const Glass> medium;
 
@@ -55,6 +58,10 @@ struct LensPrescription {
 
 // Throws InputError "PATH:LINE: ..." if the surface's semi-diameter lies beyond the largest a
 // conic surface reaches before its sag turns over: r^2 (1+k) c^2 < 1 (for every reader).
+// Every surface between air and glass gets `coating` (null: bare); with `only_bare`, only
+// those without one yet (a lens-wide default). Cemented surfaces keep theirs.
+void CoatAirGlassSurfaces(LensPrescription& lens, const std::shared_ptr<const Coating>& coating, bool only_bare);
+
 void CheckReachable(const LensSurface& s, const std::string& path, int line);
 
 }  // namespace objektiv

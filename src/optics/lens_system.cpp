@@ -3,15 +3,27 @@
 #include <algorithm>
 
 #include "optics/dispersion.h"
+#include "optics/lens_tracer.h"
 
 namespace objektiv {
 
 LensSystem::LensSystem(LensPrescription prescription)
     : prescription_(std::move(prescription)), stop_index_(prescription_.StopIndex()) {
   double z = 0;
-  for (const LensSurface& s : prescription_.surfaces) {
+  const std::vector<LensSurface>& surfaces = prescription_.surfaces;
+  for (size_t i = 0; i < surfaces.size(); ++i) {
+    const LensSurface& s = surfaces[i];
     vertex_z_.push_back(z);
     z += s.thickness;
+    // The coating lies on the glass: facing the object unless only the object side is glass.
+    const std::shared_ptr<const Glass>& before = i > 0 ? surfaces[i - 1].medium : nullptr;
+    const bool outer_faces_object = !(before && !s.medium);
+    outer_faces_object_.push_back(outer_faces_object);
+    if (s.coating && before != s.medium)
+      coated_.emplace_back(std::in_place, s.coating, outer_faces_object ? before : s.medium,
+                           outer_faces_object ? s.medium : before);
+    else
+      coated_.emplace_back();
   }
   film_z_ = z;
   stop_semi_ = FullStopSemiDiameter();
@@ -30,6 +42,13 @@ void LensSystem::SetStopSemiDiameter(double mm) {
 
 ParaxialData LensSystem::Paraxial(double lambda_nm) const {
   return lambda_nm == kLambdad ? paraxial_ : ComputeParaxial(prescription_, lambda_nm, stop_semi_);
+}
+
+double LensSystem::SurfaceReflectance(int i, double lambda_nm, double cos_i, bool toward_film) const {
+  const double n_object = i > 0 ? surface(i - 1).IndexAfter(lambda_nm) : 1.0, n_film = surface(i).IndexAfter(lambda_nm);
+  if (n_object == n_film) return 0;
+  if (coated_[i]) return coated_[i]->Reflectance(lambda_nm, cos_i, toward_film == outer_faces_object_[i]);
+  return toward_film ? FresnelReflectance(n_object, n_film, cos_i) : FresnelReflectance(n_film, n_object, cos_i);
 }
 
 bool LensSystem::InsideStop(double x, double y) const {

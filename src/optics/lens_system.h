@@ -2,13 +2,15 @@
 // shape of its opening) and its film placed (the back focus: last vertex to film), with the
 // first-order data of that arrangement computed once, when the stop changes. Everything that
 // traces or analyses a lens takes one: the exact and batch tracers, the pupil bounds,
-// focusing, the f-number and the real-ray analyses; coatings, ghosts and diffraction will
-// hang off it. optics/lens_setup.h builds one as a camera or `objektiv lens` asks for it.
+// focusing, the f-number and the real-ray analyses; each surface's reflectance (bare, or
+// through its coating) for the transmission and the ghosts. optics/lens_setup.h builds one as a camera or `objektiv lens` asks for it.
 //
 // Lens space: millimetres, z along the axis toward the film, the first vertex at z = 0.
 #pragma once
+#include <optional>
 #include <vector>
 
+#include "optics/coating.h"
 #include "optics/lens_prescription.h"
 #include "optics/paraxial.h"
 #include "optics/stop_shape.h"
@@ -42,6 +44,14 @@ class LensSystem {
   double VertexZ(int i) const { return vertex_z_[i]; }
   double FilmZ() const { return film_z_; }
 
+  // Unpolarised reflectance of surface i for light crossing it toward the film (or toward the
+  // object) at cos_i (in the medium it comes from): Fresnel's where the surface is bare, the
+  // thin-film stack's where coated; 0 where the media on both sides are the same, 1 beyond
+  // the critical angle.
+  double SurfaceReflectance(int i, double lambda_nm, double cos_i, bool toward_film) const;
+  // The coating as it lies on surface i, or null (bare, or no change of medium there).
+  const CoatedInterface* Coated(int i) const { return coated_[i] ? &*coated_[i] : nullptr; }
+
   // First-order data at the d line, object at infinity, for the stop as set.
   const ParaxialData& paraxial() const { return paraxial_; }
   // The same at another wavelength (computed on each call; the d line's is kept).
@@ -53,6 +63,10 @@ class LensSystem {
  private:
   LensPrescription prescription_;
   std::vector<double> vertex_z_;
+  // Per surface: its coating as laid on it, and whether the coating's outer side faces the
+  // object (its glass on the film side).
+  std::vector<std::optional<CoatedInterface>> coated_;
+  std::vector<bool> outer_faces_object_;
   int stop_index_ = -1;
   double film_z_ = 0, stop_semi_ = 0;
   StopShape stop_shape_;

@@ -127,8 +127,8 @@ TraceResult Trace(const LensSystem& lens, const LensRay& in, double lambda_nm, b
     Vec3d nrm = Normal(s, p);
     if (Dot(nrm, ray.d) > 0) nrm = -nrm;
     double eta = n1 / n2, cos_i = -Dot(nrm, ray.d);
-    double reflectance = FresnelReflectance(n1, n2, cos_i);
-    result.fresnel_transmittance *= 1 - reflectance;
+    double reflectance = lens.SurfaceReflectance(i, lambda_nm, cos_i, !from_film);
+    result.surface_transmittance *= 1 - reflectance;
     if (events) events->push_back({i, reflectance, cos_i});
     double k2 = 1 - eta * eta * (1 - cos_i * cos_i);
     if (k2 < 0) {

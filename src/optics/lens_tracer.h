@@ -20,16 +20,17 @@ struct TraceResult {
   std::optional<LensRay> ray;  // the ray after the last surface traced, if it got through
   TraceFailure failure = TraceFailure::kNone;
   int surface = -1;            // where it failed
-  // Fraction of the light that gets through: the product of the Fresnel transmittances
-  // (1 - R, unpolarised, uncoated) at every refracting surface and of the glasses' internal
-  // transmittances along the path (Beer-Lambert, from the catalogs' IT data).
-  double fresnel_transmittance = 1, internal_transmittance = 1;
+  // Fraction of the light that gets through: the product of the surfaces' transmittances
+  // (1 - R, unpolarised: Fresnel's where bare, the coating's where coated) at every refracting
+  // surface and of the glasses' internal transmittances along the path (Beer-Lambert, from
+  // the catalogs' IT data).
+  double surface_transmittance = 1, internal_transmittance = 1;
 };
 
 // What happened at each refracting surface a ray crossed (for ghosts and diagnostics).
 struct SurfaceEvent {
   int surface;
-  double reflectance;  // unpolarised Fresnel reflectance there (uncoated)
+  double reflectance;  // unpolarised reflectance there (LensSystem::SurfaceReflectance)
   double cos_incidence;
 };
 
@@ -38,7 +39,7 @@ struct SurfaceEvent {
 double FresnelReflectance(double n1, double n2, double cos_i);
 
 // From the object side through every surface toward the film. `path`, if given, receives
-// the point where the ray meets each surface it reaches (for plots); `events` the Fresnel
+// the point where the ray meets each surface it reaches (for plots); `events` the
 // reflectance at each refracting surface crossed.
 TraceResult TraceFromObject(const LensSystem& lens, const LensRay& ray, double lambda_nm,
                             std::vector<Vec3d>* path = nullptr, std::vector<SurfaceEvent>* events = nullptr);

@@ -292,4 +292,10 @@ std::optional<double> LongitudinalAberration(const LensSystem& lens, double heig
   return (z - last) - p.bfl;
 }
 
+AxialTransmittance AxialTransmittanceOf(const LensSystem& lens, double lambda_nm) {
+  TraceResult r = TraceFromObject(lens, {{0, 0, -1}, {0, 0, 1}}, lambda_nm);
+  if (!r.ray) return {};
+  return {r.surface_transmittance, r.internal_transmittance};
+}
+
 }  // namespace objektiv

@@ -36,6 +36,14 @@ Spot SpotDiagram(const LensSystem& lens, double field_deg, double lambda_nm, int
 // (distortion). For a thin lens with the stop at the lens this is the cos^4 law.
 std::optional<double> RelativeIllumination(const LensSystem& lens, double field_deg, double lambda_nm);
 
+// How much of the light entering along the axis reaches the film: the surfaces' share (their
+// reflection losses, bare or coated) and the glasses' (absorption), at one wavelength.
+struct AxialTransmittance {
+  double surfaces = 0, glass = 0;
+  double Total() const { return surfaces * glass; }
+};
+AxialTransmittance AxialTransmittanceOf(const LensSystem& lens, double lambda_nm);
+
 struct FieldCurvature {
   double tangential = 0, sagittal = 0;  // focus positions relative to the film, along the axis (mm)
 };

@@ -11,13 +11,15 @@
 #include "base/error.h"
 #include "base/log.h"
 #include "base/text_file.h"
+#include "optics/coating_library.h"
 #include "optics/glass_catalog.h"
 
 namespace objektiv {
 namespace {
 
 struct ZSurface {
-  int line = 0, glass_line = 0;
+  int line = 0, glass_line = 0, coat_line = 0;
+  std::string coat;  // COAT: a coating name (Zemax's COATING.DAT or I.xx)
   std::string type = "STANDARD";
   double curv = 0, disz = 0, diam = 0, coni = 0;
   bool stop = false, infinite_thickness = false;
@@ -134,6 +136,10 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
         cur->model_nd = ParseFiniteNumber(f[3], path, number);
         cur->model_vd = ParseFiniteNumber(f[4], path, number);
       }
+    } else if (key == "COAT") {
+      need(1);
+      cur->coat = f[0];
+      cur->coat_line = number;
     } else if (key == "PARM") {
       need(2);
       std::optional<int> k = ParseIntegerIn(f[0], 1, 8);
@@ -181,6 +187,14 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
       } else {
         throw MakeInputError(path, z.glass_line, "unknown glass '{}'", z.glass);
       }
+    }
+    if (!z.coat.empty()) {
+      // Zemax's MGF2 is a quarter wave of MgF2, as ours; its other COATING.DAT stacks are not known here.
+      if (std::optional<std::shared_ptr<const Coating>> c = FindBuiltInCoating(z.coat))
+        s.coating = *c;
+      else
+        spdlog::warn("{}:{}: coating {} is unknown (known: {}); the surface is traced bare", path, z.coat_line, z.coat,
+                     BuiltInCoatingNames());
     }
     CheckReachable(s, path, z.line);
     if (z.stop) {
