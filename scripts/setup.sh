@@ -9,7 +9,7 @@ packages=(
   build-essential cmake ninja-build pkg-config make
   libembree-dev libtbb-dev libopenimageio-dev openimageio-tools libopenexr-dev
   libpugixml-dev libtinyobjloader-dev libassimp-dev
-  libcli11-dev libfmt-dev libspdlog-dev nlohmann-json3-dev
+  libcli11-dev libfmt-dev libspdlog-dev nlohmann-json3-dev libfftw3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )
 [[ ${1:-} == --sanitizers ]] && packages+=(clang libclang-rt-14-dev llvm)

@@ -8,7 +8,9 @@
 #include "base/error.h"
 #include "base/output_file.h"
 #include "io/lens_analysis.h"
+#include "io/image_io.h"
 #include "io/lens_plot.h"
+#include "io/lens_psf.h"
 #include "optics/coating_library.h"
 #include "optics/dispersion.h"
 #include "optics/focusing.h"
@@ -27,6 +29,12 @@ struct LensArgs {
   double focus_m = 0;  // 0: infinity
   std::string sensor = "36x24";
   std::string coating;  // every air-glass surface's, instead of the file's
+  // lens psf
+  double fnumber = 0;          // 0: wide open
+  double psf_wavelength = 0;   // 0: white light
+  int blades = 0, size = 256;
+  double blade_curvature = 0, blade_rotation = 0;
+  double pixel_um = 0;         // 0: a quarter of lambda N (550 nm for white light)
   bool json = false;
 };
 
@@ -199,6 +207,57 @@ int RunPlot(const LensArgs& a) {
   return 0;
 }
 
+// The stop's diffraction pattern at the f-number asked for (set as a scene sets it: the
+// radiometric f-number, which is the working f-number for an object at infinity).
+int RunPsf(const LensArgs& a) {
+  try {
+    CheckOutputFile(a.output);
+  } catch (const InputError& e) {
+    throw CLI::ValidationError(fmt::format("the PSF cannot be written: {}", e.what()));
+  }
+  if (a.blades == 1 || a.blades == 2) throw CLI::ValidationError("--blades", "blades must be 0 (round) or at least 3");
+  const StopShape opening = StopShape::Iris(a.blades, a.blade_curvature, a.blade_rotation * M_PI / 180);
+  LensSetup setup = [&] {
+    try {
+      return SetUpLens(LoadLens(a.lens, GlassCatalog::Default()), {a.fnumber, 0, opening}, {INFINITY, FocusRequest::From::kFilm, false});
+    } catch (const InputError& e) {
+      if (a.fnumber > 0) throw CLI::ValidationError("--fnumber", e.what());
+      throw;
+    }
+  }();
+  const double n = setup.fnumber;
+  const double reference_nm = a.psf_wavelength > 0 ? a.psf_wavelength : 550.0;
+  const double pitch = a.pixel_um > 0 ? a.pixel_um : reference_nm * 1e-3 * n / 4;
+  const PupilFunction pupil = [&opening](double u, double v) { return opening.Contains(u, v) ? 1.0 : 0.0; };
+  Image image;
+  try {
+    image = DiffractionImage(pupil, n, a.psf_wavelength > 0 ? std::optional<double>(a.psf_wavelength) : std::nullopt, pitch, a.size);
+  } catch (const std::invalid_argument& e) {
+    throw CLI::ValidationError("--size/--pixel", e.what());
+  }
+  WriteExr(a.output, image);
+  const double ring = FirstDarkRingUm(pupil, reference_nm, n);
+  nlohmann::ordered_json j = {{"lens", setup.lens.prescription().name},
+                              {"fnumber", n},
+                              {"wavelength_nm", a.psf_wavelength > 0 ? nlohmann::ordered_json(a.psf_wavelength) : nlohmann::ordered_json("white (D65, 400-700 nm)")},
+                              {"blades", a.blades},
+                              {"pixel_um", pitch},
+                              {"size", a.size},
+                              {"first_dark_ring_um", ring},
+                              {"first_dark_ring_wavelength_nm", reference_nm},
+                              {"output", a.output}};
+  if (a.json) {
+    std::printf("%s\n", j.dump(2).c_str());
+  } else {
+    std::printf("%s at f/%.3g, %s: %d x %d pixels of %.4g um -> %s\n", setup.lens.prescription().name.c_str(), n,
+                a.psf_wavelength > 0 ? fmt::format("{:g} nm", a.psf_wavelength).c_str() : "white light", a.size, a.size,
+                pitch, a.output.c_str());
+    std::printf("  first dark ring (azimuthal mean) at %.3f um for %g nm (1.22 lambda N = %.3f um)\n", ring, reference_nm,
+                1.22 * reference_nm * 1e-3 * n);
+  }
+  return 0;
+}
+
 }  // namespace
 
 std::function<int()> AddLensCommand(CLI::App& app) {
@@ -229,8 +288,22 @@ std::function<int()> AddLensCommand(CLI::App& app) {
       "analyze", "Real-ray analysis: spot diagrams, distortion, field curvature, relative illumination, colour (SVG + JSON)");
   analyze->add_option("lens", args->lens, lens_help)->required();
   analyze->add_option("-o,--output", args->output, "Output directory")->required();
-  return [args, list, plot, analyze] {
+  CLI::App* psf = lens->add_subcommand("psf", "The stop's diffraction pattern (Fraunhofer PSF) as an EXR, with its first dark ring");
+  psf->add_option("lens", args->lens, lens_help)->required();
+  psf->add_option("-o,--output", args->output, "Output EXR file")->required();
+  psf->add_option("--fnumber", args->fnumber, "f-number, as a scene sets it (default: wide open)")->check(CLI::Range(0.1, 1e4));
+  psf->add_option("--wavelength", args->psf_wavelength, "One wavelength in nm (default: white light, 400-700 nm)")
+      ->check(CLI::Range(300.0, 2500.0));
+  psf->add_option("--blades", args->blades, "Iris blades (0: round)")->check(CLI::Range(0, 64));
+  psf->add_option("--blade-curvature", args->blade_curvature, "0 straight .. 1 round")->check(CLI::Range(0.0, 1.0));
+  psf->add_option("--blade-rotation", args->blade_rotation, "Degrees from +x to the iris's first corner");
+  psf->add_option("--pixel", args->pixel_um, "Pixel pitch in micrometres on the sensor (default: lambda N / 4)")
+      ->check(CLI::Range(1e-3, 1e4));
+  psf->add_option("--size", args->size, "Pixels per side (default 256)")->check(CLI::Range(1, 4096));
+  psf->add_flag("--json", args->json, "Print the figures as a JSON object");
+  return [args, list, plot, analyze, psf] {
     if (list->parsed()) return RunList();
+    if (psf->parsed()) return RunPsf(*args);
     if (plot->parsed()) return RunPlot(*args);
     if (analyze->parsed()) return RunAnalyze(*args);
     return RunInfo(*args);
