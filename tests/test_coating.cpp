@@ -187,10 +187,18 @@ TEST(CoatedLens, FileDefinesDefaultsAndOverrides) {
   EXPECT_EQ(system.SurfaceReflectance(3, 600, 1, true), 0);  // air on both sides
 }
 
-TEST(CoatedLens, UnusedDefinitionIsWarnedWithItsLine) {
+TEST(CoatedLens, CoatingsThatDoNothingAreWarnedWithTheirLines) {
   test::LogCapture log;
-  ParseNativeLens("coating spare MgF2:0.25\nstop 1 air 4\nsurface 50 3 N-BK7 6\nsurface inf 40 air 6\n", "u.lens", Glasses());
+  LensPrescription lens = ParseNativeLens(
+      "coating spare MgF2:0.25\ndefault_coating: multi\nsurface inf 1 air 6 coating=MgF2\nstop 1 air 4\n"
+      "surface 50 3 N-BK7 6 coating=I.98\nsurface inf 40 air 6 coating=none\n",
+      "u.lens", Glasses());
   EXPECT_TRUE(log.Has("u.lens:1: coating 'spare' is defined but no surface uses it")) << log.Text();
+  EXPECT_TRUE(log.Has("u.lens:3: coating 'MgF2' does nothing here: the medium is the same on both sides")) << log.Text();
+  EXPECT_TRUE(log.Has("u.lens:2: default_coating 'multi' coats no surface")) << log.Text();
+  // A coating the file defines is there to be chosen, used or not, whatever its case.
+  ASSERT_EQ(lens.defined_coatings.size(), 1u);
+  EXPECT_EQ(CoatingForLens("SPARE", lens)->name(), "spare");
 }
 
 TEST(CoatedLens, BadCoatingsNameTheFileAndLine) {
@@ -207,7 +215,10 @@ TEST(CoatedLens, BadCoatingsNameTheFileAndLine) {
       {"coating X matched:0.25 MgF2:0.25\n", "u.lens:1: coating 'X': a matched layer"},
       {"coating X\n", "u.lens:1: a coating line is"},
       {"coating multi MgF2:0.25\n", "u.lens:1: coating 'multi' is built in"},
-      {"coating X MgF2:0.25\ncoating X SiO2:0.25\n", "u.lens:2: coating 'X' is defined twice (first on line 1)"},
+      {"coating X MgF2:0.25\ncoating X SiO2:0.25\n", "u.lens:2: coating 'X' is defined twice (first on line 1"},
+      {"coating Foo MgF2:0.25\ncoating foo SiO2:0.25\n", "u.lens:2: coating 'foo' is defined twice (first on line 1"},
+      {"coating X design=500 design=600 MgF2:0.25\n", "u.lens:1: design= is given twice"},
+      {"default_coating: MgF2\ndefault_coating: multi\n", "u.lens:2: default_coating is given twice (first on line 1)"},
       {"default_coating: Y\n", "u.lens:1: unknown coating 'Y'"},
   };
   for (const Case& c : cases) {
@@ -217,6 +228,12 @@ TEST(CoatedLens, BadCoatingsNameTheFileAndLine) {
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find(c.message), std::string::npos) << e.what();
     }
+  }
+  try {
+    ParseNativeLens("stop 1 air 4\nsurface 50 3 N-BK7 6 coating=MgF2 coating=multi\nsurface inf 40 air 6\n", "u.lens", Glasses());
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("u.lens:2: option 'coating' is given twice"), std::string::npos) << e.what();
   }
   try {
     ParseNativeLens("stop 1 air 4\nsurface 50 3 N-BK7 6 coating=Y\nsurface inf 40 air 6\n", "u.lens", Glasses());
@@ -310,6 +327,24 @@ TEST(CoatedLens, CoatedCameraIsBrighterByTheAxialTransmittance) {
     const double ratio_t = axial(coated) / bare_t, ratio_e = irradiance(coated) / bare_e;
     EXPECT_GT(ratio_t, 1.4) << coating;
     EXPECT_NEAR(ratio_e, ratio_t, 0.01 * ratio_t) << coating;
+  }
+}
+
+TEST(CoatedLens, ConstantIndexGlassKeepsTheCoatingsColour) {
+  // Glass without dispersion sends every wavelength of a sample along one path, but a coating
+  // still transmits each differently: the camera keeps only the hero wavelength (whose
+  // transmittance it traced). Carrying the others at the hero's transmittance made every
+  // coated .dat lens grey and too dark.
+  LensCameraSpec s;
+  s.lens = ParseNativeLens("surface 50 3 n=1.9 10\nstop 1 air 8\nsurface inf 45 air 10\n", "c.lens", Glasses());
+  s.fnumber = 8;
+  for (const char* coating : {"none", "MgF2@700"}) {
+    Recoat(s.lens, CoatingForLens(coating, s.lens));
+    auto camera = MakeLensCamera(Transform(), 11, 11, s);
+    SampledWavelengths l = SampledWavelengths::SampleVisible(0.3f);
+    auto r = camera->GenerateRay({Vec2f(5.5f, 5.5f), Vec2f(0.4f, 0.6f)}, l);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(l.SecondaryTerminated(), std::string(coating) != "none") << coating;
   }
 }
 

@@ -44,6 +44,25 @@ TEST(Diffraction, AiryPeakAndTotalAreThePhysicalOnes) {
   EXPECT_GT(coarse.At(21, 21), 0.85);  // the central pixel holds the Airy disc
 }
 
+TEST(Diffraction, PixelsHoldTheLightOverTheirWholeArea) {
+  // Pixels as wide as half the Airy disc: the centre pixel holds the Airy pattern integrated
+  // over its square (by quadrature of 2 J1(v) / v squared here), not its peak times its area.
+  const double lambda = 0.55, n = 4, pitch = 1.1;
+  PsfImage psf = FraunhoferPsf(Opening(StopShape()), lambda * 1e3, n, pitch, 33);
+  const int q = 400;
+  double sum = 0;
+  for (int j = 0; j < q; ++j)
+    for (int i = 0; i < q; ++i) {
+      const double x = ((i + 0.5) / q - 0.5) * pitch, y = ((j + 0.5) / q - 0.5) * pitch;
+      const double v = M_PI * std::hypot(x, y) / (lambda * n);
+      const double a = v < 1e-9 ? 1 : 2 * std::cyl_bessel_j(1.0, v) / v;
+      sum += a * a;
+    }
+  const double expected = sum * M_PI / (4 * lambda * lambda * n * n) * (pitch / q) * (pitch / q);
+  EXPECT_NEAR(psf.At(16, 16), expected, 0.005 * expected);
+  EXPECT_NEAR(expected, 0.1773, 0.001);  // well below the peak times the area (0.197)
+}
+
 // The number of spikes: peaks of the light's distribution over direction (1 degree bins) in
 // the annulus 14..20 lambda N from the axis that stand above a third of the strongest and
 // twice the median (a spike's side lobes hold a few percent of it), the highest within 5

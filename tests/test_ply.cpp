@@ -129,6 +129,13 @@ TEST(Ply, BrokenFilesAreErrors) {
       {"long_row.ply", head + "0 0 0 7\n1 0 0\n0 1 0\n3 0 1 2\n", ":10: more values on the line than a record holds"},
       {"uchar_count.ply", head + verts + "300 0 1 2\n", "'300' is not a list length from 0 to 255"},
       {"trailing.ply", head + verts + "3 0 1 2\n5 5\n", ":14: values after the last record"},
+      // Found by the fuzzer (fuzz/regressions/mesh_ply/crash-*, oom-68ac55b4a8e4): a second format
+      // line, or names with bytes outside printable ASCII, and Assimp read another layout than
+      // the check had passed (one took 6 GB).
+      {"two_formats.ply", "ply\nformat ascii 1.0\nformat binary_big_endian 1.0\nend_header\n", ":3: a second format line"},
+      {"late_format.ply", "ply\nelement vertex 1\nformat ascii 1.0\nend_header\n", ":2: the format line must follow 'ply'"},
+      {"odd_name.ply", "ply\nformat ascii 1.0\nelement ve\xdf\xdfrtex 1\nproperty float x\nend_header\n1\n",
+       ":3: a header line with a byte that is not printable ASCII"},
   };
   for (const Bad& b : cases) {
     fs::path p = WritePly(b.name, b.bytes);

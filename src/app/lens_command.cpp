@@ -6,9 +6,11 @@
 
 #include "app/commands.h"
 #include "base/error.h"
+#include "base/log.h"
 #include "base/output_file.h"
 #include "io/lens_analysis.h"
 #include "io/image_io.h"
+#include "io/lens_ghosts.h"
 #include "io/lens_plot.h"
 #include "io/lens_psf.h"
 #include "optics/coating_library.h"
@@ -28,10 +30,12 @@ struct LensArgs {
   double wavelength = kLambdad;
   double focus_m = 0;  // 0: infinity
   std::string sensor = "36x24";
-  std::string coating;  // every air-glass surface's, instead of the file's
-  // lens psf
+  std::optional<std::string> coating;  // every air-glass surface's, instead of the file's
+  // lens psf, lens ghosts
   double fnumber = 0;          // 0: wide open
   double psf_wavelength = 0;   // 0: white light
+  double field = 10, azimuth = 0;  // degrees: where the bright point lies
+  int width = 768, grid = 64;
   int blades = 0, size = 256;
   double blade_curvature = 0, blade_rotation = 0;
   double pixel_um = 0;         // 0: a quarter of lambda N (550 nm for white light)
@@ -49,15 +53,19 @@ std::pair<double, double> ParseSensor(const std::string& s) {
 
 // The lens commands describe imaging lenses (an afocal system has no finite first-order data),
 // set up as AtParaxialInfinityFocus takes them: fully open, at the paraxial focus.
-LensSystem LoadImagingLens(const std::string& name, double lambda_nm, const std::string& coating = "") {
-  LensPrescription lens = LoadLens(name, GlassCatalog::Default());
-  if (!coating.empty()) {
-    try {
-      Recoat(lens, CoatingForLens(coating, lens));
-    } catch (const InputError& e) {  // a bad command-line value: exit status 2
-      throw CLI::ValidationError("--coating", e.what());
-    }
+// --coating: every air-glass surface coated so (nothing asked: as the file says).
+void Recoat(LensPrescription& lens, const std::optional<std::string>& coating) {
+  if (!coating) return;
+  try {
+    Recoat(lens, CoatingForLens(*coating, lens));
+  } catch (const InputError& e) {  // a bad command-line value: exit status 2
+    throw CLI::ValidationError("--coating", e.what());
   }
+}
+
+LensSystem LoadImagingLens(const std::string& name, double lambda_nm, const std::optional<std::string>& coating = {}) {
+  LensPrescription lens = LoadLens(name, GlassCatalog::Default());
+  Recoat(lens, coating);
   double efl = ComputeParaxial(lens, lambda_nm).efl;
   if (!std::isfinite(efl) || std::abs(efl) > 1e12)
     throw InputError(fmt::format("{}: the lens has no optical power (afocal): it forms no image", name));
@@ -131,7 +139,7 @@ int RunInfo(const LensArgs& a) {
   for (int i = 0; i < system.SurfaceCount(); ++i) {
     const std::shared_ptr<const Coating>& c = lens.surfaces[i].coating;
     if (!c || !system.Coated(i)) continue;
-    auto it = std::find_if(coatings.begin(), coatings.end(), [&](const auto& e) { return e.first == c; });
+    auto it = std::find_if(coatings.begin(), coatings.end(), [&](const auto& e) { return e.first->name() == c->name(); });
     if (it == coatings.end()) it = coatings.insert(coatings.end(), {c, {}});
     it->second.push_back(i + 1);
   }
@@ -180,7 +188,7 @@ int RunInfo(const LensArgs& a) {
   for (const auto& [c, rows] : coatings) {
     std::string list;
     for (int r : rows) list += fmt::format("{}{}", list.empty() ? "" : ", ", r);
-    std::printf("  coating %s on rows %s: %s\n", c->name().c_str(), list.c_str(), c->Describe().c_str());
+    std::printf("  coating %s on row%s %s: %s\n", c->name().c_str(), rows.size() > 1 ? "s" : "", list.c_str(), c->Describe().c_str());
   }
   if (focus)
     std::printf("  focused at %.4g m from the film (unit focusing): back focus %.4f mm, object %.2f mm in front of the\n"
@@ -207,24 +215,80 @@ int RunPlot(const LensArgs& a) {
   return 0;
 }
 
+// An EXR output (the pictures' values are linear fractions of the light: no other format
+// keeps them) that can be written; else a bad command-line value (exit status 2).
+void CheckExrOutput(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".exr") throw CLI::ValidationError("-o", fmt::format("'{}': the output is an OpenEXR file (.exr)", path));
+  try {
+    CheckOutputFile(path);
+  } catch (const InputError& e) {
+    throw CLI::ValidationError(fmt::format("the picture cannot be written: {}", e.what()));
+  }
+}
+
+// The lens with its stop as asked (f-number, blades) and coated as asked, at its paraxial
+// focus for infinity.
+LensSetup SetUpStop(const LensArgs& a) {
+  if (a.blades == 1 || a.blades == 2) throw CLI::ValidationError("--blades", "blades must be 0 (round) or at least 3");
+  if (a.blades == 0 && (a.blade_curvature != 0 || a.blade_rotation != 0))
+    spdlog::warn("--blade-curvature and --blade-rotation do nothing without --blades: the stop is round");
+  // Degrees reduced first: a turn by whole circles changes nothing, however large.
+  const StopShape opening = StopShape::Iris(a.blades, a.blade_curvature, std::fmod(a.blade_rotation, 360.0) * M_PI / 180);
+  LensPrescription lens = LoadLens(a.lens, GlassCatalog::Default());
+  Recoat(lens, a.coating);
+  try {
+    return SetUpLens(std::move(lens), {a.fnumber, 0, opening}, {INFINITY, FocusRequest::From::kFilm, false});
+  } catch (const InputError& e) {
+    if (a.fnumber > 0) throw CLI::ValidationError("--fnumber", e.what());
+    throw;
+  }
+}
+
+// The ghosts of a distant bright point in the field.
+int RunGhosts(const LensArgs& a) {
+  CheckExrOutput(a.output);
+  const LensSetup setup = SetUpStop(a);
+  GhostPictureRequest q;
+  q.field_deg = a.field;
+  q.azimuth_deg = a.azimuth;
+  std::tie(q.sensor_width, q.sensor_height) = ParseSensor(a.sensor);
+  q.width = a.width;
+  q.grid = a.grid;
+  if (a.psf_wavelength > 0) q.lambda_nm = a.psf_wavelength;
+  const GhostPicture picture = PictureGhosts(setup.lens, q);
+  WriteExr(a.output, picture.image);
+  nlohmann::ordered_json ghosts = nlohmann::ordered_json::array();
+  for (const GhostShare& g : picture.ghosts)
+    ghosts.push_back({{"surfaces", {g.ghost.first + 1, g.ghost.second + 1}}, {"share", g.share}});
+  nlohmann::ordered_json j = {{"lens", a.lens},
+                              {"fnumber", setup.fnumber},
+                              {"field_deg", a.field},
+                              {"azimuth_deg", a.azimuth},
+                              {"wavelength_nm", a.psf_wavelength > 0 ? nlohmann::ordered_json(a.psf_wavelength) : nlohmann::ordered_json("white (D65, 400-700 nm)")},
+                              {"total_share", picture.total_share},
+                              {"ghosts", ghosts},
+                              {"output", a.output}};
+  if (a.json) {
+    std::printf("%s\n", j.dump(2).c_str());
+    return 0;
+  }
+  std::printf("%s at f/%.3g, a distant point %g deg off the axis: %zu two-reflection ghosts carry %.4g%% of its light -> %s\n",
+              a.lens.c_str(), setup.fnumber, a.field, picture.ghosts.size(), 100 * picture.total_share,
+              a.output.c_str());
+  for (size_t i = 0; i < std::min<size_t>(8, picture.ghosts.size()); ++i)
+    std::printf("  rows %2d and %2d: %.4g%%\n", picture.ghosts[i].ghost.first + 1, picture.ghosts[i].ghost.second + 1,
+                100 * picture.ghosts[i].share);
+  return 0;
+}
+
 // The stop's diffraction pattern at the f-number asked for (set as a scene sets it: the
 // radiometric f-number, which is the working f-number for an object at infinity).
 int RunPsf(const LensArgs& a) {
-  try {
-    CheckOutputFile(a.output);
-  } catch (const InputError& e) {
-    throw CLI::ValidationError(fmt::format("the PSF cannot be written: {}", e.what()));
-  }
-  if (a.blades == 1 || a.blades == 2) throw CLI::ValidationError("--blades", "blades must be 0 (round) or at least 3");
-  const StopShape opening = StopShape::Iris(a.blades, a.blade_curvature, a.blade_rotation * M_PI / 180);
-  LensSetup setup = [&] {
-    try {
-      return SetUpLens(LoadLens(a.lens, GlassCatalog::Default()), {a.fnumber, 0, opening}, {INFINITY, FocusRequest::From::kFilm, false});
-    } catch (const InputError& e) {
-      if (a.fnumber > 0) throw CLI::ValidationError("--fnumber", e.what());
-      throw;
-    }
-  }();
+  CheckExrOutput(a.output);
+  LensSetup setup = SetUpStop(a);
+  const StopShape& opening = setup.lens.stop_shape();
   const double n = setup.fnumber;
   const double reference_nm = a.psf_wavelength > 0 ? a.psf_wavelength : 550.0;
   const double pitch = a.pixel_um > 0 ? a.pixel_um : reference_nm * 1e-3 * n / 4;
@@ -235,9 +299,12 @@ int RunPsf(const LensArgs& a) {
   } catch (const std::invalid_argument& e) {
     throw CLI::ValidationError("--size/--pixel", e.what());
   }
-  WriteExr(a.output, image);
+  // What the picture is, in its header (wavelength 0: white light).
+  WriteExr(a.output, image,
+           {{"objektiv:fnumber", n}, {"objektiv:wavelength_nm", a.psf_wavelength}, {"objektiv:blades", a.blades},
+            {"objektiv:pixel_um", pitch}, {"objektiv:axis_pixel", a.size / 2}});
   const double ring = FirstDarkRingUm(pupil, reference_nm, n);
-  nlohmann::ordered_json j = {{"lens", setup.lens.prescription().name},
+  nlohmann::ordered_json j = {{"lens", a.lens},
                               {"fnumber", n},
                               {"wavelength_nm", a.psf_wavelength > 0 ? nlohmann::ordered_json(a.psf_wavelength) : nlohmann::ordered_json("white (D65, 400-700 nm)")},
                               {"blades", a.blades},
@@ -249,16 +316,36 @@ int RunPsf(const LensArgs& a) {
   if (a.json) {
     std::printf("%s\n", j.dump(2).c_str());
   } else {
-    std::printf("%s at f/%.3g, %s: %d x %d pixels of %.4g um -> %s\n", setup.lens.prescription().name.c_str(), n,
+    std::printf("%s at f/%.3g, %s: %d x %d pixels of %.4g um -> %s\n", a.lens.c_str(), n,
                 a.psf_wavelength > 0 ? fmt::format("{:g} nm", a.psf_wavelength).c_str() : "white light", a.size, a.size,
                 pitch, a.output.c_str());
-    std::printf("  first dark ring (azimuthal mean) at %.3f um for %g nm (1.22 lambda N = %.3f um)\n", ring, reference_nm,
-                1.22 * reference_nm * 1e-3 * n);
+    if (std::isfinite(ring))
+      std::printf("  first dark ring (azimuthal mean) at %.3f um for %g nm (1.22 lambda N = %.3f um)\n", ring, reference_nm,
+                  1.22 * reference_nm * 1e-3 * n);
+    else
+      std::printf("  no dark ring in the azimuthal mean within 4 lambda N (%.3f um)\n", 4 * reference_nm * 1e-3 * n);
   }
   return 0;
 }
 
 }  // namespace
+
+// A number that is finite (CLI::Range lets NaN through).
+const CLI::Validator kFinite(
+    [](std::string& text) {
+      char* end = nullptr;
+      const double v = std::strtod(text.c_str(), &end);
+      return std::isfinite(v) ? std::string() : std::string("not a finite number: ") + text;
+    },
+    "FINITE");
+
+// The stop and coating options of `lens psf` and `lens ghosts`.
+void AddStopOptions(CLI::App* cmd, LensArgs& a) {
+  cmd->add_option("--fnumber", a.fnumber, "f-number, as a scene sets it (default: wide open)")->check(kFinite)->check(CLI::Range(0.1, 1e4));
+  cmd->add_option("--blades", a.blades, "Iris blades (0: round)")->check(CLI::Range(0, 64));
+  cmd->add_option("--blade-curvature", a.blade_curvature, "0 straight .. 1 round")->check(kFinite)->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--blade-rotation", a.blade_rotation, "Degrees from +x to the iris's first corner")->check(kFinite);
+}
 
 std::function<int()> AddLensCommand(CLI::App& app) {
   auto args = std::make_shared<LensArgs>();
@@ -270,7 +357,7 @@ std::function<int()> AddLensCommand(CLI::App& app) {
       fmt::format("Lens file ({}) or shipped lens name, e.g. dgauss.50mm", LensFileExtensionList());
   info->add_option("lens", args->lens, lens_help)->required();
   info->add_option("--wavelength", args->wavelength, "Wavelength in nm (default: the d line, 587.56)")
-      ->check(CLI::Range(300.0, 2500.0));
+      ->check(kFinite)->check(CLI::Range(300.0, 2500.0));
   info->add_option("--focus", args->focus_m, "Also focus on an object this many metres from the film (unit focusing)")
       ->check(CLI::PositiveNumber);
   info->add_option("--sensor", args->sensor, "Sensor size WIDTHxHEIGHT in mm for the field of view (default 36x24)");
@@ -283,7 +370,7 @@ std::function<int()> AddLensCommand(CLI::App& app) {
   plot->add_option("--fields", args->fields, "Field angles in degrees (default: 0, 70% and 100% of the field)")
       ->delimiter(',')
       ->check(CLI::Range(0.0, 89.0));
-  plot->add_option("--wavelength", args->wavelength, "Wavelength in nm")->check(CLI::Range(300.0, 2500.0));
+  plot->add_option("--wavelength", args->wavelength, "Wavelength in nm")->check(kFinite)->check(CLI::Range(300.0, 2500.0));
   CLI::App* analyze = lens->add_subcommand(
       "analyze", "Real-ray analysis: spot diagrams, distortion, field curvature, relative illumination, colour (SVG + JSON)");
   analyze->add_option("lens", args->lens, lens_help)->required();
@@ -291,18 +378,28 @@ std::function<int()> AddLensCommand(CLI::App& app) {
   CLI::App* psf = lens->add_subcommand("psf", "The stop's diffraction pattern (Fraunhofer PSF) as an EXR, with its first dark ring");
   psf->add_option("lens", args->lens, lens_help)->required();
   psf->add_option("-o,--output", args->output, "Output EXR file")->required();
-  psf->add_option("--fnumber", args->fnumber, "f-number, as a scene sets it (default: wide open)")->check(CLI::Range(0.1, 1e4));
+  AddStopOptions(psf, *args);
   psf->add_option("--wavelength", args->psf_wavelength, "One wavelength in nm (default: white light, 400-700 nm)")
-      ->check(CLI::Range(300.0, 2500.0));
-  psf->add_option("--blades", args->blades, "Iris blades (0: round)")->check(CLI::Range(0, 64));
-  psf->add_option("--blade-curvature", args->blade_curvature, "0 straight .. 1 round")->check(CLI::Range(0.0, 1.0));
-  psf->add_option("--blade-rotation", args->blade_rotation, "Degrees from +x to the iris's first corner");
+      ->check(kFinite)->check(CLI::Range(300.0, 2500.0));
   psf->add_option("--pixel", args->pixel_um, "Pixel pitch in micrometres on the sensor (default: lambda N / 4)")
-      ->check(CLI::Range(1e-3, 1e4));
-  psf->add_option("--size", args->size, "Pixels per side (default 256)")->check(CLI::Range(1, 4096));
+      ->check(kFinite)->check(CLI::Range(1e-3, 1e4));
+  psf->add_option("--size", args->size, "Pixels per side (default 256)")->check(CLI::Range(1, 2048));
   psf->add_flag("--json", args->json, "Print the figures as a JSON object");
-  return [args, list, plot, analyze, psf] {
+  CLI::App* ghosts = lens->add_subcommand("ghosts", "The two-reflection ghosts of a distant bright point, as an EXR, with each ghost's share of the light");
+  ghosts->add_option("lens", args->lens, lens_help)->required();
+  ghosts->add_option("-o,--output", args->output, "Output EXR file")->required();
+  ghosts->add_option("--field", args->field, "Degrees off the axis (default 10)")->check(kFinite)->check(CLI::Range(0.0, 89.0));
+  ghosts->add_option("--azimuth", args->azimuth, "Degrees: the direction in the picture (0: left, 90: up)")->check(kFinite);
+  AddStopOptions(ghosts, *args);
+  ghosts->add_option("--coating", args->coating, "Coat every air-glass surface so (none, MgF2[@NM], multi[@NM], I.xx, ...)");
+  ghosts->add_option("--sensor", args->sensor, "Sensor size WIDTHxHEIGHT in mm (default 36x24)");
+  ghosts->add_option("--width", args->width, "Picture width in pixels (default 768)")->check(CLI::Range(1, 16384));
+  ghosts->add_option("--grid", args->grid, "Rays per side of each ghost's bundle (default 64)")->check(CLI::Range(2, 1024));
+  ghosts->add_option("--wavelength", args->psf_wavelength, "One wavelength in nm (default: white light)")->check(kFinite)->check(CLI::Range(300.0, 2500.0));
+  ghosts->add_flag("--json", args->json, "Print the figures as a JSON object");
+  return [args, list, plot, analyze, psf, ghosts] {
     if (list->parsed()) return RunList();
+    if (ghosts->parsed()) return RunGhosts(*args);
     if (psf->parsed()) return RunPsf(*args);
     if (plot->parsed()) return RunPlot(*args);
     if (analyze->parsed()) return RunAnalyze(*args);

@@ -16,6 +16,15 @@ bool IsDispersive(const LensPrescription& lens) {
   return false;
 }
 
+// Whether a camera ray's transmittance depends on its wavelength without the path doing so:
+// a coated surface's reflectance changes with the wavelength, so one wavelength's
+// transmittance cannot stand for the others'.
+bool HasCoating(const LensSystem& lens) {
+  for (int i = 0; i < lens.SurfaceCount(); ++i)
+    if (lens.Coated(i)) return true;
+  return false;
+}
+
 BatchLensTracer MakeFastTracer(const LensSystem& lens, Vignetting v) {
   BatchLensTracer fast(lens);
   if (v == Vignetting::kNatural || v == Vignetting::kNone) fast.IgnoreRims();
@@ -36,7 +45,8 @@ RealisticCamera::RealisticCamera(const Transform& to_world, int width, int heigh
                                  const LensCameraSettings& settings)
     : LensCamera(to_world, width, height, settings), fast_(MakeFastTracer(lens, settings.vignetting)),
       bounds_(lens, FilmRadius(), BoundsOptions(lens, settings.vignetting)), film_z_(lens.FilmZ()),
-      stop_radius_(float(lens.StopSemiDiameter())), dispersive_(IsDispersive(lens.prescription())) {
+      stop_radius_(float(lens.StopSemiDiameter())), dispersive_(IsDispersive(lens.prescription())),
+      one_wavelength_(dispersive_ || (settings.transmission && HasCoating(lens))) {
   const ParaxialData& p = lens.paraxial();
   SetOriginZ(lens.VertexZ(0) + p.entrance_pupil_position);
 }
@@ -50,8 +60,9 @@ bool RealisticCamera::StartRay(const CameraSample& s, SampledWavelengths& lambda
   float dx = float(ps.point.x) - fx, dy = float(ps.point.y) - fy;
   float inv = 1 / std::sqrt(dx * dx + dy * dy + dz * dz);
   weight = Weight(film, -dz * inv, -dz, ps.pdf);
-  // Each wavelength takes its own path through dispersive glass: only the hero goes on.
-  if (dispersive_) lambda.TerminateSecondary();
+  // Each wavelength takes its own path through dispersive glass, and its own transmittance
+  // through coatings: only the hero goes on.
+  if (one_wavelength_) lambda.TerminateSecondary();
   ray = {fx, fy, float(film_z_), dx * inv, dy * inv, dz * inv, lambda[0], 1.f};
   return true;
 }

@@ -31,6 +31,7 @@ class RealisticCamera final : public LensCamera {
   double film_z_;
   float stop_radius_;  // for the aperture mask
   bool dispersive_;
+  bool one_wavelength_;  // each camera ray carries its hero wavelength only (dispersion or coatings)
 };
 
 }  // namespace objektiv

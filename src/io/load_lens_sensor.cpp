@@ -62,8 +62,9 @@ LensPrescription LoadSceneLens(const Properties& p, const GlassCatalog& glasses)
 // The coating property (optics/coating_library.h: Recoat).
 void RecoatAsAsked(const Properties& p, LensPrescription& lens) {
   if (!p.Has("coating")) return;
+  const std::string name = p.String("coating");  // its own errors name the line already
   try {
-    Recoat(lens, CoatingForLens(p.String("coating"), lens));
+    Recoat(lens, CoatingForLens(name, lens));
   } catch (const InputError& e) {
     throw ErrorAt(p.LocOf("coating"), "{}", e.what());
   }

@@ -53,11 +53,19 @@ PlyLayout ReadHeader(const std::string& bytes, const std::string& path, size_t* 
       continue;
     }
     if (f.empty() || f[0] == "comment" || f[0] == "obj_info") continue;
+    // Every other header line is printable ASCII (names with other bytes are read differently
+    // by different readers: Assimp's took such a header for another layout and ran out of
+    // memory), and the format comes first, once.
+    for (char c : text)
+      if (!std::isprint(static_cast<unsigned char>(c)) && c != '\t' && c != '\r')
+        throw MakeInputError(path, line, "a header line with a byte that is not printable ASCII: '{}'", Shown(text));
+    if (f[0] != "format" && !have_format) throw MakeInputError(path, line, "the format line must follow 'ply'");
     if (f[0] == "end_header") {
       if (f.size() != 1) throw MakeInputError(path, line, "'end_header' takes nothing after it");
       break;
     }
     if (f[0] == "format") {
+      if (have_format) throw MakeInputError(path, line, "a second format line");
       if (f.size() != 3 || f[2] != "1.0") throw MakeInputError(path, line, "the format line is 'format TYPE 1.0'");
       if (f[1] == "ascii") h.format = PlyLayout::Format::kAscii;
       else if (f[1] == "binary_little_endian") h.format = PlyLayout::Format::kBinaryLittleEndian;

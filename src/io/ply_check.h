@@ -1,7 +1,9 @@
 // A PLY file read and checked before Assimp sees it. Assimp's reader hangs on a header cut
 // short, reserves memory for whatever element counts a header claims, and takes a cut-off
 // ASCII body for faces of fewer corners. Here the header must end (`end_header`) within its
-// first kMaxPlyHeaderBytes, and the body must hold every record the header declares: for
+// first kMaxPlyHeaderBytes, begin with its one format line, hold only printable ASCII outside
+// comments (so that Assimp reads the same layout), and the body must hold every record the
+// header declares: for
 // ASCII, one value per property and the declared number of items per list; for binary, the
 // bytes of every property and list (their counts read as the header types them).
 #pragma once

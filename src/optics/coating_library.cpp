@@ -10,11 +10,16 @@ namespace objektiv {
 
 namespace {
 
-bool SameName(std::string_view a, std::string_view b) {
+}  // namespace
+
+bool SameCoatingName(std::string_view a, std::string_view b) {
   return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
            return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
          });
 }
+
+namespace {
+bool SameName(std::string_view a, std::string_view b) { return SameCoatingName(a, b); }
 
 struct Material {
   const char* name;
@@ -86,10 +91,13 @@ std::optional<std::shared_ptr<const Coating>> FindBuiltInCoating(std::string_vie
 
 std::shared_ptr<const Coating> CoatingForLens(std::string_view name, const LensPrescription& lens) {
   if (auto c = FindBuiltInCoating(name)) return *c;
+  for (const std::shared_ptr<const Coating>& c : lens.defined_coatings)
+    if (SameName(c->name(), name)) return c;
   for (const LensSurface& s : lens.surfaces)
     if (s.coating && SameName(s.coating->name(), name)) return s.coating;
-  throw InputError(fmt::format("unknown coating '{}' (built in: {}; or one the lens file defines)", name,
-                               BuiltInCoatingNames()));
+  throw InputError(fmt::format("unknown coating '{}' (built in: {}, NM a design wavelength in 200..2000 nm and xx a "
+                               "transmittance above 0; or one the lens file defines)",
+                               name, BuiltInCoatingNames()));
 }
 
 void Recoat(LensPrescription& lens, const std::shared_ptr<const Coating>& coating) {
@@ -105,10 +113,13 @@ std::string BuiltInCoatingNames() { return "none, MgF2[@NM], multi[@NM], I.xx"; 
 std::shared_ptr<const Coating> ParseCoatingDefinition(const std::string& name, std::span<const std::string> fields,
                                                       const GlassCatalog& glasses, const std::string& path, int line) {
   double design = 550;
+  bool design_given = false;
   std::vector<Coating::Layer> layers;
   for (const std::string& f : fields) {
     if (f.rfind("design=", 0) == 0) {
       if (!layers.empty()) throw MakeInputError(path, line, "design= comes before the layers");
+      if (design_given) throw MakeInputError(path, line, "design= is given twice");
+      design_given = true;
       design = ParseFiniteNumber(f.substr(7), path, line);
       if (design < 200 || design > 2000) throw MakeInputError(path, line, "design wavelength {} nm is outside 200..2000 nm", design);
       continue;
@@ -118,7 +129,7 @@ std::shared_ptr<const Coating> ParseCoatingDefinition(const std::string& name, s
       throw MakeInputError(path, line, "a layer is MATERIAL:THICKNESS (MgF2:0.25, SiO2:98nm), got '{}'", f);
     const std::string material = f.substr(0, colon), thickness = f.substr(colon + 1);
     Coating::Layer layer;
-    if (material == "matched") {
+    if (SameName(material, "matched")) {
       layer.material = nullptr;
     } else if (material.rfind("n=", 0) == 0) {
       double n = ParseFiniteNumber(material.substr(2), path, line);

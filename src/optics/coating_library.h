@@ -28,6 +28,9 @@
 
 namespace objektiv {
 
+// Coating names and layer materials compare without case ("mgf2" is MgF2).
+bool SameCoatingName(std::string_view a, std::string_view b);
+
 // A coating material by name (case-insensitive), or null.
 std::shared_ptr<const Glass> FindCoatingMaterial(std::string_view name);
 // "MgF2, SiO2, ..." for messages.

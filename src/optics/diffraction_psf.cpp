@@ -9,6 +9,8 @@
 #include <mutex>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 namespace objektiv {
 
 namespace {
@@ -44,23 +46,32 @@ std::vector<double> SampledPattern(const PupilFunction& pupil, double lambda_um,
   std::vector<double> corner(size_t(corners) * corners);
   for (int j = 0; j < corners; ++j)
     for (int i = 0; i < corners; ++i) corner[size_t(j) * corners + i] = pupil((i - reach - 0.5) * delta, (j - reach - 0.5) * delta);
-  double power = 0;
+  // Each sample: the cell's mean amplitude (the square root of the transmittance); `light`
+  // sums the cells' mean transmittance, the light the stop passes. An edge cell's grey
+  // amplitude sends less light far out than the sharp edge does (its power, the amplitude
+  // squared, falls short of its light): normalising by the light keeps the core exact and
+  // leaves that shortfall to the far tails, where it belongs.
+  double light = 0;
   for (int j = 0; j < corners - 1; ++j)
     for (int i = 0; i < corners - 1; ++i) {
       const double* c0 = &corner[size_t(j) * corners + i];
       const double* c1 = c0 + corners;
-      double v = c0[0];
-      if (c0[1] != v || c1[0] != v || c1[1] != v) {
-        v = 0;
+      double t = c0[0], v = std::sqrt(std::max(t, 0.0));
+      if (c0[1] != t || c1[0] != t || c1[1] != t) {
+        t = v = 0;
         for (int b = 0; b < 4; ++b)
-          for (int a = 0; a < 4; ++a)
-            v += pupil((i - reach - 0.5 + (a + 0.5) / 4) * delta, (j - reach - 0.5 + (b + 0.5) / 4) * delta);
+          for (int a = 0; a < 4; ++a) {
+            const double s = std::max(0.0, pupil((i - reach - 0.5 + (a + 0.5) / 4) * delta, (j - reach - 0.5 + (b + 0.5) / 4) * delta));
+            t += s;
+            v += std::sqrt(s);
+          }
+        t /= 16;
         v /= 16;
       }
       in[size_t(j - reach + half) * n + (i - reach + half)] = v;
-      power += v * v;
+      light += t;
     }
-  if (!(power > 0)) throw std::invalid_argument("the stop lets no light through");
+  if (!(light > 0)) throw std::invalid_argument("the stop lets no light through");
   fftw_plan plan;
   {
     std::lock_guard<std::mutex> lock(PlannerMutex());
@@ -72,7 +83,7 @@ std::vector<double> SampledPattern(const PupilFunction& pupil, double lambda_um,
     fftw_destroy_plan(plan);
   }
   // Parseval: the sum of |DFT|^2 over the grid is n^2 times the pupil's power.
-  const double norm = 1 / (double(n) * n * power);
+  const double norm = 1 / (double(n) * n * light);
   std::vector<double> pattern(size_t(n) * n);
   const int w = n / 2 + 1;
   for (int y = 0; y < n; ++y)
@@ -84,6 +95,41 @@ std::vector<double> SampledPattern(const PupilFunction& pupil, double lambda_um,
       pattern[size_t(y) * n + x] = (f[0] * f[0] + f[1] * f[1]) * norm;
     }
   return pattern;
+}
+
+// The pattern averaged over a square of `width` samples about each sample (exactly, for the
+// band-limited intensity: its spectrum times the box's, sinc(pi f width) per axis).
+void BoxFilter(std::vector<double>& pattern, int n, double width) {
+  std::unique_ptr<double[], FftwFree> data(static_cast<double*>(fftw_malloc(sizeof(double) * n * n)));
+  std::unique_ptr<fftw_complex[], FftwFree> spectrum(
+      static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * n * (n / 2 + 1))));
+  if (!data || !spectrum) throw std::invalid_argument("not enough memory for the diffraction FFT");
+  fftw_plan forward, backward;
+  {
+    std::lock_guard<std::mutex> lock(PlannerMutex());
+    forward = fftw_plan_dft_r2c_2d(n, n, data.get(), spectrum.get(), FFTW_ESTIMATE);
+    backward = fftw_plan_dft_c2r_2d(n, n, spectrum.get(), data.get(), FFTW_ESTIMATE);
+  }
+  std::copy(pattern.begin(), pattern.end(), data.get());
+  fftw_execute(forward);
+  auto box = [&](int index) {
+    const double f = double(index) / n, x = M_PI * f * width;
+    return x == 0 ? 1.0 : std::sin(x) / x;
+  };
+  const int w = n / 2 + 1;
+  for (int y = 0; y < n; ++y) {
+    const double hy = box(y < n / 2 ? y : y - n) / (double(n) * n);  // c2r leaves a factor n^2
+    for (int x = 0; x < w; ++x) {
+      const double h = hy * box(x);
+      spectrum[size_t(y) * w + x][0] *= h;
+      spectrum[size_t(y) * w + x][1] *= h;
+    }
+  }
+  fftw_execute(backward);
+  std::copy(data.get(), data.get() + size_t(n) * n, pattern.begin());
+  std::lock_guard<std::mutex> lock(PlannerMutex());
+  fftw_destroy_plan(forward);
+  fftw_destroy_plan(backward);
 }
 
 int NextPowerOfTwo(double v) {
@@ -105,24 +151,26 @@ PsfImage FraunhoferPsf(const PupilFunction& pupil, double lambda_nm, double fnum
   const double step = pitch_um / k;
   // The grid covers twice the image (the pattern's tails wrap around less), and the pupil
   // spans at least 128 samples.
+  if (128 * scale / step > kMaxFft)
+    throw std::invalid_argument(fmt::format("a pitch of {:g} um is too fine to sample the pupil at f/{:g} and {:g} nm: at least {:.3g} um",
+                                            pitch_um, fnumber, lambda_nm, 128 * scale / kMaxFft));
+  if (2.0 * size * k > kMaxFft)
+    throw std::invalid_argument(fmt::format("{} pixels of {:g} um need an FFT over 4096^2 at f/{:g} and {:g} nm: at most {} pixels",
+                                            size, pitch_um, fnumber, lambda_nm, kMaxFft / (2 * k)));
   const int n = NextPowerOfTwo(std::max({2.0 * size * k, 128 * scale / step, 256.0}));
-  if (n > kMaxFft)
-    throw std::invalid_argument("the image needs an FFT larger than 4096^2: fewer pixels, or a finer pitch");
-  const std::vector<double> pattern = SampledPattern(pupil, lambda_um, fnumber, step, n);
+  std::vector<double> pattern = SampledPattern(pupil, lambda_um, fnumber, step, n);
+  // Each pixel's light: the pattern averaged over the pixel (k samples wide) at its centre,
+  // times the k^2 samples it spans.
+  BoxFilter(pattern, n, k);
   PsfImage psf;
   psf.size = size;
   psf.pitch_um = pitch_um;
   psf.energy.assign(size_t(size) * size, 0);
-  const int centre = size / 2, r = k / 2;
+  const int centre = size / 2;
   for (int py = 0; py < size; ++py)
     for (int px = 0; px < size; ++px) {
-      double sum = 0;
-      for (int dy = -r; dy <= r; ++dy)
-        for (int dx = -r; dx <= r; ++dx) {
-          const int gx = (((px - centre) * k + dx) % n + n) % n, gy = (((py - centre) * k + dy) % n + n) % n;
-          sum += pattern[size_t(gy) * n + gx];
-        }
-      psf.energy[size_t(py) * size + px] = sum;
+      const int gx = (((px - centre) * k) % n + n) % n, gy = (((py - centre) * k) % n + n) % n;
+      psf.energy[size_t(py) * size + px] = std::max(0.0, pattern[size_t(gy) * n + gx]) * k * k;
     }
   return psf;
 }

@@ -6,7 +6,7 @@
 // transform of the pupil function P (the stop's amplitude transmittance), at spatial
 // frequency x / (lambda z) for a film point x and an exit pupil z from the film:
 //     PSF(x) = |F[P](x / (lambda z))|^2 / (lambda^2 z^2 A),    A = integral of |P|^2,
-// which integrates to 1 over the film. Writing the pupil in units of its radius (diameter D,
+// which integrates to 1 over the film (A: the light the stop passes). Writing the pupil in units of its radius (diameter D,
 // working f-number N = z / D), the pattern scales with lambda N: a round stop gives the Airy
 // pattern, its first dark ring at 1.22 lambda N and its peak pi / (4 lambda^2 N^2); an iris
 // of n straight blades sends a spike perpendicular to each edge: n spikes for even n (opposite
@@ -14,22 +14,24 @@
 //
 // Computed by an FFT (FFTW) of the pupil sampled on a square grid, each sample the mean of 4 x
 // 4 points in its cell (edges anti-aliased), padded so that the grid's frequency step is the
-// film pitch asked for (finer first where the pitch is coarser than the pattern's Nyquist
-// rate, then summed down).
+// film pitch asked for (a finer step where the pitch is coarser than the pattern's Nyquist
+// rate); each pixel then gets the light over its whole area (the pattern filtered by the
+// pixel's box, through a second FFT), not the value at its centre.
 #pragma once
 #include <functional>
 #include <vector>
 
 namespace objektiv {
 
-// Amplitude transmittance in [0, 1] at (u, v) in units of the stop's radius.
+// Transmittance (of the light) in [0, 1] at (u, v) in units of the stop's radius.
 using PupilFunction = std::function<double(double u, double v)>;
 
 struct PsfImage {
   int size = 0;         // pixels per side, the axis at the centre of pixel (size / 2, size / 2)
   double pitch_um = 0;  // film distance between pixel centres
   // Per pixel, row-major: the fraction of the light that falls in it (the whole pattern,
-  // including what falls outside the image, sums to 1).
+  // including what falls outside the image, sums to 1; the grid holds all but the far tails of
+  // the edges' diffraction, half a percent for a round stop).
   std::vector<double> energy;
   double At(int x, int y) const { return energy[size_t(y) * size + x]; }
 };

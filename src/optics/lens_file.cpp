@@ -57,13 +57,14 @@ struct FileCoatings {
     const std::string& name = f[1];
     if (FindBuiltInCoating(name)) throw MakeInputError(path, line, "coating '{}' is built in; give yours another name", name);
     for (const Defined& d : defined)
-      if (d.coating->name() == name) throw MakeInputError(path, line, "coating '{}' is defined twice (first on line {})", name, d.line);
+      if (SameCoatingName(d.coating->name(), name))
+        throw MakeInputError(path, line, "coating '{}' is defined twice (first on line {}; names compare without case)", name, d.line);
     defined.push_back({ParseCoatingDefinition(name, std::span(f).subspan(2), glasses, path, line), line});
   }
   // A coating by name: the file's, then the built-in ones (null: none/uncoated).
   std::shared_ptr<const Coating> Find(const std::string& name, const std::string& path, int line) {
     for (Defined& d : defined)
-      if (d.coating->name() == name) {
+      if (SameCoatingName(d.coating->name(), name)) {
         d.used = true;
         return d.coating;
       }
@@ -91,6 +92,8 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
   FileCoatings coatings;
   std::shared_ptr<const Coating> default_coating;
   std::vector<size_t> explicitly_coated;  // surfaces with their own coating=
+  int default_line = 0;
+  std::vector<int> coating_lines;  // the lines of explicitly_coated
   while (std::getline(lines, line)) {
     ++number;
     if (size_t h = line.find('#'); h != std::string::npos) line.resize(h);
@@ -105,7 +108,11 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       else if (key == "focal_length") lens.design_focal_length = ParseFiniteNumber(value, path, number);
       else if (key == "fnumber") lens.design_fnumber = ParseFiniteNumber(value, path, number);
       else if (key == "image_circle") lens.image_circle = ParseFiniteNumber(value, path, number);
-      else if (key == "default_coating") default_coating = coatings.Find(value, path, number);
+      else if (key == "default_coating") {
+        if (default_line) throw MakeInputError(path, number, "default_coating is given twice (first on line {})", default_line);
+        default_coating = coatings.Find(value, path, number);
+        default_line = number;
+      }
       else throw MakeInputError(path, number, "unknown key '{}' (name, source, focal_length, fnumber, image_circle, default_coating)", key);
       continue;
     }
@@ -141,16 +148,20 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
     s.medium = ParseMedium(f[next + 1], glasses, path, number);
     s.semi_diameter = ParseFiniteNumber(f[next + 2], path, number);
     if (!(s.semi_diameter > 0)) throw MakeInputError(path, number, "semi-diameter must be positive");
+    std::vector<std::string> keys;  // each option once
     for (size_t i = next + 3; i < f.size(); ++i) {
       if (s.is_stop) throw MakeInputError(path, number, "the stop takes no options");
       size_t eq = f[i].find('=');
       if (eq == std::string::npos) throw MakeInputError(path, number, "option '{}' is not key=value", f[i]);
       std::string key = f[i].substr(0, eq), value = f[i].substr(eq + 1);
+      if (std::find(keys.begin(), keys.end(), key) != keys.end()) throw MakeInputError(path, number, "option '{}' is given twice", key);
+      keys.push_back(key);
       if (key == "k") {
         s.conic = ParseFiniteNumber(value, path, number);
       } else if (key == "coating") {
         s.coating = coatings.Find(value, path, number);
         explicitly_coated.push_back(lens.surfaces.size());
+        coating_lines.push_back(number);
       } else if (key.size() >= 2 && key[0] == 'a' && std::all_of(key.begin() + 1, key.end(), ::isdigit)) {
         std::optional<int> order = ParseIntegerIn(key.substr(1), 4, 16);
         if (!order || *order % 2) throw MakeInputError(path, number, "aspheric terms are a4, a6, ..., a16");
@@ -166,14 +177,33 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
   if (lens.surfaces.empty()) throw MakeInputError(path, 0, "no surfaces");
   if (!stop_line) throw MakeInputError(path, 0, "no stop line");
   if (lens.surfaces.back().medium) throw MakeInputError(path, last_line, "the last surface must leave the lens into air");
+  // A coating where the medium does not change coats nothing.
+  for (size_t k = 0; k < explicitly_coated.size(); ++k) {
+    const size_t i = explicitly_coated[k];
+    const LensSurface& s = lens.surfaces[i];
+    if (s.coating && (i > 0 ? lens.surfaces[i - 1].medium : nullptr) == s.medium)
+      spdlog::warn("{}:{}: coating '{}' does nothing here: the medium is the same on both sides of the surface", path,
+                   coating_lines[k], s.coating->name());
+  }
   // The default on the other air-glass surfaces (a surface's own coating=none stays bare).
   if (default_coating) {
     std::vector<std::shared_ptr<const Coating>> own;
     for (size_t i : explicitly_coated) own.push_back(lens.surfaces[i].coating);
+    LensPrescription bare = lens;
+    for (LensSurface& s : bare.surfaces) s.coating = nullptr;
+    CoatAirGlassSurfaces(bare, default_coating, false);
     CoatAirGlassSurfaces(lens, default_coating, true);
     for (size_t k = 0; k < explicitly_coated.size(); ++k) lens.surfaces[explicitly_coated[k]].coating = own[k];
+    // Warned where every surface it would coat has a coating of its own.
+    bool applies = false;
+    for (size_t i = 0; i < lens.surfaces.size(); ++i)
+      applies |= bare.surfaces[i].coating && std::find(explicitly_coated.begin(), explicitly_coated.end(), i) == explicitly_coated.end();
+    if (!applies)
+      spdlog::warn("{}:{}: default_coating '{}' coats no surface: every air-glass surface names its own", path, default_line,
+                   default_coating->name());
   }
   coatings.WarnUnused(path);
+  for (const FileCoatings::Defined& d : coatings.defined) lens.defined_coatings.push_back(d.coating);
   return lens;
 }
 

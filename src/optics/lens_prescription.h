@@ -47,6 +47,8 @@ struct LensPrescription {
   std::string name, source;
   double design_focal_length = 0, design_fnumber = 0, image_circle = 0;  // metadata (0: not given)
   std::vector<LensSurface> surfaces;
+  // The coatings the lens file defines (used by its surfaces or not: a scene may choose one).
+  std::vector<std::shared_ptr<const Coating>> defined_coatings;
 
   int StopIndex() const;  // -1 if none
   double TotalTrack() const;  // first vertex to the last (without the distance to the film)

@@ -87,13 +87,18 @@ std::optional<double> Intersect(const LensSystem& lens, int i, const LensRay& ra
   return t;
 }
 
-TraceResult Trace(const LensSystem& lens, const LensRay& in, double lambda_nm, bool from_film,
-                  std::vector<Vec3d>* path, std::vector<SurfaceEvent>* events) {
-  const int n = lens.SurfaceCount();
+// The ray through `count` visits, visit(k) giving the k-th (surface, reflect, toward_film):
+// consecutive visits are neighbouring surfaces (or the same surface's neighbours after a
+// reflection), so the segment between them lies in one medium.
+template <typename Visit>
+TraceResult TraceVisits(const LensSystem& lens, const LensRay& in, double lambda_nm, int count, Visit visit,
+                        std::vector<Vec3d>* path, std::vector<SurfaceEvent>* events) {
   LensRay ray = in;
   TraceResult result;
-  for (int k = 0; k < n; ++k) {
-    int i = from_film ? n - 1 - k : k;
+  int previous = -1;
+  for (int k = 0; k < count; ++k) {
+    const SurfaceVisit v = visit(k);
+    const int i = v.surface;
     const LensSurface& s = lens.surface(i);
     std::optional<double> t = Intersect(lens, i, ray);
     if (!t || *t < -1e-9) {
@@ -111,25 +116,38 @@ TraceResult Trace(const LensSystem& lens, const LensRay& in, double lambda_nm, b
       return result;
     }
     // Absorption along the segment just travelled, inside the medium between the surfaces.
-    if (k > 0) {
-      int medium_row = from_film ? i : i - 1;  // the row whose medium the segment crossed
-      if (const Glass* g = lens.surface(medium_row).medium.get())
+    if (previous >= 0) {
+      if (const Glass* g = lens.surface(std::min(previous, i)).medium.get())
         result.internal_transmittance *= g->InternalTransmittance(lambda_nm, *t);
     }
+    previous = i;
     ray.o = p;
     // Indices on the incoming and outgoing sides (a stop inside glass has the same on both;
     // between different media it refracts as the flat interface it is).
     double n_object_side = i > 0 ? lens.surface(i - 1).IndexAfter(lambda_nm) : 1.0;
     double n_film_side = s.IndexAfter(lambda_nm);
-    double n1 = from_film ? n_film_side : n_object_side, n2 = from_film ? n_object_side : n_film_side;
-    if (n1 == n2) continue;
+    double n1 = v.toward_film ? n_object_side : n_film_side, n2 = v.toward_film ? n_film_side : n_object_side;
+    if (n1 == n2) {
+      if (v.reflect) {  // nothing to reflect from
+        result.failure = TraceFailure::kMissedSurface;
+        result.surface = i;
+        return result;
+      }
+      continue;
+    }
     // Vector Snell's law with the normal facing the incoming ray.
     Vec3d nrm = Normal(s, p);
     if (Dot(nrm, ray.d) > 0) nrm = -nrm;
     double eta = n1 / n2, cos_i = -Dot(nrm, ray.d);
-    double reflectance = lens.SurfaceReflectance(i, lambda_nm, cos_i, !from_film);
-    result.surface_transmittance *= 1 - reflectance;
+    double reflectance = lens.SurfaceReflectance(i, lambda_nm, cos_i, v.toward_film);
     if (events) events->push_back({i, reflectance, cos_i});
+    if (v.reflect) {
+      result.surface_transmittance *= reflectance;
+      ray.d = ray.d + nrm * (2 * cos_i);
+      ray.d = ray.d / Length(ray.d);
+      continue;
+    }
+    result.surface_transmittance *= 1 - reflectance;
     double k2 = 1 - eta * eta * (1 - cos_i * cos_i);
     if (k2 < 0) {
       result.failure = TraceFailure::kTotalInternalReflection;
@@ -143,6 +161,14 @@ TraceResult Trace(const LensSystem& lens, const LensRay& in, double lambda_nm, b
   return result;
 }
 
+TraceResult Trace(const LensSystem& lens, const LensRay& in, double lambda_nm, bool from_film,
+                  std::vector<Vec3d>* path, std::vector<SurfaceEvent>* events) {
+  const int n = lens.SurfaceCount();
+  return TraceVisits(
+      lens, in, lambda_nm, n, [&](int k) { return SurfaceVisit{from_film ? n - 1 - k : k, false, !from_film}; }, path,
+      events);
+}
+
 }  // namespace
 
 TraceResult TraceFromObject(const LensSystem& lens, const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path,
@@ -152,6 +178,13 @@ TraceResult TraceFromObject(const LensSystem& lens, const LensRay& ray, double l
 TraceResult TraceFromFilm(const LensSystem& lens, const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path,
                           std::vector<SurfaceEvent>* events) {
   return Trace(lens, ray, lambda_nm, true, path, events);
+}
+
+TraceResult TraceSequence(const LensSystem& lens, const LensRay& ray, double lambda_nm,
+                          std::span<const SurfaceVisit> visits, std::vector<Vec3d>* path,
+                          std::vector<SurfaceEvent>* events) {
+  return TraceVisits(
+      lens, ray, lambda_nm, int(visits.size()), [&](int k) { return visits[k]; }, path, events);
 }
 
 }  // namespace objektiv

@@ -3,6 +3,7 @@
 // axis toward the film, the first vertex at z = 0.
 #pragma once
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "base/vec.h"
@@ -46,6 +47,21 @@ TraceResult TraceFromObject(const LensSystem& lens, const LensRay& ray, double l
 // From the film through every surface toward the object.
 TraceResult TraceFromFilm(const LensSystem& lens, const LensRay& ray, double lambda_nm,
                           std::vector<Vec3d>* path = nullptr, std::vector<SurfaceEvent>* events = nullptr);
+// One step of a path through the lens: the ray, travelling toward the film or toward the
+// object, meets `surface` and is refracted through it or reflected back from it (a ghost's
+// path reflects twice). The transmittance gathers 1 - R at each refraction and R at each
+// reflection (LensSystem::SurfaceReflectance).
+struct SurfaceVisit {
+  int surface;
+  bool reflect;
+  bool toward_film;
+};
+// The ray through `visits` in order; consecutive visits must be neighbouring surfaces (the
+// segment between them lies in one medium). A reflection where the media on both sides are
+// the same fails (kMissedSurface: there is no interface).
+TraceResult TraceSequence(const LensSystem& lens, const LensRay& ray, double lambda_nm,
+                          std::span<const SurfaceVisit> visits, std::vector<Vec3d>* path = nullptr,
+                          std::vector<SurfaceEvent>* events = nullptr);
 // Where a ray from the film meets the stop's plane, whether or not the stop lets it through;
 // nothing if it does not get that far (or the lens has no stop).
 std::optional<Vec3d> StopCrossingFromFilm(const LensSystem& lens, const LensRay& ray, double lambda_nm);

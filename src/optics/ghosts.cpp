@@ -1,0 +1,230 @@
+#include "optics/ghosts.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace objektiv {
+
+std::vector<Ghost> TwoReflectionGhosts(const LensSystem& lens) {
+  // Surfaces where the index changes (at the d line: a change anywhere is a change there).
+  std::vector<int> reflecting;
+  for (int i = 0; i < lens.SurfaceCount(); ++i) {
+    const double before = i > 0 ? lens.surface(i - 1).IndexAfter(kLambdad) : 1.0;
+    if (before != lens.surface(i).IndexAfter(kLambdad)) reflecting.push_back(i);
+  }
+  std::vector<Ghost> ghosts;
+  for (size_t a = 0; a < reflecting.size(); ++a)
+    for (size_t b = 0; b < a; ++b) ghosts.push_back({reflecting[a], reflecting[b]});
+  return ghosts;
+}
+
+std::vector<SurfaceVisit> GhostPath(const LensSystem& lens, const Ghost& g) {
+  std::vector<SurfaceVisit> path;
+  for (int i = 0; i <= g.first; ++i) path.push_back({i, i == g.first, true});
+  for (int i = g.first - 1; i >= g.second; --i) path.push_back({i, i == g.second, false});
+  for (int i = g.second + 1; i < lens.SurfaceCount(); ++i) path.push_back({i, false, true});
+  return path;
+}
+
+namespace {
+
+// A grid of rays from the source through points of a square on a plane in front of the lens,
+// traced along `path` to the film.
+class BundleTracer {
+ public:
+  BundleTracer(const LensSystem& lens, std::span<const SurfaceVisit> path, const PointSource& source, double lambda_nm)
+      : lens_(lens), path_(path), source_(source), lambda_(lambda_nm) {
+    const LensSurface& front = lens.surface(0);
+    start_z_ = lens.VertexZ(0) + std::min(0.0, front.Sag(front.semi_diameter)) - 1;
+    reach_ = front.semi_diameter;
+  }
+
+  struct Corner {
+    bool alive = false;
+    Vec2d film;
+    double transmittance = 0;
+  };
+
+  Corner Trace(Vec2d p) const {
+    const Vec3d at(p.x, p.y, start_z_);
+    const Vec3d d = source_.at_infinity ? source_.direction : Normalize(at - source_.position);
+    Corner c;
+    if (!(d.z > 0)) return c;
+    TraceResult r = TraceSequence(lens_, {at, d}, lambda_, path_);
+    if (!r.ray || !(r.ray->d.z > 0)) return c;
+    const double t = (lens_.FilmZ() - r.ray->o.z) / r.ray->d.z;
+    c.alive = true;
+    c.film = {r.ray->o.x + t * r.ray->d.x, r.ray->o.y + t * r.ray->d.y};
+    c.transmittance = r.surface_transmittance * r.internal_transmittance;
+    return c;
+  }
+
+  // The flux into the cell of size du x dv centred at p, per unit intensity (or irradiance).
+  double CellFlux(Vec2d p, double du, double dv) const {
+    if (source_.at_infinity) return du * dv * source_.direction.z;
+    const Vec3d to = Vec3d(p.x, p.y, start_z_) - source_.position;
+    const double r2 = Dot(to, to);
+    return du * dv * std::abs(to.z) / (r2 * std::sqrt(r2));
+  }
+
+  // The part of the start square [-reach, reach]^2 whose rays get through: found on a coarse
+  // grid (finer if it misses everything), widened by one coarse step. Empty: none do.
+  bool Region(Vec2d& lo, Vec2d& hi) const {
+    for (int n : {32, 128}) {
+      const double step = 2 * reach_ / n;
+      lo = Vec2d(INFINITY, INFINITY), hi = Vec2d(-INFINITY, -INFINITY);
+      for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) {
+          const Vec2d p(-reach_ + i * step, -reach_ + j * step);
+          if (!Trace(p).alive) continue;
+          lo = Vec2d(std::min(lo.x, p.x), std::min(lo.y, p.y));
+          hi = Vec2d(std::max(hi.x, p.x), std::max(hi.y, p.y));
+        }
+      if (lo.x <= hi.x) {
+        lo = Vec2d(std::max(-reach_, lo.x - step), std::max(-reach_, lo.y - step));
+        hi = Vec2d(std::min(reach_, hi.x + step), std::min(reach_, hi.y + step));
+        return true;
+      }
+    }
+    return false;
+  }
+
+  std::vector<FilmTriangle> Bundle(int grid) const {
+    std::vector<FilmTriangle> out;
+    Vec2d lo, hi;
+    if (grid < 1 || !Region(lo, hi)) return out;
+    const double du = (hi.x - lo.x) / grid, dv = (hi.y - lo.y) / grid;
+    std::vector<Corner> corners(size_t(grid + 1) * (grid + 1));
+    for (int j = 0; j <= grid; ++j)
+      for (int i = 0; i <= grid; ++i) corners[size_t(j) * (grid + 1) + i] = Trace(Vec2d(lo.x + i * du, lo.y + j * dv));
+    for (int j = 0; j < grid; ++j)
+      for (int i = 0; i < grid; ++i) {
+        const Corner* c = &corners[size_t(j) * (grid + 1) + i];
+        Cell(Vec2d(lo.x + i * du, lo.y + j * dv), du, dv, {c[0], c[1], c[grid + 2], c[grid + 1]}, kSubdivisions, out);
+      }
+    return out;
+  }
+
+ private:
+  // A cell whose corners (counter-clockwise from its low corner) all get through becomes two
+  // triangles on the film; one where only some do lies across the edge of what gets through
+  // (a rim, the stop's blades): it is split in four, down to kSubdivisions levels, so that the
+  // bundle's edge follows the opening.
+  static constexpr int kSubdivisions = 3;
+  void Cell(Vec2d p, double du, double dv, const std::array<Corner, 4>& c, int depth, std::vector<FilmTriangle>& out) const {
+    const int alive = c[0].alive + c[1].alive + c[2].alive + c[3].alive;
+    if (alive == 4) {
+      const double t = 0.25 * (c[0].transmittance + c[1].transmittance + c[2].transmittance + c[3].transmittance);
+      const double flux = t * CellFlux(Vec2d(p.x + du / 2, p.y + dv / 2), du, dv);
+      out.push_back({c[0].film, c[1].film, c[2].film, flux / 2});
+      out.push_back({c[0].film, c[2].film, c[3].film, flux / 2});
+      return;
+    }
+    if (alive == 0 || depth == 0) return;
+    const double hu = du / 2, hv = dv / 2;
+    // The 3 x 3 corners of the four halves (the old ones at the corners).
+    Corner g[3][3];
+    g[0][0] = c[0], g[0][2] = c[1], g[2][2] = c[2], g[2][0] = c[3];
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i)
+        if ((i % 2) || (j % 2)) g[j][i] = Trace(Vec2d(p.x + i * hu, p.y + j * hv));
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i)
+        Cell(Vec2d(p.x + i * hu, p.y + j * hv), hu, hv, {g[j][i], g[j][i + 1], g[j + 1][i + 1], g[j + 1][i]}, depth - 1, out);
+  }
+
+  const LensSystem& lens_;
+  std::span<const SurfaceVisit> path_;
+  PointSource source_;
+  double lambda_, start_z_, reach_;
+};
+
+}  // namespace
+
+std::vector<FilmTriangle> GhostBundle(const LensSystem& lens, const Ghost& ghost, const PointSource& source,
+                                      double lambda_nm, int grid) {
+  const std::vector<SurfaceVisit> path = GhostPath(lens, ghost);
+  return BundleTracer(lens, path, source, lambda_nm).Bundle(grid);
+}
+
+std::vector<FilmTriangle> DirectBundle(const LensSystem& lens, const PointSource& source, double lambda_nm, int grid) {
+  std::vector<SurfaceVisit> path;
+  for (int i = 0; i < lens.SurfaceCount(); ++i) path.push_back({i, false, true});
+  return BundleTracer(lens, path, source, lambda_nm).Bundle(grid);
+}
+
+namespace {
+
+// The area of triangle abc inside the unit pixel [x, x + 1] x [y, y + 1] (pixel coordinates):
+// the triangle clipped by the pixel's four edges in turn (Sutherland-Hodgman), then the
+// shoelace formula.
+double OverlapArea(const Vec2d& a, const Vec2d& b, const Vec2d& c, int x, int y) {
+  Vec2d buffer[2][9];
+  int count = 3;
+  buffer[0][0] = a, buffer[0][1] = b, buffer[0][2] = c;
+  int from = 0;
+  for (int side = 0; side < 4 && count > 0; ++side) {
+    // Inside: x >= X0, x <= X1, y >= Y0, y <= Y1 in turn.
+    auto value = [&](const Vec2d& p) {
+      switch (side) {
+        case 0: return p.x - x;
+        case 1: return x + 1 - p.x;
+        case 2: return p.y - y;
+        default: return y + 1 - p.y;
+      }
+    };
+    const Vec2d* in = buffer[from];
+    Vec2d* out = buffer[1 - from];
+    int n = 0;
+    for (int i = 0; i < count; ++i) {
+      const Vec2d& p = in[i];
+      const Vec2d& q = in[(i + 1) % count];
+      const double vp = value(p), vq = value(q);
+      if (vp >= 0) out[n++] = p;
+      if ((vp >= 0) != (vq >= 0)) out[n++] = p + (q - p) * (vp / (vp - vq));
+    }
+    count = n;
+    from = 1 - from;
+  }
+  double twice = 0;
+  const Vec2d* poly = buffer[from];
+  for (int i = 0; i < count; ++i) {
+    const Vec2d& p = poly[i];
+    const Vec2d& q = poly[(i + 1) % count];
+    twice += p.x * q.y - q.x * p.y;
+  }
+  return 0.5 * std::abs(twice);
+}
+
+}  // namespace
+
+void Splat(std::span<const FilmTriangle> triangles, const FilmRaster& r, double weight, float* image, int stride) {
+  const double pixel_area = r.w * r.h;
+  auto add = [&](int x, int y, double v) {
+    if (x >= 0 && y >= 0 && x < r.width && y < r.height) image[(size_t(y) * r.width + x) * stride] += float(v);
+  };
+  for (const FilmTriangle& t : triangles) {
+    // Pixel coordinates.
+    const Vec2d a((t.a.x - r.x0) / r.w, (t.a.y - r.y0) / r.h), b((t.b.x - r.x0) / r.w, (t.b.y - r.y0) / r.h),
+        c((t.c.x - r.x0) / r.w, (t.c.y - r.y0) / r.h);
+    const double area = t.Area() / pixel_area;  // in pixels
+    const int x0 = int(std::floor(std::min({a.x, b.x, c.x}))), x1 = int(std::floor(std::max({a.x, b.x, c.x})));
+    const int y0 = int(std::floor(std::min({a.y, b.y, c.y}))), y1 = int(std::floor(std::max({a.y, b.y, c.y})));
+    // Within one pixel, or too thin to clip reliably: all of it there.
+    if ((x0 == x1 && y0 == y1) || area < 1e-9) {
+      const Vec2d m = (a + b + c) * (1.0 / 3);
+      add(int(std::floor(m.x)), int(std::floor(m.y)), weight * t.flux / pixel_area);
+      continue;
+    }
+    // Each pixel gets the flux times the share of the triangle's area that lies in it.
+    const double per_area = weight * t.flux / (area * pixel_area);
+    for (int y = std::max(y0, 0); y <= std::min(y1, r.height - 1); ++y)
+      for (int x = std::max(x0, 0); x <= std::min(x1, r.width - 1); ++x) {
+        const double overlap = OverlapArea(a, b, c, x, y);
+        if (overlap > 0) add(x, y, per_area * overlap);
+      }
+  }
+}
+
+}  // namespace objektiv

@@ -1,0 +1,75 @@
+// Ghosts: the images a lens forms of a bright point with light reflected twice inside it.
+// Light travelling toward the film is partly reflected at surface `first` (R = 4% for bare
+// glass, far less coated), travels back, is partly reflected again at an earlier surface
+// `second`, and goes on to the film, refracted everywhere else: a second, usually defocused
+// image of the point shaped by the stop it crossed (three times, or once), tinted by the two
+// coatings' reflectance. A lens of n reflecting surfaces has n (n - 1) / 2 of them; paths with
+// four or more reflections carry R^2 less again (veiling glare) and are not traced here.
+//
+// Each ghost is found by a bundle of rays (Hullin et al. 2011, "Physically-based real-time lens
+// flare rendering"): a square grid of rays from the source over the front element, each traced
+// exactly along the ghost's path; each grid cell whose four corners all reach the film is a
+// quadrilateral there carrying the cell's flux, and its irradiance is that flux over the
+// quadrilateral's area (the bundle's change of cross-section: where a ghost is focused, it is
+// bright). The grid first spans the front element coarsely, then, finer, only the part whose
+// rays get through; cells that lie across the edge of what gets through are split in four,
+// three times over, so that the ghost's outline follows the stop's.
+#pragma once
+#include <span>
+#include <vector>
+
+#include "base/vec.h"
+#include "optics/lens_tracer.h"
+
+namespace objektiv {
+
+struct Ghost {
+  int first = 0, second = 0;  // the surfaces that reflect, first > second
+};
+
+// Every two-reflection path: each pair of surfaces where the index changes.
+std::vector<Ghost> TwoReflectionGhosts(const LensSystem& lens);
+// A ghost's path: surfaces 0..first toward the film (reflected at first), first-1..second
+// toward the object (reflected at second), second+1..n-1 toward the film.
+std::vector<SurfaceVisit> GhostPath(const LensSystem& lens, const Ghost& ghost);
+
+// A point light in lens space (mm): at a point in front of the lens, or at infinity in a
+// direction (unit, d.z > 0, the way its light travels).
+struct PointSource {
+  Vec3d position{0, 0, -1e6};
+  bool at_infinity = false;
+  Vec3d direction{0, 0, 1};
+  static PointSource At(Vec3d p) { return {p, false, {0, 0, 1}}; }
+  static PointSource Distant(Vec3d d) { return {{0, 0, 0}, true, d}; }
+};
+
+// A triangle on the film (lens-space x, y, mm) and the flux it carries: per unit intensity
+// (W/sr) of a point at a finite distance, per unit irradiance (W/mm^2, across the beam) of one
+// at infinity.
+struct FilmTriangle {
+  Vec2d a, b, c;
+  double flux;
+  double Area() const { return 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y)); }
+};
+
+// The ghost's bundle at one wavelength: `grid` x `grid` cells over the part of the front
+// element its light gets through (each cell split in two triangles).
+std::vector<FilmTriangle> GhostBundle(const LensSystem& lens, const Ghost& ghost, const PointSource& source,
+                                      double lambda_nm, int grid = 64);
+
+// The same for the light that goes straight through (no reflection): the point's own image,
+// for comparison (a ghost's share of the light is its flux over this one's).
+std::vector<FilmTriangle> DirectBundle(const LensSystem& lens, const PointSource& source, double lambda_nm, int grid = 64);
+
+// Rasterises triangles into an image of irradiance: pixel (x, y) covers film x in [x0 + x w,
+// x0 + (x + 1) w), y likewise with h; each pixel gets the flux that lands on it over its area:
+// each triangle's flux in proportion to the part of its area inside the pixel (the triangle
+// clipped exactly to the pixel), so every triangle's flux lands exactly once, without the
+// aliasing of sampling pixel centres. `weight` scales every value.
+struct FilmRaster {
+  int width = 0, height = 0;
+  double x0 = 0, y0 = 0, w = 1, h = 1;  // mm
+};
+void Splat(std::span<const FilmTriangle> triangles, const FilmRaster& raster, double weight, float* image, int stride = 1);
+
+}  // namespace objektiv
