@@ -124,7 +124,9 @@ void ApplyCoating(const float* __restrict table, RayBatch& b) {
   const float* __restrict cosines = b.coat_cos.data();
   float* __restrict trans = b.transmittance.data();
   for (size_t j = 0; j < n; ++j) {
-    const float y = std::min(std::max(cosines[j], 0.f), 1.f) * float(kCoatColumns - 1) * (1 - 1e-6f);
+    // Clamped so that a dead ray's garbage (NaN too) still indexes the table.
+    const float cos_i = cosines[j] > 0.f ? (cosines[j] < 1.f ? cosines[j] : 1.f) : 0.f;
+    const float y = cos_i * float(kCoatColumns - 1) * (1 - 1e-6f);
     const int32_t c = int32_t(y);
     const float fy = y - float(c);
     const float* row0 = table + rows[j] + c;

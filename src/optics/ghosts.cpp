@@ -209,12 +209,16 @@ void Splat(std::span<const FilmTriangle> triangles, const FilmRaster& r, double 
     const Vec2d a((t.a.x - r.x0) / r.w, (t.a.y - r.y0) / r.h), b((t.b.x - r.x0) / r.w, (t.b.y - r.y0) / r.h),
         c((t.c.x - r.x0) / r.w, (t.c.y - r.y0) / r.h);
     const double area = t.Area() / pixel_area;  // in pixels
-    const int x0 = int(std::floor(std::min({a.x, b.x, c.x}))), x1 = int(std::floor(std::max({a.x, b.x, c.x})));
-    const int y0 = int(std::floor(std::min({a.y, b.y, c.y}))), y1 = int(std::floor(std::max({a.y, b.y, c.y})));
+    // The pixel range it spans, clamped to just outside the image before it becomes an int.
+    auto pixel = [](double v, int size) { return int(std::floor(std::clamp(v, -1.0, double(size)))); };
+    const double lo_x = std::min({a.x, b.x, c.x}), hi_x = std::max({a.x, b.x, c.x});
+    const double lo_y = std::min({a.y, b.y, c.y}), hi_y = std::max({a.y, b.y, c.y});
+    if (!(hi_x >= 0 && lo_x < r.width && hi_y >= 0 && lo_y < r.height)) continue;  // off the film (or NaN)
+    const int x0 = pixel(lo_x, r.width), x1 = pixel(hi_x, r.width), y0 = pixel(lo_y, r.height), y1 = pixel(hi_y, r.height);
     // Within one pixel, or too thin to clip reliably: all of it there.
     if ((x0 == x1 && y0 == y1) || area < 1e-9) {
       const Vec2d m = (a + b + c) * (1.0 / 3);
-      add(int(std::floor(m.x)), int(std::floor(m.y)), weight * t.flux / pixel_area);
+      add(pixel(m.x, r.width), pixel(m.y, r.height), weight * t.flux / pixel_area);
       continue;
     }
     // Each pixel gets the flux times the share of the triangle's area that lies in it.
