@@ -69,9 +69,13 @@ class BundleTracer {
   }
 
   // The part of the start square [-reach, reach]^2 whose rays get through: found on a coarse
-  // grid (finer if it misses everything), widened by one coarse step. Empty: none do.
+  // grid, widened by one coarse step. Empty: none do. A grid of 32 has a step finer than a
+  // quarter of the entrance pupil unless the stop is small; then a finer grid, with the step
+  // a quarter of the pupil's diameter, makes sure (the light of any path crosses the stop).
   bool Region(Vec2d& lo, Vec2d& hi) const {
-    for (int n : {32, 128}) {
+    const double pupil = lens_.paraxial().entrance_pupil_diameter;
+    const int fine = pupil > 0 ? int(std::clamp(std::ceil(8 * reach_ / pupil), 32.0, 256.0)) : 256;
+    for (int n : {32, fine}) {
       const double step = 2 * reach_ / n;
       lo = Vec2d(INFINITY, INFINITY), hi = Vec2d(-INFINITY, -INFINITY);
       for (int j = 0; j <= n; ++j)
@@ -86,6 +90,7 @@ class BundleTracer {
         hi = Vec2d(std::min(reach_, hi.x + step), std::min(reach_, hi.y + step));
         return true;
       }
+      if (fine == 32) break;  // the coarse grid was fine enough
     }
     return false;
   }
@@ -221,11 +226,26 @@ void Splat(std::span<const FilmTriangle> triangles, const FilmRaster& r, double 
       add(pixel(m.x, r.width), pixel(m.y, r.height), weight * t.flux / pixel_area);
       continue;
     }
-    // Each pixel gets the flux times the share of the triangle's area that lies in it.
+    // Each pixel gets the flux times the share of the triangle's area that lies in it: the
+    // whole pixel where its four corners lie inside all three edges, nothing where they all lie
+    // outside one, else the clipped area.
     const double per_area = weight * t.flux / (area * pixel_area);
+    const double orientation = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) >= 0 ? 1 : -1;
+    const Vec2d corners[3][2] = {{a, b}, {b, c}, {c, a}};
     for (int y = std::max(y0, 0); y <= std::min(y1, r.height - 1); ++y)
       for (int x = std::max(x0, 0); x <= std::min(x1, r.width - 1); ++x) {
-        const double overlap = OverlapArea(a, b, c, x, y);
+        bool all_in = true, any_out = false;
+        for (const auto& e : corners) {
+          // The edge function at the pixel's corners, positive inside.
+          const double ex = e[1].x - e[0].x, ey = e[1].y - e[0].y;
+          const double f00 = orientation * (ex * (y - e[0].y) - ey * (x - e[0].x));
+          const double lo = std::min({f00, f00 + orientation * ex, f00 - orientation * ey, f00 + orientation * (ex - ey)});
+          const double hi = std::max({f00, f00 + orientation * ex, f00 - orientation * ey, f00 + orientation * (ex - ey)});
+          all_in &= lo >= 0;
+          any_out |= hi <= 0;
+        }
+        if (any_out) continue;
+        const double overlap = all_in ? 1.0 : OverlapArea(a, b, c, x, y);
         if (overlap > 0) add(x, y, per_area * overlap);
       }
   }
