@@ -144,8 +144,10 @@ TEST(Coating, IdealCoatingHasItsTransmittanceAtEveryWavelengthAndAngle) {
   for (double l : {400.0, 700.0})
     for (double cos_i : {1.0, 0.3}) EXPECT_NEAR(c.Reflectance(l, cos_i, true), 0.05, 1e-15);
   EXPECT_EQ(c.Reflectance(550, 0.3, false), 1);  // beyond the critical angle from the glass
-  EXPECT_FALSE(FindBuiltInCoating("I.0"));
-  EXPECT_FALSE(FindBuiltInCoating("MgF2@9"));
+  EXPECT_THROW(FindBuiltInCoating("I.0"), InputError);     // said so, not "unknown"
+  EXPECT_THROW(FindBuiltInCoating("MgF2@9"), InputError);
+  EXPECT_THROW(FindBuiltInCoating("multi@x"), InputError);
+  EXPECT_FALSE(FindBuiltInCoating("MgF2x"));
   EXPECT_TRUE(FindBuiltInCoating("mgf2"));        // names compare without case
   EXPECT_FALSE(*FindBuiltInCoating("uncoated"));  // bare: no coating object
 }
@@ -220,6 +222,7 @@ TEST(CoatedLens, BadCoatingsNameTheFileAndLine) {
       {"coating X design=500 design=600 MgF2:0.25\n", "u.lens:1: design= is given twice"},
       {"default_coating: MgF2\ndefault_coating: multi\n", "u.lens:2: default_coating is given twice (first on line 1)"},
       {"default_coating: Y\n", "u.lens:1: unknown coating 'Y'"},
+      {"default_coating: MgF2@100\n", "u.lens:1: coating 'MgF2@100': the design wavelength after @ is a number of nm from 200 to 2000"},
   };
   for (const Case& c : cases) {
     try {

@@ -43,13 +43,15 @@ const std::vector<Material>& Materials() {
   return materials;
 }
 
-// "NAME" or "NAME@NM" (a design wavelength in the visible range): the wavelength, 550 without one.
+// "NAME" or "NAME@NM" (a design wavelength from 200 to 2000 nm): the wavelength, 550 without
+// one. Throws InputError for NAME@ and something else.
 std::optional<double> DesignSuffix(std::string_view name, std::string_view base) {
   if (name.size() < base.size() || !SameName(name.substr(0, base.size()), base)) return std::nullopt;
   if (name.size() == base.size()) return 550.0;
   if (name[base.size()] != '@') return std::nullopt;
   std::optional<double> nm = ParseFiniteNumber(std::string(name.substr(base.size() + 1)));
-  if (!nm || *nm < 200 || *nm > 2000) return std::nullopt;
+  if (!nm || *nm < 200 || *nm > 2000)
+    throw InputError(fmt::format("coating '{}': the design wavelength after @ is a number of nm from 200 to 2000", name));
   return nm;
 }
 
@@ -84,7 +86,8 @@ std::optional<std::shared_ptr<const Coating>> FindBuiltInCoating(std::string_vie
   if (name.size() > 2 && (name[0] == 'I' || name[0] == 'i') && name[1] == '.' &&
       std::all_of(name.begin() + 2, name.end(), ::isdigit) && name.size() <= 12) {
     double t = std::stod("0" + text.substr(1));
-    if (t > 0) return std::make_shared<const Coating>(Coating::Ideal(text, t));
+    if (!(t > 0)) throw InputError(fmt::format("coating '{}': an ideal coating's transmittance must be above 0 (I.95)", name));
+    return std::make_shared<const Coating>(Coating::Ideal(text, t));
   }
   return std::nullopt;
 }

@@ -37,6 +37,8 @@ std::shared_ptr<const Glass> FindCoatingMaterial(std::string_view name);
 std::string CoatingMaterialNames();
 
 // A built-in coating by name: nothing if the name is unknown; a null pointer for none/uncoated.
+// Throws InputError (without a location) for a built-in's name with a parameter out of range
+// (MgF2@100, I.0).
 std::optional<std::shared_ptr<const Coating>> FindBuiltInCoating(std::string_view name);
 // "none, MgF2[@NM], multi[@NM], I.xx" for messages.
 std::string BuiltInCoatingNames();

@@ -55,7 +55,7 @@ struct FileCoatings {
   void Define(const std::vector<std::string>& f, const GlassCatalog& glasses, const std::string& path, int line) {
     if (f.size() < 3) throw MakeInputError(path, line, "a coating line is: coating NAME [design=NM] MATERIAL:THICKNESS...");
     const std::string& name = f[1];
-    if (FindBuiltInCoating(name)) throw MakeInputError(path, line, "coating '{}' is built in; give yours another name", name);
+    if (BuiltIn(name, path, line)) throw MakeInputError(path, line, "coating '{}' is built in; give yours another name", name);
     for (const Defined& d : defined)
       if (SameCoatingName(d.coating->name(), name))
         throw MakeInputError(path, line, "coating '{}' is defined twice (first on line {}; names compare without case)", name, d.line);
@@ -68,11 +68,19 @@ struct FileCoatings {
         d.used = true;
         return d.coating;
       }
-    if (std::optional<std::shared_ptr<const Coating>> c = FindBuiltInCoating(name)) return *c;
+    if (std::optional<std::shared_ptr<const Coating>> c = BuiltIn(name, path, line)) return *c;
     std::string mine;
     for (const Defined& d : defined) mine += (mine.empty() ? "" : ", ") + d.coating->name();
     throw MakeInputError(path, line, "unknown coating '{}' (built in: {}{}{}; a coating line must define it before use)",
                          name, BuiltInCoatingNames(), mine.empty() ? "" : "; defined in this file: ", mine);
+  }
+  // A built-in coating, with this line named on a bad parameter.
+  static std::optional<std::shared_ptr<const Coating>> BuiltIn(const std::string& name, const std::string& path, int line) {
+    try {
+      return FindBuiltInCoating(name);
+    } catch (const InputError& e) {
+      throw MakeInputError(path, line, "{}", e.what());
+    }
   }
   void WarnUnused(const std::string& path) const {
     for (const Defined& d : defined)

@@ -190,7 +190,13 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
     }
     if (!z.coat.empty()) {
       // Zemax's MGF2 is a quarter wave of MgF2, as ours; its other COATING.DAT stacks are not known here.
-      if (std::optional<std::shared_ptr<const Coating>> c = FindBuiltInCoating(z.coat))
+      std::optional<std::shared_ptr<const Coating>> c;
+      try {
+        c = FindBuiltInCoating(z.coat);
+      } catch (const InputError& e) {
+        throw MakeInputError(path, z.coat_line, "{}", e.what());
+      }
+      if (c)
         s.coating = *c;
       else
         spdlog::warn("{}:{}: coating {} is unknown (known: {}); the surface is traced bare", path, z.coat_line, z.coat,
