@@ -122,7 +122,10 @@ TEST(Ply, BrokenFilesAreErrors) {
        "property float v\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
        "0 0 0 0 0\n1 0 0 inf 0\n0 1 0 0 0\n3 0 1 2\n",
        "non-finite texture coordinate"},
-      {"lines.ply", head + verts + "2 0 1\n", "mesh has no triangles"},
+      // Faces of fewer than three corners: a face of none crashed Assimp's reader (found by the
+      // fuzzer: fuzz/regressions/mesh_ply/crash-b09c9da49bdc).
+      {"lines.ply", head + verts + "2 0 1\n", ":13: face 0 has 2 corners (a face needs at least 3)"},
+      {"trailing_binary.ply", binary + "xyz", ": 3 bytes after the last record"},
       // Each record on its own line, as Assimp reads them: a short or a long row (the fuzzer's
       // "-1 1-1" row put a 57-digit list length where Assimp read it: 3.8 GB allocated).
       {"short_row.ply", head + "0 0\n0 1 0 0\n0 1 0\n3 0 1 2\n", ":10: vertex 0 has fewer values on its line"},

@@ -98,6 +98,15 @@ PlyLayout ReadHeader(const std::string& bytes, const std::string& path, size_t* 
   return h;
 }
 
+// A face's list of corners: fewer than three make no polygon (Assimp's reader crashed on
+// faces of none).
+bool IsCornerList(const PlyElement& e, const PlyProperty& p) {
+  return e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index");
+}
+InputError TooFewCorners(const std::string& path, int line, const PlyElement& e, int64_t r, uint64_t n) {
+  return MakeInputError(path, line, "{} {} has {} corners (a face needs at least 3)", e.name, r, n);
+}
+
 // The largest list length a count of this type can hold (at most INT_MAX).
 int64_t MaxListLength(const PlyProperty& p) {
   const int bits = 8 * p.count_size - (p.count_signed ? 1 : 0);
@@ -142,6 +151,7 @@ void CheckAsciiBody(const std::string& bytes, size_t pos, int line, const PlyLay
         if (!items)
           throw MakeInputError(path, token_line, "'{}' is not a list length from 0 to {} ({} {})", Shown(t), MaxListLength(p),
                                e.name, r);
+        if (*items < 3 && IsCornerList(e, p)) throw TooFewCorners(path, token_line, e, r, uint64_t(*items));
         for (int k = 0; k < *items; ++k) {
           if (token().empty())
             throw MakeInputError(path, token_line, "the file ends in {} {} of {} (declared on line {})", e.name, r, e.count, e.line);
@@ -172,9 +182,12 @@ void CheckBinaryBody(const std::string& bytes, size_t pos, const PlyLayout& h, c
         pos += size_t(p.count_size);
         if (p.count_signed && (n >> (8 * p.count_size - 1)))
           throw MakeInputError(path, 0, "a negative list length in {} {}", e.name, r);
+        if (n < 3 && IsCornerList(e, p)) throw TooFewCorners(path, 0, e, r, n);
         if ((bytes.size() - pos) / size_t(p.size) < n) throw ends();
         pos += size_t(n) * size_t(p.size);
       }
+  if (pos != bytes.size())
+    throw MakeInputError(path, 0, "{} bytes after the last record the header declares", bytes.size() - pos);
 }
 
 }  // namespace

@@ -5,7 +5,8 @@
 // comments (so that Assimp reads the same layout), and the body must hold every record the
 // header declares: for
 // ASCII, one value per property and the declared number of items per list; for binary, the
-// bytes of every property and list (their counts read as the header types them).
+// bytes of every property and list (their counts read as the header types them), and nothing
+// after; a face has at least three corners.
 #pragma once
 #include <cstdint>
 #include <string>
