@@ -64,9 +64,10 @@ TEST(Ghosts, BundleIrradianceMatchesLightTracing) {
   for (const Ghost& g : {Ghost{2, 0}, Ghost{10, 9}, Ghost{8, 4}}) {
     std::vector<float> bundle(216, 0.f);
     Splat(GhostBundle(lens, g, source, lambda, 256), bins, 1, bundle.data());
-    // Light tracing: N rays uniform over the square the bundles start from.
+    // Light tracing: N rays uniform over a square on the plane the bundles start from, wide
+    // enough for all the light that gets in.
     const LensSurface& front = lens.surface(0);
-    const double s = front.semi_diameter, start_z = std::min(0.0, front.Sag(s)) - 1;
+    const double s = 2 * front.semi_diameter, start_z = std::min(0.0, front.Sag(front.semi_diameter)) - 1;
     const std::vector<SurfaceVisit> path = GhostPath(lens, g);
     PCG32 rng(7, uint64_t(g.first * 16 + g.second));
     const int n = 400000;

@@ -46,8 +46,10 @@ struct LensArgs {
 std::pair<double, double> ParseSensor(const std::string& s) {
   double w = 0, h = 0;
   char x = 0;
-  if (std::sscanf(s.c_str(), "%lf%c%lf", &w, &x, &h) != 3 || (x != 'x' && x != 'X') || !(w > 0) || !(h > 0))
-    throw CLI::ValidationError("--sensor", "expects WIDTHxHEIGHT in mm, e.g. 36x24");
+  int used = 0;
+  if (std::sscanf(s.c_str(), "%lf%c%lf%n", &w, &x, &h, &used) != 3 || size_t(used) != s.size() || (x != 'x' && x != 'X') ||
+      !(w > 0 && w <= 1e4) || !(h > 0 && h <= 1e4))
+    throw CLI::ValidationError("--sensor", "expects WIDTHxHEIGHT in mm, each above 0 and at most 10000, e.g. 36x24");
   return {w, h};
 }
 
@@ -237,6 +239,9 @@ LensSetup SetUpStop(const LensArgs& a) {
   // Degrees reduced first: a turn by whole circles changes nothing, however large.
   const StopShape opening = StopShape::Iris(a.blades, a.blade_curvature, std::fmod(a.blade_rotation, 360.0) * M_PI / 180);
   LensPrescription lens = LoadLens(a.lens, GlassCatalog::Default());
+  const double efl = ComputeParaxial(lens, kLambdad).efl;
+  if (!std::isfinite(efl) || std::abs(efl) > 1e12)
+    throw InputError(fmt::format("{}: the lens has no optical power (afocal): it forms no image", a.lens));
   Recoat(lens, a.coating);
   try {
     return SetUpLens(std::move(lens), {a.fnumber, 0, opening}, {INFINITY, FocusRequest::From::kFilm, false});
@@ -267,6 +272,14 @@ int RunGhosts(const LensArgs& a) {
                               {"field_deg", a.field},
                               {"azimuth_deg", a.azimuth},
                               {"wavelength_nm", a.psf_wavelength > 0 ? nlohmann::ordered_json(a.psf_wavelength) : nlohmann::ordered_json("white (D65, 400-700 nm)")},
+                              {"blades", a.blades},
+                              {"blade_curvature", a.blade_curvature},
+                              {"blade_rotation_deg", a.blade_rotation},
+                              {"coating", a.coating ? nlohmann::ordered_json(*a.coating) : nlohmann::ordered_json("as the lens file says")},
+                              {"sensor", a.sensor},
+                              {"width", a.width},
+                              {"grid", a.grid},
+                              {"direct_share", picture.direct_share},
                               {"total_share", picture.total_share},
                               {"ghosts", ghosts},
                               {"output", a.output}};
@@ -274,9 +287,10 @@ int RunGhosts(const LensArgs& a) {
     std::printf("%s\n", j.dump(2).c_str());
     return 0;
   }
-  std::printf("%s at f/%.3g, a distant point %g deg off the axis: %zu two-reflection ghosts carry %.4g%% of its light -> %s\n",
-              a.lens.c_str(), setup.fnumber, a.field, picture.ghosts.size(), 100 * picture.total_share,
-              a.output.c_str());
+  std::printf("%s at f/%.3g%s%s, a distant point %g deg off the axis: of the light it sends onto the front element, "
+              "%zu two-reflection ghosts carry %.4g%% (its own image %.4g%%) -> %s\n",
+              a.lens.c_str(), setup.fnumber, a.coating ? ", coating " : "", a.coating ? a.coating->c_str() : "", a.field,
+              picture.ghosts.size(), 100 * picture.total_share, 100 * picture.direct_share, a.output.c_str());
   for (size_t i = 0; i < std::min<size_t>(8, picture.ghosts.size()); ++i)
     std::printf("  rows %2d and %2d: %.4g%%\n", picture.ghosts[i].ghost.first + 1, picture.ghosts[i].ghost.second + 1,
                 100 * picture.ghosts[i].share);

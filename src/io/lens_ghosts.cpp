@@ -15,6 +15,7 @@ namespace {
 struct OneWavelength {
   std::vector<double> picture;
   std::vector<double> shares;
+  double direct = 0;  // the point's own image's share
 };
 
 OneWavelength AtWavelength(const LensSystem& lens, const std::vector<Ghost>& ghosts, const PointSource& source,
@@ -22,18 +23,18 @@ OneWavelength AtWavelength(const LensSystem& lens, const std::vector<Ghost>& gho
   OneWavelength out;
   out.picture.assign(size_t(raster.width) * raster.height, 0);
   out.shares.assign(ghosts.size(), 0);
-  double direct = 0;
-  for (const FilmTriangle& t : DirectBundle(lens, source, lambda_nm, grid)) direct += t.flux;
-  if (!(direct > 0)) return out;  // the point's light does not get through at all
+  // Shares of the light the point sends onto the front element.
+  const double incident = FrontElementFlux(lens, source);
+  for (const FilmTriangle& t : DirectBundle(lens, source, lambda_nm, grid)) out.direct += t.flux / incident;
   std::vector<std::vector<FilmTriangle>> bundles(ghosts.size());
   tbb::parallel_for(size_t(0), ghosts.size(), [&](size_t g) { bundles[g] = GhostBundle(lens, ghosts[g], source, lambda_nm, grid); });
   std::vector<float> image(out.picture.size(), 0.f);
-  // Irradiance times the pixel's area over the direct flux: the share of the light per pixel.
-  const double weight = raster.w * raster.h / direct;
+  // Irradiance times the pixel's area over the incident flux: the share of the light per pixel.
+  const double weight = raster.w * raster.h / incident;
   for (size_t g = 0; g < ghosts.size(); ++g) {
     double flux = 0;
     for (const FilmTriangle& t : bundles[g]) flux += t.flux;
-    out.shares[g] = flux / direct;
+    out.shares[g] = flux / incident;
     Splat(bundles[g], raster, weight, image.data());
   }
   std::copy(image.begin(), image.end(), out.picture.begin());
@@ -63,6 +64,7 @@ GhostPicture PictureGhosts(const LensSystem& lens, const GhostPictureRequest& q)
     for (size_t i = 0; i < one.picture.size(); ++i)
       for (int c = 0; c < 3; ++c) out.image.pixels[i * 3 + c] = float(one.picture[i]);
     shares = one.shares;
+    out.direct_share = one.direct;
   } else {
     // 25 nm steps: coatings' reflectances change slowly with the wavelength.
     const double step = 25;
@@ -71,6 +73,7 @@ GhostPicture PictureGhosts(const LensSystem& lens, const GhostPictureRequest& q)
     out.image = WhiteLightImage(raster.width, raster.height, step, [&](double l) {
       OneWavelength one = AtWavelength(lens, ghosts, source, raster, q.grid, l);
       for (size_t g = 0; g < ghosts.size(); ++g) shares[g] += weights[k].second * one.shares[g];
+      out.direct_share += weights[k].second * one.direct;
       ++k;
       return one.picture;
     });

@@ -1,8 +1,10 @@
 // The ghosts of a distant bright point as the sensor records them (`objektiv lens ghosts`): the
 // two-reflection ghosts of the lens as set up (stop, blades, coatings), each found by its ray
 // bundle (optics/ghosts.h), drawn at one wavelength or for white light, with each ghost's share
-// of the light: its flux over the flux of the point's own image. A pixel holds the share of
-// the point's light that the ghosts put on it.
+// of the light: its flux over the light the point sends onto the front element (so the point's
+// own image has a share below 1 too: the lens's transmittance and vignetting). A pixel holds
+// the share that the ghosts put on it; for white light, its luminance (Y) does (the RGB of a
+// saturated colour may have a negative channel).
 #pragma once
 #include <optional>
 #include <vector>
@@ -29,6 +31,7 @@ struct GhostPicture {
   Image image;
   std::vector<GhostShare> ghosts;  // brightest first
   double total_share = 0;
+  double direct_share = 0;  // the point's own image (luminance-weighted for white light)
 };
 
 GhostPicture PictureGhosts(const LensSystem& lens, const GhostPictureRequest& request);

@@ -36,8 +36,17 @@ class BundleTracer {
   BundleTracer(const LensSystem& lens, std::span<const SurfaceVisit> path, const PointSource& source, double lambda_nm)
       : lens_(lens), path_(path), source_(source), lambda_(lambda_nm) {
     const LensSurface& front = lens.surface(0);
-    start_z_ = lens.VertexZ(0) + std::min(0.0, front.Sag(front.semi_diameter)) - 1;
-    reach_ = front.semi_diameter;
+    const double rim_z = lens.VertexZ(0) + front.Sag(front.semi_diameter);
+    start_z_ = std::min(lens.VertexZ(0), rim_z) - 1;
+    // Oblique light reaches the front element displaced sideways from where it crosses the
+    // start plane: the square is centred where the light toward the element's middle depth
+    // crosses it, and widened by the displacement over the element's depth (a fisheye's deep
+    // front element at 60 degrees was missed entirely).
+    const Vec3d d = source.at_infinity ? source.direction : Normalize(Vec3d(0, 0, lens.VertexZ(0)) - source.position);
+    const double slope_x = d.z > 0 ? d.x / d.z : 0, slope_y = d.z > 0 ? d.y / d.z : 0;
+    const double middle = 0.5 * (lens.VertexZ(0) + rim_z) - start_z_, depth = std::abs(rim_z - lens.VertexZ(0)) + 1;
+    centre_ = Vec2d(-slope_x * middle, -slope_y * middle);
+    reach_ = front.semi_diameter + 0.5 * depth * std::max(std::abs(slope_x), std::abs(slope_y));
   }
 
   struct Corner {
@@ -80,14 +89,14 @@ class BundleTracer {
       lo = Vec2d(INFINITY, INFINITY), hi = Vec2d(-INFINITY, -INFINITY);
       for (int j = 0; j <= n; ++j)
         for (int i = 0; i <= n; ++i) {
-          const Vec2d p(-reach_ + i * step, -reach_ + j * step);
+          const Vec2d p(centre_.x - reach_ + i * step, centre_.y - reach_ + j * step);
           if (!Trace(p).alive) continue;
           lo = Vec2d(std::min(lo.x, p.x), std::min(lo.y, p.y));
           hi = Vec2d(std::max(hi.x, p.x), std::max(hi.y, p.y));
         }
       if (lo.x <= hi.x) {
-        lo = Vec2d(std::max(-reach_, lo.x - step), std::max(-reach_, lo.y - step));
-        hi = Vec2d(std::min(reach_, hi.x + step), std::min(reach_, hi.y + step));
+        lo = Vec2d(std::max(centre_.x - reach_, lo.x - step), std::max(centre_.y - reach_, lo.y - step));
+        hi = Vec2d(std::min(centre_.x + reach_, hi.x + step), std::min(centre_.y + reach_, hi.y + step));
         return true;
       }
       if (fine == 32) break;  // the coarse grid was fine enough
@@ -143,6 +152,7 @@ class BundleTracer {
   std::span<const SurfaceVisit> path_;
   PointSource source_;
   double lambda_, start_z_, reach_;
+  Vec2d centre_{0, 0};  // of the start square
 };
 
 }  // namespace
@@ -203,6 +213,14 @@ double OverlapArea(const Vec2d& a, const Vec2d& b, const Vec2d& c, int x, int y)
 }
 
 }  // namespace
+
+double FrontElementFlux(const LensSystem& lens, const PointSource& source) {
+  const double s = lens.surface(0).semi_diameter, area = M_PI * s * s;
+  if (source.at_infinity) return area * source.direction.z;
+  const Vec3d to = Vec3d(0, 0, lens.VertexZ(0)) - source.position;
+  const double r2 = Dot(to, to);
+  return area * std::abs(to.z) / (r2 * std::sqrt(r2));
+}
 
 void Splat(std::span<const FilmTriangle> triangles, const FilmRaster& r, double weight, float* image, int stride) {
   const double pixel_area = r.w * r.h;

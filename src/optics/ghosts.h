@@ -61,6 +61,10 @@ std::vector<FilmTriangle> GhostBundle(const LensSystem& lens, const Ghost& ghost
 // for comparison (a ghost's share of the light is its flux over this one's).
 std::vector<FilmTriangle> DirectBundle(const LensSystem& lens, const PointSource& source, double lambda_nm, int grid = 64);
 
+// The light the point sends onto the front element's clear aperture (per unit intensity, or
+// irradiance, as the bundles' flux): what a ghost's share of the light is measured against.
+double FrontElementFlux(const LensSystem& lens, const PointSource& source);
+
 // Rasterises triangles into an image of irradiance: pixel (x, y) covers film x in [x0 + x w,
 // x0 + (x + 1) w), y likewise with h; each pixel gets the flux that lands on it over its area:
 // each triangle's flux in proportion to the part of its area inside the pixel (the triangle
