@@ -263,7 +263,13 @@ int RunGhosts(const LensArgs& a) {
   q.grid = a.grid;
   if (a.psf_wavelength > 0) q.lambda_nm = a.psf_wavelength;
   const GhostPicture picture = PictureGhosts(setup.lens, q);
-  WriteExr(a.output, picture.image);
+  // What the picture is, in its header (wavelength 0: white light).
+  WriteExr(a.output, picture.image,
+           {{"objektiv:fnumber", setup.fnumber}, {"objektiv:field_deg", a.field}, {"objektiv:azimuth_deg", a.azimuth},
+            {"objektiv:wavelength_nm", a.psf_wavelength}, {"objektiv:blades", a.blades},
+            {"objektiv:sensor_width_mm", q.sensor_width}, {"objektiv:sensor_height_mm", q.sensor_height},
+            {"objektiv:grid", a.grid}, {"objektiv:total_share", picture.total_share},
+            {"objektiv:direct_share", picture.direct_share}});
   nlohmann::ordered_json ghosts = nlohmann::ordered_json::array();
   for (const GhostShare& g : picture.ghosts)
     ghosts.push_back({{"surfaces", {g.ghost.first + 1, g.ghost.second + 1}}, {"share", g.share}});
