@@ -260,6 +260,10 @@ int RunGhosts(const LensArgs& a) {
   q.azimuth_deg = a.azimuth;
   std::tie(q.sensor_width, q.sensor_height) = ParseSensor(a.sensor);
   q.width = a.width;
+  // The height follows the sensor's aspect: bounded as the width is.
+  if (double(a.width) * q.sensor_height / q.sensor_width > 16384)
+    throw CLI::ValidationError("--width", fmt::format("the picture would be {:.0f} pixels high for the {} sensor (at most 16384)",
+                                                      double(a.width) * q.sensor_height / q.sensor_width, a.sensor));
   q.grid = a.grid;
   if (a.psf_wavelength > 0) q.lambda_nm = a.psf_wavelength;
   const GhostPicture picture = PictureGhosts(setup.lens, q);
