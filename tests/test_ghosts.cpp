@@ -56,7 +56,8 @@ TEST(Ghosts, GlassPlateGhostCarriesTwoReflections) {
 TEST(Ghosts, BundleIrradianceMatchesLightTracing) {
   // The two estimators of the issue: the bundle's irradiance from its change of cross-section,
   // and rays shot at random over the front element, traced along the same path and binned.
-  // On an 18 x 12 grid of 2 mm bins over the sensor they agree within the light tracer's noise.
+  // On an 18 x 12 grid of 2 mm bins over the sensor, and in total, they agree within the light
+  // tracer's noise.
   const LensSystem lens = Set(LoadLens("dgauss.50mm", GlassCatalog::Default()), 4);
   const PointSource source = PointSource::Distant(Normalize(Vec3d(-std::sin(0.2), 0.05, std::cos(0.2))));
   const double lambda = 550;
@@ -87,11 +88,12 @@ TEST(Ghosts, BundleIrradianceMatchesLightTracing) {
       one_ray = std::max(one_ray, e);
       sum2[by * 18 + bx] += e * e;
     }
-    double total_bundle = 0, total_traced = 0;
+    double total_bundle = 0, total_traced = 0, total_variance = 0;
     int compared = 0;
     for (int b = 0; b < 216; ++b) {
       total_bundle += bundle[b];
       total_traced += sum[b];
+      total_variance += sum2[b];
       if (sum[b] == 0 && bundle[b] == 0) continue;
       // The standard error of the bin's sum (each ray adds e or 0), and one ray's worth where
       // the bin got few.
@@ -100,7 +102,9 @@ TEST(Ghosts, BundleIrradianceMatchesLightTracing) {
       ++compared;
     }
     EXPECT_GE(compared, 4) << g.first << "/" << g.second;
-    EXPECT_NEAR(total_bundle, total_traced, 0.01 * total_traced) << g.first << "/" << g.second;
+    // The totals over the sensor: within 4 standard errors of the light tracer's.
+    EXPECT_NEAR(total_bundle, total_traced, 4 * std::sqrt(total_variance)) << g.first << "/" << g.second;
+    EXPECT_LT(4 * std::sqrt(total_variance), 0.05 * total_traced);  // a test that can tell
   }
 }
 
@@ -111,7 +115,10 @@ TEST(Ghosts, CoatingsDimGhostsByTheirReflectances) {
   // little over the beam's angles; a multi-layer stack near its minimum most).
   const LensPrescription bare = LoadLens("dgauss.50mm", GlassCatalog::Default());
   const PointSource axial = PointSource::Distant({0, 0, 1});
-  for (auto [name, lambda] : {std::pair{"MgF2", 550.0}, std::pair{"multi", 450.0}, std::pair{"multi", 650.0}}) {
+  for (const auto& [coating, wavelength] : {std::pair{"MgF2", 550.0}, std::pair{"multi", 450.0}, std::pair{"multi", 650.0}}) {
+    // Plain copies: a structured binding cannot be captured by the lambdas below (clang).
+    const char* name = coating;
+    const double lambda = wavelength;
     LensPrescription coated_lens = bare;
     Recoat(coated_lens, *FindBuiltInCoating(name));
     const LensSystem b = Set(bare, 22), c = Set(coated_lens, 22);
