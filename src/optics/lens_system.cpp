@@ -45,7 +45,12 @@ ParaxialData LensSystem::Paraxial(double lambda_nm) const {
 }
 
 double LensSystem::SurfaceReflectance(int i, double lambda_nm, double cos_i, bool toward_film) const {
-  const double n_object = i > 0 ? surface(i - 1).IndexAfter(lambda_nm) : 1.0, n_film = surface(i).IndexAfter(lambda_nm);
+  return SurfaceReflectance(i, lambda_nm, cos_i, toward_film, i > 0 ? surface(i - 1).IndexAfter(lambda_nm) : 1.0,
+                            surface(i).IndexAfter(lambda_nm));
+}
+
+double LensSystem::SurfaceReflectance(int i, double lambda_nm, double cos_i, bool toward_film, double n_object,
+                                      double n_film) const {
   if (n_object == n_film) return 0;
   if (coated_[i]) return coated_[i]->Reflectance(lambda_nm, cos_i, toward_film == outer_faces_object_[i]);
   return toward_film ? FresnelReflectance(n_object, n_film, cos_i) : FresnelReflectance(n_film, n_object, cos_i);

@@ -49,6 +49,10 @@ class LensSystem {
   // thin-film stack's where coated; 0 where the media on both sides are the same, 1 beyond
   // the critical angle.
   double SurfaceReflectance(int i, double lambda_nm, double cos_i, bool toward_film) const;
+  // The same where the caller has the indices on the object and film sides at lambda_nm
+  // already (the exact tracer: each glass's formula evaluated once per surface, not twice).
+  double SurfaceReflectance(int i, double lambda_nm, double cos_i, bool toward_film, double n_object,
+                            double n_film) const;
   // The coating as it lies on surface i, or null (bare, or no change of medium there).
   const CoatedInterface* Coated(int i) const { return coated_[i] ? &*coated_[i] : nullptr; }
 

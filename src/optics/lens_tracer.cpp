@@ -139,7 +139,7 @@ TraceResult TraceVisits(const LensSystem& lens, const LensRay& in, double lambda
     Vec3d nrm = Normal(s, p);
     if (Dot(nrm, ray.d) > 0) nrm = -nrm;
     double eta = n1 / n2, cos_i = -Dot(nrm, ray.d);
-    double reflectance = lens.SurfaceReflectance(i, lambda_nm, cos_i, v.toward_film);
+    double reflectance = lens.SurfaceReflectance(i, lambda_nm, cos_i, v.toward_film, n_object_side, n_film_side);
     if (events) events->push_back({i, reflectance, cos_i});
     if (v.reflect) {
       result.surface_transmittance *= reflectance;
