@@ -15,6 +15,7 @@
 #include "base/output_file.h"
 #include "io/image_io.h"
 #include "io/scene_loader.h"
+#include "render/lens_layers.h"
 #include "render/renderer.h"
 
 namespace objektiv {
@@ -104,6 +105,44 @@ Film MakeFilm(const FilmSettings& f, double budget_gib) {
   }
 }
 
+// The lens's layers (render/lens_layers.h) beside the picture's R, G, B: primary.R, .G, .B,
+// ghosts.*, diffraction.* (EXR layers), where the effects are on; what their passes did in
+// the header and the log.
+void AddLensLayers(const LensLayers& layers, const ColorSpace& cs, float exposure, Image& image,
+                   std::vector<ImageAttribute>& header) {
+  if (layers.ghosts.empty() && layers.diffraction.empty()) return;
+  std::vector<std::pair<std::string, const std::vector<float>*>> extra = {{"primary", &layers.primary}};
+  if (!layers.ghosts.empty()) extra.push_back({"ghosts", &layers.ghosts});
+  if (!layers.diffraction.empty()) extra.push_back({"diffraction", &layers.diffraction});
+  const int base = image.NumChannels();
+  Image out(image.width, image.height, image.channels);
+  for (const auto& [name, xyz] : extra)
+    for (const char* c : {"R", "G", "B"}) out.channels.push_back(name + "." + c);
+  out.pixels.assign(size_t(out.width) * out.height * out.channels.size(), 0.f);
+  const size_t stride = out.channels.size();
+  for (size_t i = 0; i < size_t(out.width) * out.height; ++i)
+    for (int c = 0; c < base; ++c) out.pixels[i * stride + c] = image.pixels[i * base + c];
+  for (size_t l = 0; l < extra.size(); ++l) {
+    const Image rgb = XyzToImage(*extra[l].second, layers.width, layers.height, cs, exposure);
+    for (size_t i = 0; i < size_t(out.width) * out.height; ++i)
+      for (int c = 0; c < 3; ++c) out.pixels[i * stride + base + 3 * l + c] = rgb.pixels[i * 3 + c];
+  }
+  image = std::move(out);
+  header.push_back({"objektiv:flare_sources", layers.flare_sources});
+  if (!layers.ghosts.empty()) {
+    header.push_back({"objektiv:ghosts_traced", layers.ghosts_traced});
+    header.push_back({"objektiv:ghosts_culled", layers.ghosts_culled});
+    spdlog::info("ghosts: {} bright points, {} ghosts traced ({} culled as too dim), {:.2f} s", layers.flare_sources,
+                 layers.ghosts_traced, layers.ghosts_culled, layers.ghost_seconds);
+  }
+  if (!layers.diffraction.empty()) {
+    header.push_back({"objektiv:diffraction_fnumber", layers.fnumber});
+    header.push_back({"objektiv:diffraction_radius", layers.diffraction_radius});
+    spdlog::info("diffraction at working f/{:.3g}: kernel reaching {} pixels, {:.2f} s", layers.fnumber,
+                 layers.diffraction_radius, layers.diffraction_seconds);
+  }
+}
+
 int RunRender(const RenderArgs& a) {
   SetupLogging(a.quiet ? 0 : (a.verbose ? 2 : 1));
   std::map<std::string, std::string> defines;
@@ -144,6 +183,7 @@ int RunRender(const RenderArgs& a) {
   if (a.seed >= 0) setup.sampler.seed = uint64_t(a.seed);
   std::unique_ptr<Sampler> sampler = MakeSampler(setup.sampler);
   Film film = MakeFilm(fs_, a.max_memory_gib);
+  PrepareFilmForLensEffects(*setup.camera, film);
   RenderOptions opts;
   opts.spp_begin = 0;
   opts.spp_end = sampler->spp();
@@ -167,7 +207,9 @@ int RunRender(const RenderArgs& a) {
   std::vector<ImageAttribute> header = {{"objektiv:partial", int(stats.Partial())},
                                         {"objektiv:pixels", count(stats.pixels)},
                                         {"objektiv:pixels_completed", count(stats.pixels_completed)}};
-  Image linear = film.ToImage(*fs_.color_space, fs_.exposure);
+  LensLayers layers = ComposeLensLayers(*setup.scene, *setup.camera, film);
+  Image linear = XyzToImage(layers.Sum(), layers.width, layers.height, *fs_.color_space, fs_.exposure);
+  AddLensLayers(layers, *fs_.color_space, fs_.exposure, linear, header);
   WriteExr(exr.string(), linear, header);
   WritePng(png.string(), ApplyToneMap(linear, fs_.tonemap));
   if (!a.stats_json.empty()) WriteStatsJson(a.stats_json, stats, threads);

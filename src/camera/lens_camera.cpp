@@ -11,6 +11,7 @@ LensCamera::LensCamera(const Transform& to_world, int width, int height, const L
 }
 
 void LensCamera::SetOriginZ(double z) {
+  origin_z_ = z;
   const auto& m = to_world_.Matrix().m;
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) {
@@ -33,6 +34,22 @@ void LensCamera::SetOriginZ(double z) {
 double LensCamera::FilmRadius() const {
   return std::hypot(settings_.sensor_width / 2, settings_.sensor_height / 2) +
          std::hypot(settings_.shift.x, settings_.shift.y);
+}
+
+Vec3d LensCamera::LensSpacePoint(const Vec3f& world) const {
+  // Camera space (scene units) = mm_to_units (x, y, origin_z - z).
+  const Vec3d c = to_world_.Inverse().Point(Vec3d(world.x, world.y, world.z));
+  return {c.x / mm_to_units_, c.y / mm_to_units_, origin_z_ - c.z / mm_to_units_};
+}
+
+Vec3d LensCamera::LensSpaceDirection(const Vec3f& world) const {
+  const Vec3f c = to_world_.Inverse().Vector(world);
+  return Normalize(Vec3d(c.x, c.y, -c.z));
+}
+
+Vec2d LensCamera::PixelOf(Vec2d film) const {
+  return {((film.x - settings_.shift.x) / settings_.sensor_width + 0.5) * width_,
+          ((film.y + settings_.shift.y) / settings_.sensor_height + 0.5) * height_};
 }
 
 Vec2d LensCamera::FilmPoint(Vec2f p) const {

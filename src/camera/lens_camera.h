@@ -41,6 +41,20 @@ class LensCamera : public Camera {
   // Largest distance from the axis of a film point the image uses (mm).
   double FilmRadius() const;
 
+  // The light side of the mapping (what light arriving at the lens needs: flare, light
+  // paths). A world point in lens space (mm), and a world direction of travel as a unit
+  // lens-space direction.
+  Vec3d LensSpacePoint(const Vec3f& world) const;
+  Vec3d LensSpaceDirection(const Vec3f& world) const;
+  // A lens-space point (mm) in the world.
+  Vec3f WorldPoint(Vec3d lens) const { return WorldRay(lens, Vec3d(0, 0, -1)).o; }
+  // The continuous pixel position (full film) of a lens-space film point: FilmPoint's inverse.
+  Vec2d PixelOf(Vec2d film) const;
+  // The film pixel's size (mm) and the film point of pixel coordinates (0, 0).
+  Vec2d PixelSize() const { return {settings_.sensor_width / width_, settings_.sensor_height / height_}; }
+  Vec2d FilmOrigin() const { return {-settings_.sensor_width / 2 + settings_.shift.x, -settings_.sensor_height / 2 - settings_.shift.y}; }
+  const LensCameraSettings& settings() const { return settings_; }
+
  protected:
   // The lens-space film point (mm from the axis) for a continuous pixel position. The image
   // comes out upright: the film point is the pixel's point reflected through the axis.
@@ -64,6 +78,7 @@ class LensCamera : public Camera {
   Vec3f offset_;
   float dir_scale_ = 0;  // |dir_ d| for every unit d, when the same for all (else 0)
   double mm_to_units_;
+  double origin_z_ = 0;  // lens-space z of the camera-space origin
   float weight_scale_;  // (4 / pi) exposure_scale
 };
 

@@ -43,12 +43,18 @@ PupilBoundsOptions BoundsOptions(const LensSystem& lens, Vignetting v) {
 
 RealisticCamera::RealisticCamera(const Transform& to_world, int width, int height, const LensSystem& lens,
                                  const LensCameraSettings& settings)
-    : LensCamera(to_world, width, height, settings), fast_(MakeFastTracer(lens, settings.vignetting)),
+    : LensCamera(to_world, width, height, settings), lens_(lens), fast_(MakeFastTracer(lens, settings.vignetting)),
       bounds_(lens, FilmRadius(), BoundsOptions(lens, settings.vignetting)), film_z_(lens.FilmZ()),
       stop_radius_(float(lens.StopSemiDiameter())), dispersive_(IsDispersive(lens.prescription())),
       one_wavelength_(dispersive_ || (settings.transmission && HasCoating(lens))) {
   const ParaxialData& p = lens.paraxial();
   SetOriginZ(lens.VertexZ(0) + p.entrance_pupil_position);
+}
+
+double RealisticCamera::WorkingFNumber() const {
+  const ParaxialData& p = lens_.paraxial();
+  const double exit_pupil_z = lens_.VertexZ(lens_.SurfaceCount() - 1) + p.exit_pupil_position;
+  return std::abs(lens_.FilmZ() - exit_pupil_z) / p.exit_pupil_diameter;
 }
 
 bool RealisticCamera::StartRay(const CameraSample& s, SampledWavelengths& lambda, FloatRay& ray, float& weight) const {

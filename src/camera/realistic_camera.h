@@ -4,6 +4,7 @@
 // sensor's irradiance geometry, so that all vignetting and aberrations appear by themselves.
 #pragma once
 #include "camera/lens_camera.h"
+#include "camera/lens_effects.h"
 #include "optics/batch_tracer.h"
 #include "optics/pupil_bounds.h"
 
@@ -18,6 +19,14 @@ class RealisticCamera final : public LensCamera {
   void GenerateRays(std::span<const CameraSample> samples, std::span<SampledWavelengths> lambdas,
                     std::span<std::optional<CameraRay>> out, CameraRayCount& count) const override;
   const PupilBounds& bounds() const { return bounds_; }
+  // The lens as set up (stop, focus, coatings): what the flare passes trace.
+  const LensSystem& lens() const { return lens_; }
+  // Ghosts and diffraction, when asked for.
+  const LensEffects& effects() const { return effects_; }
+  void SetEffects(const LensEffects& e) { effects_ = e; }
+  // The working f-number (paraxial: the exit pupil's distance from the film over its
+  // diameter), which scales the diffraction pattern.
+  double WorkingFNumber() const;
   bool dispersive() const { return dispersive_; }
 
  private:
@@ -26,6 +35,8 @@ class RealisticCamera final : public LensCamera {
   bool StartRay(const CameraSample& s, SampledWavelengths& lambda, FloatRay& ray, float& weight) const;
   CameraRay Finish(const FloatRay& ray, float weight) const;
 
+  LensSystem lens_;
+  LensEffects effects_;
   BatchLensTracer fast_;
   PupilBounds bounds_;
   double film_z_;

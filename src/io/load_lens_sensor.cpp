@@ -37,6 +37,8 @@ std::string FormatKey(const std::string& name) {
 
 constexpr Named<LensModel> kLensModels[] = {
     {"real", LensModel::kReal}, {"thick", LensModel::kThick}, {"thin", LensModel::kThin}};
+constexpr Named<DiffractionScope> kDiffractionScopes[] = {
+    {"off", DiffractionScope::kOff}, {"emitters", DiffractionScope::kEmitters}, {"image", DiffractionScope::kImage}};
 constexpr Named<Vignetting> kVignettingModes[] = {{"full", Vignetting::kFull},
                                                   {"cos4", Vignetting::kNatural},
                                                   {"aperture", Vignetting::kOptical},
@@ -111,6 +113,32 @@ void WarnIfShiftedPastTheImageCircle(const Properties& p, const LensCameraSettin
                at.file, at.line, s.shift.x, s.shift.y, corner, circle);
 }
 
+// Ghosts and diffraction (camera/lens_effects.h); their tuning is said to do nothing without them.
+LensEffects ReadLensEffects(const Properties& p, LensModel model) {
+  LensEffects e;
+  e.ghosts = p.Bool("ghosts", false);
+  e.ghost_grid = int(p.IntIn("ghost_grid", 32, 4, 512));
+  e.ghost_cull = p.FloatIn("ghost_cull", 1e-3, 0, 1);
+  e.wavelengths = int(p.IntIn("flare_wavelengths", 16, 1, 64));
+  e.diffraction = p.Choice("diffraction", DiffractionScope::kOff, kDiffractionScopes);
+  auto warn = [&p](const char* name, const char* why) {
+    if (p.Has(name)) spdlog::warn("{}:{}: {} does nothing {}", p.LocOf(name).file, p.LocOf(name).line, name, why);
+  };
+  if (!e.ghosts) {
+    warn("ghost_grid", "without ghosts true");
+    warn("ghost_cull", "without ghosts true");
+  }
+  if (!e.Any()) warn("flare_wavelengths", "without ghosts or diffraction");
+  if (model != LensModel::kReal && e.Any()) {
+    const char* name = p.Has("ghosts") && e.ghosts ? "ghosts" : "diffraction";
+    spdlog::warn("{}:{}: {} needs lens_model 'real' (the ghosts and the diffraction come from the lens's surfaces and "
+                 "its exit pupil): ignored",
+                 p.LocOf(name).file, p.LocOf(name).line, name);
+    return {};
+  }
+  return e;
+}
+
 // The camera a <sensor type="realistic"> describes.
 std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b) {
   LensCameraSpec spec;
@@ -175,6 +203,8 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b
     throw ErrorAt(p.loc(), "{}", e.what());
   }
   WarnIfShiftedPastTheImageCircle(p, s, *camera);
+  const LensEffects effects = ReadLensEffects(p, spec.model);
+  if (auto* real = dynamic_cast<RealisticCamera*>(camera.get())) real->SetEffects(effects);
   return camera;
 }
 
@@ -202,7 +232,12 @@ SensorRegistry::PluginType RealisticSensorPlugin() {
            {"vignetting", kVignettingModes},
            {"transmission", PropType::kBoolean},
            {"coating", PropType::kString},
-           {"aperture_mask", PropType::kString}},
+           {"aperture_mask", PropType::kString},
+           {"ghosts", PropType::kBoolean},
+           {"ghost_grid", PropType::kInteger},
+           {"ghost_cull", PropType::kFloat},
+           {"flare_wavelengths", PropType::kInteger},
+           {"diffraction", kDiffractionScopes}},
           BuildLensCamera};
 }
 

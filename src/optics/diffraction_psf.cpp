@@ -1,4 +1,5 @@
 #include "optics/diffraction_psf.h"
+#include "optics/fftw_arrays.h"
 
 #include <fftw3.h>
 
@@ -13,23 +14,19 @@
 
 namespace objektiv {
 
-namespace {
-
-constexpr int kMaxFft = 4096;
-
-// FFTW's planner is not thread-safe.
-std::mutex& PlannerMutex() {
+std::mutex& FftwPlannerMutex() {
   static std::mutex m;
   return m;
 }
 
-struct FftwFree {
-  void operator()(void* p) const { fftw_free(p); }
-};
+namespace {
 
-// The pattern point-sampled on an n x n grid (n a power of two) of spacing `step_um`, the axis
-// at index (0, 0) (wrapped), as the fraction of the light per sample (summing to 1 over the
-// grid). The pupil is sampled with spacing delta = 2 lambda N / (n step) stop radii: the FFT's
+constexpr int kMaxFft = 4096;
+
+
+}  // namespace
+
+// The pupil is sampled with spacing delta = 2 lambda N / (n step) stop radii: the FFT's
 // frequency step then lands on the film at `step_um`.
 std::vector<double> SampledPattern(const PupilFunction& pupil, double lambda_um, double fnumber, double step_um, int n) {
   const double delta = 2 * lambda_um * fnumber / (n * step_um);  // stop radii per pupil sample
@@ -74,12 +71,12 @@ std::vector<double> SampledPattern(const PupilFunction& pupil, double lambda_um,
   if (!(light > 0)) throw std::invalid_argument("the stop lets no light through");
   fftw_plan plan;
   {
-    std::lock_guard<std::mutex> lock(PlannerMutex());
+    std::lock_guard<std::mutex> lock(FftwPlannerMutex());
     plan = fftw_plan_dft_r2c_2d(n, n, in.get(), out.get(), FFTW_ESTIMATE);
   }
   fftw_execute(plan);
   {
-    std::lock_guard<std::mutex> lock(PlannerMutex());
+    std::lock_guard<std::mutex> lock(FftwPlannerMutex());
     fftw_destroy_plan(plan);
   }
   // Parseval: the sum of |DFT|^2 over the grid is n^2 times the pupil's power.
@@ -97,6 +94,8 @@ std::vector<double> SampledPattern(const PupilFunction& pupil, double lambda_um,
   return pattern;
 }
 
+namespace {
+
 // The pattern averaged over a square of `width` samples about each sample (exactly, for the
 // band-limited intensity: its spectrum times the box's, sinc(pi f width) per axis).
 void BoxFilter(std::vector<double>& pattern, int n, double width) {
@@ -106,7 +105,7 @@ void BoxFilter(std::vector<double>& pattern, int n, double width) {
   if (!data || !spectrum) throw std::invalid_argument("not enough memory for the diffraction FFT");
   fftw_plan forward, backward;
   {
-    std::lock_guard<std::mutex> lock(PlannerMutex());
+    std::lock_guard<std::mutex> lock(FftwPlannerMutex());
     forward = fftw_plan_dft_r2c_2d(n, n, data.get(), spectrum.get(), FFTW_ESTIMATE);
     backward = fftw_plan_dft_c2r_2d(n, n, spectrum.get(), data.get(), FFTW_ESTIMATE);
   }
@@ -127,7 +126,7 @@ void BoxFilter(std::vector<double>& pattern, int n, double width) {
   }
   fftw_execute(backward);
   std::copy(data.get(), data.get() + size_t(n) * n, pattern.begin());
-  std::lock_guard<std::mutex> lock(PlannerMutex());
+  std::lock_guard<std::mutex> lock(FftwPlannerMutex());
   fftw_destroy_plan(forward);
   fftw_destroy_plan(backward);
 }

@@ -40,6 +40,12 @@ struct PsfImage {
 // of pitch `pitch_um`. Throws std::invalid_argument for sizes or scales it cannot sample.
 PsfImage FraunhoferPsf(const PupilFunction& pupil, double lambda_nm, double fnumber, double pitch_um, int size);
 
+// The pattern point-sampled on an n x n grid (n a power of two, at least 256) of spacing
+// `step_um`, the axis at index (0, 0) (indices wrap: -1 is n - 1), as the fraction of the
+// light per sample (summing to 1 over the grid). Unaliased where the pupil spans at most half
+// the grid: step_um <= lambda N / 2.
+std::vector<double> SampledPattern(const PupilFunction& pupil, double lambda_um, double fnumber, double step_um, int n);
+
 // The radius (um) of the first minimum of the pattern's azimuthal mean about the axis (from
 // point samples 1/16 lambda N apart): for a round stop its first dark ring, 1.22 lambda N.
 // NaN if there is none within 4 lambda N.

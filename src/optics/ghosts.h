@@ -75,5 +75,7 @@ struct FilmRaster {
   double x0 = 0, y0 = 0, w = 1, h = 1;  // mm
 };
 void Splat(std::span<const FilmTriangle> triangles, const FilmRaster& raster, double weight, float* image, int stride = 1);
+// The same into three interleaved channels at once, each with its own weight.
+void SplatColour(std::span<const FilmTriangle> triangles, const FilmRaster& raster, const Vec3d& weight, float* image);
 
 }  // namespace objektiv

@@ -74,6 +74,12 @@ class BlockContext {
   void AddSample(Vec2i pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float filter_weight) {
     if (Finite(L)) film_.AddSample(pixel, L, lambda, filter_weight);
   }
+  // The part of a camera sample that came straight from an emitter, when the film keeps it
+  // apart (Film::KeepEmitted).
+  bool KeepsEmitted() const { return film_.keeps_emitted(); }
+  void AddEmitted(Vec2i pixel, const SampledSpectrum& Le, const SampledWavelengths& lambda, float filter_weight) {
+    if (!Le.HasNaN() && !Le.HasInf()) film_.AddEmitted(pixel, Le, lambda, filter_weight);
+  }
   // A contribution at a continuous film position (full-film pixel coordinates, as
   // CameraSample::p_film), spread over the pixels by the filter. The image shows the sum of a
   // pixel's splats divided by the samples per pixel of the render: an integrator that traces

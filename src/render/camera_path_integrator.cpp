@@ -2,6 +2,7 @@
 // first hits together, then each sample's path estimated by Li.
 #include <vector>
 
+#include "render/direct_lighting.h"
 #include "render/integrator.h"
 
 namespace objektiv {
@@ -25,10 +26,19 @@ struct CameraBatch {
 };
 }  // namespace
 
+SampledSpectrum CameraPathIntegrator::DirectEmission(const Ray& ray, const std::optional<SurfaceInteraction>& hit,
+                                                     const SampledWavelengths& lambda) const {
+  SampledSpectrum Le(0.f);
+  if (hit) return SegmentTransmittance(ray, *hit, lambda) * EmittedRadiance(*hit, lambda);
+  for (const InfiniteLight* light : scene_.infinite_lights()) Le += light->Le(ray.d, lambda);
+  return Le;
+}
+
 void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
   const PixelBlock& block = ctx.block();
   const Camera& camera = ctx.camera();
   const bool lens_sample = camera.UsesLensSample();
+  const bool keep_emitted = ctx.KeepsEmitted();
   CameraBatch b(ctx.sampler());
   ctx.ForEachPixel([&](Vec2i pixel) {
     for (int s0 = block.sample_begin; s0 < block.sample_end; s0 += kCameraBatch) {
@@ -52,6 +62,10 @@ void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
       for (int k = 0; k < n; ++k) {
         const std::optional<CameraRay>& cr = b.rays[k];
         SampledSpectrum L(0.f);
+        // What the camera sees of emitters directly (before Li, which may drop wavelengths).
+        if (cr && keep_emitted)
+          ctx.AddEmitted(pixel, cr->weight * DirectEmission(cr->ray, b.first_hits[k], b.lambdas[k]), b.lambdas[k],
+                         b.filter_samples[k].weight);
         if (cr) L = cr->weight * Li(cr->ray, b.first_hits[k], b.lambdas[k], b.samplers[k], ctx);
         ctx.AddSample(pixel, L, b.lambdas[k], b.filter_samples[k].weight);
       }

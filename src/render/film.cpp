@@ -52,24 +52,48 @@ void Film::AddSplat(Vec2f p_film, const SampledSpectrum& L, const SampledWavelen
     }
 }
 
-Image Film::ToImage(const ColorSpace& cs, float exposure_stops) const {
-  Image img(crop_.Width(), crop_.Height(), {"R", "G", "B"});
-  float scale = std::exp2(exposure_stops);
-  for (int y = 0; y < crop_.Height(); ++y)
-    for (int x = 0; x < crop_.Width(); ++x) {
-      const size_t i = size_t(y) * crop_.Width() + x;
-      const Pixel& px = pixels_[i];
-      const double* splat = &splat_xyz_[3 * i];
-      Vec3f xyz(0.f);
-      for (int c = 0; c < 3; ++c) {
-        double v = px.weight != 0 ? px.xyz[c] / px.weight : 0;
-        // (Only where splats landed: adding zero would turn a -0 into +0.)
-        if (splat[c] != 0 && samples_per_pixel_ > 0) v += splat[c] / double(samples_per_pixel_);
-        xyz[c] = float(v);
-      }
-      Vec3f rgb = cs.ToRGB(xyz) * scale;
-      for (int c = 0; c < 3; ++c) img.At(x, y, c) = rgb[c];
+void Film::AddEmitted(Vec2i pixel, const SampledSpectrum& Le, const SampledWavelengths& lambda, float weight) {
+  if (emitted_xyz_.empty()) return;
+  const Vec3f xyz = SampledToXYZ(Le, lambda);
+  double* sum = &emitted_xyz_[3 * Index(pixel)];
+  for (int c = 0; c < 3; ++c) sum[c] += double(weight) * xyz[c];
+}
+
+std::vector<float> Film::Xyz() const {
+  std::vector<float> out(3 * pixels_.size());
+  for (size_t i = 0; i < pixels_.size(); ++i) {
+    const Pixel& px = pixels_[i];
+    const double* splat = &splat_xyz_[3 * i];
+    for (int c = 0; c < 3; ++c) {
+      double v = px.weight != 0 ? px.xyz[c] / px.weight : 0;
+      // (Only where splats landed: adding zero would turn a -0 into +0.)
+      if (splat[c] != 0 && samples_per_pixel_ > 0) v += splat[c] / double(samples_per_pixel_);
+      out[3 * i + c] = float(v);
     }
+  }
+  return out;
+}
+
+std::vector<float> Film::EmittedXyz() const {
+  std::vector<float> out(3 * pixels_.size(), 0.f);
+  if (emitted_xyz_.empty()) return out;
+  for (size_t i = 0; i < pixels_.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      if (pixels_[i].weight != 0) out[3 * i + c] = float(emitted_xyz_[3 * i + c] / pixels_[i].weight);
+  return out;
+}
+
+Image Film::ToImage(const ColorSpace& cs, float exposure_stops) const {
+  return XyzToImage(Xyz(), crop_.Width(), crop_.Height(), cs, exposure_stops);
+}
+
+Image XyzToImage(const std::vector<float>& xyz, int width, int height, const ColorSpace& cs, float exposure_stops) {
+  Image img(width, height, {"R", "G", "B"});
+  const float scale = std::exp2(exposure_stops);
+  for (size_t i = 0; i < size_t(width) * height; ++i) {
+    const Vec3f rgb = cs.ToRGB(Vec3f(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2])) * scale;
+    for (int c = 0; c < 3; ++c) img.pixels[3 * i + c] = rgb[c];
+  }
   return img;
 }
 

@@ -36,6 +36,13 @@ class Film {
   // A camera sample of a pixel in the crop window. Not synchronised: one thread writes a pixel
   // at a time (the renderer gives each pixel to one block).
   void AddSample(Vec2i pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float weight);
+  // The part of a camera sample's radiance that came straight from an emitter (what the first
+  // hit emits, or an environment seen directly), kept apart when asked for (KeepEmitted):
+  // the light the stop's diffraction spreads (render/diffraction_glare.h). Given with the
+  // sample's AddSample (same pixel, same weight), before or after it.
+  void KeepEmitted() { emitted_xyz_.assign(3 * pixels_.size(), 0.0); }
+  bool keeps_emitted() const { return !emitted_xyz_.empty(); }
+  void AddEmitted(Vec2i pixel, const SampledSpectrum& Le, const SampledWavelengths& lambda, float weight);
   // A contribution at a continuous film position (full-film pixel coordinates); the parts that
   // fall outside the crop window are dropped. Thread-safe: atomic adds in double. The sum of a
   // pixel's splats is exact up to double rounding, whose order is the order the threads happen
@@ -51,6 +58,10 @@ class Film {
   // Linear RGB in the given colour space, scaled by 2^exposure; crop-window sized: the
   // filtered camera samples plus the splats.
   Image ToImage(const ColorSpace& cs, float exposure_stops = 0) const;
+  // The film's XYZ (crop-window sized, interleaved): what ToImage shows before the colour space
+  // and the exposure; and the emitted part alone (KeepEmitted), weighted as the pixel's samples.
+  std::vector<float> Xyz() const;
+  std::vector<float> EmittedXyz() const;
 
   // Bytes of the accumulators for a crop window (allocated by the constructor).
   static uint64_t AccumulatorBytes(const CropWindow& crop) {
@@ -70,8 +81,12 @@ class Film {
   float inv_filter_integral_;
   std::vector<Pixel> pixels_;
   std::vector<double> splat_xyz_;  // 3 per pixel, added to through std::atomic_ref
+  std::vector<double> emitted_xyz_;  // 3 per pixel, weighted sums (like Pixel::xyz); empty unless kept
   int64_t samples_per_pixel_ = 0;
 };
+
+// Linear RGB in `cs`, scaled by 2^exposure, of an XYZ image (interleaved, width x height).
+Image XyzToImage(const std::vector<float>& xyz, int width, int height, const ColorSpace& cs, float exposure_stops = 0);
 
 // XYZ of a spectral sample (Monte Carlo estimate over the wavelength bundle).
 Vec3f SampledToXYZ(const SampledSpectrum& L, const SampledWavelengths& lambda);

@@ -35,6 +35,12 @@ class CameraPathIntegrator : public Integrator {
   // the camera) may be splatted through ctx.AddSplat.
   virtual SampledSpectrum Li(const Ray& ray, const std::optional<SurfaceInteraction>& first_hit,
                              SampledWavelengths& lambda, Sampler& sampler, BlockContext& ctx) const = 0;
+
+ private:
+  // The radiance along the camera ray straight from an emitter (Li's first term): what the
+  // first hit emits through the segment's absorption, or the environment on a miss.
+  SampledSpectrum DirectEmission(const Ray& ray, const std::optional<SurfaceInteraction>& hit,
+                                 const SampledWavelengths& lambda) const;
 };
 
 // Unidirectional path tracing with next-event estimation and multiple importance sampling.

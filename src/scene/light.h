@@ -46,6 +46,8 @@ class PointLight final : public Light {
   std::optional<LightSample> SampleLi(const Vec3f& ref, Vec2f u, const SampledWavelengths& lambda) const override;
   float Power() const override;
   bool IsDelta() const override { return true; }
+  const Vec3f& position() const { return p_; }
+  const Spectrum& intensity() const { return intensity_; }  // W/sr
 
  private:
   Vec3f p_;
@@ -60,6 +62,8 @@ class SpotLight final : public Light {
   float Power() const override;
   bool IsDelta() const override { return true; }
   float Falloff(const Vec3f& w_from_light) const;
+  const Vec3f& position() const { return p_; }
+  const Spectrum& intensity() const { return intensity_; }  // W/sr on the beam's axis
 
  private:
   Vec3f p_, dir_;
@@ -76,6 +80,8 @@ class DirectionalLight final : public Light {
   bool IsDelta() const override { return true; }
   bool IsInfinite() const override { return true; }
   void Preprocess(const Bounds3f& b) override { scene_radius_ = std::max(b.Radius(), 1e-3f); }
+  const Vec3f& direction() const { return dir_; }
+  const Spectrum& irradiance() const { return irradiance_; }
 
  private:
   Vec3f dir_;  // direction the light travels

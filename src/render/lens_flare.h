@@ -1,0 +1,39 @@
+// What the lens does with the scene's bright points besides forming the image the camera rays
+// trace: their ghosts (every two-reflection path through the lens as set up, each found by
+// its ray bundle: optics/ghosts.h) and, since camera rays never hit a point light, their own
+// images (the direct bundle: the lens's aberrations, transmittance and vignetting included).
+// Spectral: each bundle traced at `wavelengths` wavelengths evenly spread over 380..780 nm,
+// each weighted by the light's emission and the CIE matching functions; deterministic (no
+// noise: what is left is the grid's faceting and the wavelength steps).
+//
+// Culling: each ghost is first traced coarsely at 550 nm; a ghost whose mean irradiance (its
+// flux over its area) is below `cull` times the brightest ghost's is left out: it adds less
+// than that fraction of the brightest ghost's level wherever it lands.
+#pragma once
+#include <vector>
+
+#include "render/film.h"
+#include "render/flare_sources.h"
+
+namespace objektiv {
+
+struct FlareSettings {
+  bool ghosts = false;        // the two-reflection ghosts
+  bool light_images = false;  // the lights' own images
+  int grid = 32;              // rays per side of each bundle (edges subdivided further)
+  int wavelengths = 16;
+  double cull = 1e-3;
+};
+
+struct FlareImages {
+  int width = 0, height = 0;  // the crop window's
+  // CIE XYZ per pixel (interleaved), in the film's units (camera/lens_camera.h).
+  std::vector<float> ghosts, lights;
+  int sources = 0, ghosts_traced = 0, ghosts_culled = 0;  // ghosts per source, summed over sources
+  double seconds = 0;
+};
+
+FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const CropWindow& crop,
+                        const FlareSettings& settings);
+
+}  // namespace objektiv

@@ -1,0 +1,93 @@
+#include "render/lens_layers.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "camera/realistic_camera.h"
+#include "render/diffraction_glare.h"
+#include "render/lens_flare.h"
+
+namespace objektiv {
+
+namespace {
+
+const RealisticCamera* WithEffects(const Camera& camera) {
+  const auto* real = dynamic_cast<const RealisticCamera*>(&camera);
+  return real && real->effects().Any() ? real : nullptr;
+}
+
+void Add(std::vector<float>& to, const std::vector<float>& from) {
+  for (size_t i = 0; i < from.size(); ++i) to[i] += from[i];
+}
+
+// The stop's opening with the aperture mask over it, in stop radii.
+PupilFunction StopPupil(const RealisticCamera& camera) {
+  const StopShape& shape = camera.lens().stop_shape();
+  const ApertureMask* mask = camera.settings().aperture_mask.get();
+  return [&shape, mask](double u, double v) {
+    if (!shape.Contains(u, v)) return 0.0;
+    return mask ? double(mask->Transmittance(float(u), float(v))) : 1.0;
+  };
+}
+
+}  // namespace
+
+std::vector<float> LensLayers::Sum() const {
+  std::vector<float> sum = primary;
+  Add(sum, ghosts);
+  Add(sum, diffraction);
+  return sum;
+}
+
+void PrepareFilmForLensEffects(const Camera& camera, Film& film) {
+  if (const RealisticCamera* real = WithEffects(camera))
+    if (real->effects().diffraction == DiffractionScope::kEmitters) film.KeepEmitted();
+}
+
+LensLayers ComposeLensLayers(const Scene& scene, const Camera& camera, const Film& film) {
+  LensLayers out;
+  const CropWindow& crop = film.crop();
+  out.width = crop.Width(), out.height = crop.Height();
+  out.primary = film.Xyz();
+  const RealisticCamera* real = WithEffects(camera);
+  if (!real) return out;
+  const LensEffects& e = real->effects();
+
+  FlareSettings flare;
+  flare.ghosts = e.ghosts;
+  flare.light_images = true;
+  flare.grid = e.ghost_grid;
+  flare.wavelengths = e.wavelengths;
+  flare.cull = e.ghost_cull;
+  FlareImages f = RenderFlare(scene, *real, crop, flare);
+  out.flare_sources = f.sources, out.ghosts_traced = f.ghosts_traced, out.ghosts_culled = f.ghosts_culled;
+  out.ghost_seconds = f.seconds;
+  Add(out.primary, f.lights);
+  if (e.ghosts) out.ghosts = std::move(f.ghosts);
+
+  if (e.diffraction == DiffractionScope::kOff) return out;
+  const auto start = std::chrono::steady_clock::now();
+  // The light to spread: what came straight from emitters (the bright points' images with
+  // it), or everything.
+  std::vector<float> light;
+  if (e.diffraction == DiffractionScope::kEmitters) {
+    light = film.EmittedXyz();
+    Add(light, f.lights);
+  } else {
+    light = out.primary;
+    Add(light, out.ghosts);
+  }
+  out.fnumber = real->WorkingFNumber();
+  const Vec2d pitch = real->PixelSize() * 1e3;  // um
+  const int reach = int(std::ceil(std::hypot(crop.Width(), crop.Height())));
+  const DiffractionKernel kernel = MakeDiffractionKernel(StopPupil(*real), out.fnumber, pitch.x, pitch.y, reach, e.wavelengths);
+  out.diffraction_radius = kernel.radius;
+  std::vector<float> spread = light;
+  ApplyDiffraction(spread, out.width, out.height, kernel);
+  out.diffraction.resize(spread.size());
+  for (size_t i = 0; i < spread.size(); ++i) out.diffraction[i] = spread[i] - light[i];
+  out.diffraction_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace objektiv

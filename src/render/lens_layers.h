@@ -1,0 +1,34 @@
+// The layers of a render through a real lens with its effects (camera/lens_effects.h), in the
+// film's XYZ (crop-window sized, interleaved):
+// - primary: what the camera rays traced (the integrator's image), plus the bright points'
+//   own images through the lens;
+// - ghosts: the two-reflection ghosts of the bright points;
+// - diffraction: what the stop's diffraction changes: the diffracted light minus the same
+//   light undiffracted (negative where the pattern takes light away from a point's core);
+// - their sum: the picture.
+// Without effects, primary is the film's image and the others are empty.
+#pragma once
+#include <vector>
+
+#include "camera/camera.h"
+#include "render/film.h"
+#include "scene/scene.h"
+
+namespace objektiv {
+
+struct LensLayers {
+  int width = 0, height = 0;
+  std::vector<float> primary, ghosts, diffraction;  // ghosts, diffraction: empty when not asked for
+  std::vector<float> Sum() const;
+  // What the passes did, for the log and the header.
+  int flare_sources = 0, ghosts_traced = 0, ghosts_culled = 0, diffraction_radius = 0;
+  double fnumber = 0;  // working, of the diffraction pattern
+  double ghost_seconds = 0, diffraction_seconds = 0;
+};
+
+// Films that the effects need prepared before rendering (the emitted light kept apart).
+void PrepareFilmForLensEffects(const Camera& camera, Film& film);
+
+LensLayers ComposeLensLayers(const Scene& scene, const Camera& camera, const Film& film);
+
+}  // namespace objektiv

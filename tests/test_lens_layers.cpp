@@ -1,0 +1,162 @@
+// The realistic camera's lens effects in a render (render/lens_layers.h): a point light's own
+// image against a small sphere of the same intensity seen by camera rays, the diffraction
+// layer's energy, occluded lights, the ghosts' fall with the coatings, and the diffraction
+// kernel against the stop's PSF.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "camera/realistic_camera.h"
+#include "io/scene_loader.h"
+#include "optics/ghosts.h"
+#include "render/diffraction_glare.h"
+#include "render/lens_layers.h"
+#include "render/renderer.h"
+
+namespace objektiv {
+namespace {
+
+// A dgauss at f/4 looking down -z, focused at 3 m, on a 36 mm wide film of 96 x 64 pixels.
+std::string LayerScene(const std::string& sensor_extra, const std::string& content, int spp = 16) {
+  return fmt::format(R"(<scene version="3.0.0">
+  <integrator type="path"><integer name="max_depth" value="2"/></integrator>
+  <sensor type="realistic">
+    <string name="lens" value="dgauss.50mm"/>
+    <float name="fnumber" value="4"/>
+    <float name="focus_distance" value="3"/>
+    {}
+    <transform name="to_world"><lookat origin="0, 0, 0" target="0, 0, -1" up="0, 1, 0"/></transform>
+    <sampler type="independent"><integer name="sample_count" value="{}"/></sampler>
+    <film type="hdrfilm"><integer name="width" value="96"/><integer name="height" value="64"/><rfilter type="box"/></film>
+  </sensor>
+  {}
+</scene>)",
+                     sensor_extra, spp, content);
+}
+
+LensLayers RenderLayers(const std::string& xml) {
+  RenderSetup setup = LoadSceneFromString(xml, "layers.xml", {});
+  std::unique_ptr<Sampler> sampler = MakeSampler(setup.sampler);
+  Film film(setup.film.width, setup.film.height, setup.film.crop, setup.film.filter);
+  PrepareFilmForLensEffects(*setup.camera, film);
+  RenderOptions options;
+  options.spp_end = sampler->spp();
+  Render(*setup.camera, *setup.integrator, *sampler, film, options);
+  return ComposeLensLayers(*setup.scene, *setup.camera, film);
+}
+
+double TotalY(const std::vector<float>& xyz) {
+  double sum = 0;
+  for (size_t i = 1; i < xyz.size(); i += 3) sum += xyz[i];
+  return sum;
+}
+
+constexpr const char* kPointLight = R"(<emitter type="point"><point name="position" x="0.3" y="0.1" z="-3"/>
+    <spectrum name="intensity" value="1"/></emitter>)";
+
+TEST(LensLayers, PointLightImageCarriesTheLightOfASphereOfEqualIntensity) {
+  // A sphere of radius r and radiance L has intensity L pi r^2 toward the lens, as the point
+  // light has I = 1: the light of its image (camera rays, noisy) equals the point's (bundles).
+  const LensLayers point = RenderLayers(LayerScene(R"(<string name="diffraction" value="emitters"/>)", kPointLight));
+  const double r = 0.05, radiance = 1 / (M_PI * r * r);
+  const LensLayers sphere = RenderLayers(
+      LayerScene("", fmt::format(R"(<shape type="sphere"><point name="center" x="0.3" y="0.1" z="-3"/>
+        <float name="radius" value="{}"/><bsdf type="diffuse"><rgb name="reflectance" value="0"/></bsdf>
+        <emitter type="area"><spectrum name="radiance" value="{}"/></emitter></shape>)",
+                                 r, radiance),
+                 1024));
+  EXPECT_EQ(point.flare_sources, 1);
+  const double p = TotalY(point.primary), s = TotalY(sphere.primary);
+  ASSERT_GT(s, 0);
+  std::printf("point light image %.5g, sphere seen by camera rays %.5g (ratio %.4f)\n", p, s, p / s);
+  EXPECT_NEAR(p / s, 1, 0.02) << p << " vs " << s;
+  // The diffraction moves light, it makes none: the layer sums to nearly nothing (what the
+  // kernel spreads past the film's edges leaves).
+  EXPECT_LT(std::abs(TotalY(point.diffraction)), 0.01 * p);
+  // It takes light from the point's core into the pattern.
+  double most_negative = 0;
+  for (size_t i = 1; i < point.diffraction.size(); i += 3) most_negative = std::min<double>(most_negative, point.diffraction[i]);
+  EXPECT_LT(most_negative, 0);
+}
+
+TEST(LensLayers, OccludedLightsMakeNoFlare) {
+  const std::string wall = R"(<shape type="rectangle"><transform name="to_world"><scale x="2" y="2"/><translate z="-1"/></transform>
+    <bsdf type="diffuse"><rgb name="reflectance" value="0"/></bsdf></shape>)";
+  const LensLayers l = RenderLayers(LayerScene(R"(<boolean name="ghosts" value="true"/>)", std::string(kPointLight) + wall));
+  EXPECT_EQ(l.flare_sources, 0);
+  EXPECT_EQ(TotalY(l.ghosts), 0);
+  // Behind the camera: not in front of the lens.
+  const LensLayers behind = RenderLayers(LayerScene(R"(<boolean name="ghosts" value="true"/>)",
+                                                    R"(<emitter type="point"><point name="position" x="0" y="0" z="2"/>
+    <spectrum name="intensity" value="1"/></emitter>)"));
+  EXPECT_EQ(behind.flare_sources, 0);
+}
+
+// The ghosts' light, coated against bare, at one wavelength (580 nm), against the prediction
+// from the surfaces' reflectances at normal incidence: each ghost's bare flux times the product,
+// over the surfaces its path meets, of the coated over the bare factor (R where it reflects, 1
+// - R where it passes).
+TEST(LensLayers, GhostsFallAsTheCoatingsReflectancesPredict) {
+  const char* light = R"(<emitter type="point"><point name="position" x="0.05" y="0.03" z="-3"/>
+    <spectrum name="intensity" value="1"/></emitter>)";
+  auto ghosts = [&](const char* coating) {
+    return TotalY(RenderLayers(LayerScene(fmt::format(R"(<boolean name="ghosts" value="true"/>
+      <float name="ghost_cull" value="0"/><integer name="flare_wavelengths" value="1"/>
+      <float name="sensor_width" value="240"/><string name="coating" value="{}"/>)",
+                                                      coating),
+                                          light, 1))
+                      .ghosts);
+  };
+  const double bare = ghosts("none");
+  ASSERT_GT(bare, 0);
+  RenderSetup b = LoadSceneFromString(LayerScene(R"(<string name="coating" value="none"/>)", ""), "b.xml", {});
+  RenderSetup c = LoadSceneFromString(LayerScene(R"(<string name="coating" value="MgF2"/>)", ""), "c.xml", {});
+  const LensSystem& lb = dynamic_cast<const RealisticCamera&>(*b.camera).lens();
+  const LensSystem& lc = dynamic_cast<const RealisticCamera&>(*c.camera).lens();
+  const double lambda = 580;
+  const PointSource source = PointSource::At(dynamic_cast<const RealisticCamera&>(*b.camera).LensSpacePoint(Vec3f(0.05f, 0.03f, -3)));
+  double flux_bare = 0, flux_predicted = 0;
+  for (const Ghost& g : TwoReflectionGhosts(lb)) {
+    double f = 0;
+    for (const FilmTriangle& t : GhostBundle(lb, g, source, lambda, 32)) f += t.flux;
+    double ratio = 1;
+    for (const SurfaceVisit& v : GhostPath(lb, g)) {
+      const double rb = lb.SurfaceReflectance(v.surface, lambda, 1, v.toward_film);
+      const double rc = lc.SurfaceReflectance(v.surface, lambda, 1, v.toward_film);
+      ratio *= v.reflect ? rc / rb : (1 - rc) / (1 - rb);
+    }
+    flux_bare += f;
+    flux_predicted += f * ratio;
+  }
+  const double predicted = flux_predicted / flux_bare, rendered = ghosts("MgF2") / bare;
+  std::printf("ghosts MgF2 / bare at 580 nm: rendered %.4g, predicted %.4g\n", rendered, predicted);
+  EXPECT_LT(predicted, 0.1);
+  EXPECT_NEAR(rendered / predicted, 1, 0.1) << "rendered " << rendered << ", predicted " << predicted;
+}
+
+TEST(LensLayers, DiffractionKernelMatchesTheStopsPsf) {
+  // One wavelength (580 nm): the kernel (the fine pattern binned into pixels) against the PSF
+  // filtered by the pixel exactly (optics/diffraction_psf.h), for six blades at f/8 on 6 um
+  // pixels.
+  const StopShape iris = StopShape::Iris(6, 0, 0.2);
+  const PupilFunction pupil = [&](double u, double v) { return iris.Contains(u, v) ? 1.0 : 0.0; };
+  const DiffractionKernel k = MakeDiffractionKernel(pupil, 8, 6, 6, 20, 1);
+  const PsfImage psf = FraunhoferPsf(pupil, 580, 8, 6, 41);
+  ASSERT_EQ(k.Size(), 41);
+  // Both over the same 41 x 41 pixels (the kernel is renormalised there).
+  double psf_sum = 0;
+  for (double e : psf.energy) psf_sum += e;
+  const double centre = psf.At(20, 20) / psf_sum;
+  double ks = 0;
+  for (int y = 0; y < 41; ++y)
+    for (int x = 0; x < 41; ++x) {
+      ks += k.xyz[(size_t(y) * 41 + x) * 3 + 1];
+      EXPECT_NEAR(k.xyz[(size_t(y) * 41 + x) * 3 + 1], psf.At(x, y) / psf_sum, 0.01 * centre) << x << "," << y;
+    }
+  EXPECT_NEAR(ks, 1, 1e-5);
+}
+
+}  // namespace
+}  // namespace objektiv
