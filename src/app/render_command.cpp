@@ -5,6 +5,7 @@
 #include <thread>
 
 #include <fmt/format.h>
+#include <tbb/global_control.h>
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
@@ -30,7 +31,7 @@ struct RenderArgs {
   bool quiet = false, verbose = false;
 };
 
-void WriteStatsJson(const std::string& path, const RenderStats& s, int threads) {
+void WriteStatsJson(const std::string& path, const RenderStats& s, int threads, const LensLayers& layers) {
   nlohmann::ordered_json j = {{"seconds", s.seconds},
                               {"spp", s.spp},
                               {"width", s.width},
@@ -47,6 +48,12 @@ void WriteStatsJson(const std::string& path, const RenderStats& s, int threads) 
                               {"partial", s.Partial()},
                               {"pixels", s.pixels},
                               {"pixels_completed", s.pixels_completed}};
+  if (!layers.ghosts.empty()) {
+    j["ghost_seconds"] = layers.ghost_seconds;
+    j["ghosts_traced"] = layers.ghosts_traced;
+    j["ghosts_culled"] = layers.ghosts_culled;
+  }
+  if (!layers.diffraction.empty()) j["diffraction_seconds"] = layers.diffraction_seconds;
   WriteTextFileAtomically(path, j.dump(2) + "\n");
 }
 
@@ -91,9 +98,9 @@ CropWindow ParseCrop(const std::string& text, int width, int height) {
 
 // The film, once the memory of the render is known to fit the budget: nearly all of it per
 // pixel of the crop window, the film's accumulators, then the linear and the tone-mapped
-// images and the 8-bit PNG made from them.
-Film MakeFilm(const FilmSettings& f, double budget_gib) {
-  const uint64_t bytes = Film::AccumulatorBytes(f.crop) + uint64_t(f.crop.Width()) * f.crop.Height() * (2 * 3 * sizeof(float) + 3);
+// images and the 8-bit PNG made from them, and what the lens effects need (`extra_bytes`).
+Film MakeFilm(const FilmSettings& f, double budget_gib, uint64_t extra_bytes) {
+  const uint64_t bytes = Film::AccumulatorBytes(f.crop) + uint64_t(f.crop.Width()) * f.crop.Height() * (2 * 3 * sizeof(float) + 3) + extra_bytes;
   const double gib = double(bytes) / double(1 << 30);
   if (gib > budget_gib)
     throw ErrorAt(f.loc, "rendering {}x{} pixels needs {:.3g} GiB, more than the memory budget of {:g} GiB (see --max-memory)",
@@ -182,14 +189,14 @@ int RunRender(const RenderArgs& a) {
   if (a.spp > 0) setup.sampler.spp = a.spp;
   if (a.seed >= 0) setup.sampler.seed = uint64_t(a.seed);
   std::unique_ptr<Sampler> sampler = MakeSampler(setup.sampler);
-  Film film = MakeFilm(fs_, a.max_memory_gib);
+  int threads = a.threads > 0 ? a.threads : int(std::thread::hardware_concurrency());
+  Film film = MakeFilm(fs_, a.max_memory_gib, LensEffectsBytes(*setup.camera, fs_.crop, threads));
   PrepareFilmForLensEffects(*setup.camera, film);
   RenderOptions opts;
   opts.spp_begin = 0;
   opts.spp_end = sampler->spp();
   opts.threads = a.threads;
   opts.progress = !a.quiet && InteractiveTerminal();
-  int threads = a.threads > 0 ? a.threads : int(std::thread::hardware_concurrency());
 
   // From here on Ctrl-C (or SIGTERM) stops the render and the pixels done so far are written.
   InstallInterruptHandlers();
@@ -207,12 +214,17 @@ int RunRender(const RenderArgs& a) {
   std::vector<ImageAttribute> header = {{"objektiv:partial", int(stats.Partial())},
                                         {"objektiv:pixels", count(stats.pixels)},
                                         {"objektiv:pixels_completed", count(stats.pixels_completed)}};
-  LensLayers layers = ComposeLensLayers(*setup.scene, *setup.camera, film);
+  LensLayers layers;
+  {
+    std::unique_ptr<tbb::global_control> limit;  // the passes after the render keep to --threads too
+    if (a.threads > 0) limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, a.threads);
+    layers = ComposeLensLayers(*setup.scene, *setup.camera, film);
+  }
   Image linear = XyzToImage(layers.Sum(), layers.width, layers.height, *fs_.color_space, fs_.exposure);
   AddLensLayers(layers, *fs_.color_space, fs_.exposure, linear, header);
   WriteExr(exr.string(), linear, header);
   WritePng(png.string(), ApplyToneMap(linear, fs_.tonemap));
-  if (!a.stats_json.empty()) WriteStatsJson(a.stats_json, stats, threads);
+  if (!a.stats_json.empty()) WriteStatsJson(a.stats_json, stats, threads, layers);
   if (!a.quiet)
     std::printf("%s: %dx%d, %d spp, %.2f s, %.3g samples/s, %.2f Mrays/s, %s, NaN %llu, Inf %llu -> %s, %s%s\n",
                 a.scene.c_str(), stats.width, stats.height, stats.spp, stats.seconds, stats.SamplesPerSecond(),

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 namespace objektiv {
 
@@ -104,10 +105,15 @@ class BundleTracer {
     return false;
   }
 
-  std::vector<FilmTriangle> Bundle(int grid) const {
+  std::vector<FilmTriangle> Bundle(int grid, const BundleRegion* region) const {
     std::vector<FilmTriangle> out;
     Vec2d lo, hi;
-    if (grid < 1 || !Region(lo, hi)) return out;
+    if (region) {
+      lo = region->lo, hi = region->hi;
+    } else if (!Region(lo, hi)) {
+      return out;
+    }
+    if (grid < 1) return out;
     const double du = (hi.x - lo.x) / grid, dv = (hi.y - lo.y) / grid;
     std::vector<Corner> corners(size_t(grid + 1) * (grid + 1));
     for (int j = 0; j <= grid; ++j)
@@ -180,16 +186,46 @@ class BundleTracer {
 
 }  // namespace
 
-std::vector<FilmTriangle> GhostBundle(const LensSystem& lens, const Ghost& ghost, const PointSource& source,
-                                      double lambda_nm, int grid) {
-  const std::vector<SurfaceVisit> path = GhostPath(lens, ghost);
-  return BundleTracer(lens, path, source, lambda_nm).Bundle(grid);
-}
+namespace {
 
-std::vector<FilmTriangle> DirectBundle(const LensSystem& lens, const PointSource& source, double lambda_nm, int grid) {
+std::vector<SurfaceVisit> DirectPath(const LensSystem& lens) {
   std::vector<SurfaceVisit> path;
   for (int i = 0; i < lens.SurfaceCount(); ++i) path.push_back({i, false, true});
-  return BundleTracer(lens, path, source, lambda_nm).Bundle(grid);
+  return path;
+}
+
+std::optional<BundleRegion> FindRegion(const LensSystem& lens, std::span<const SurfaceVisit> path,
+                                       const PointSource& source, double lambda_nm) {
+  BundleRegion r;
+  if (!BundleTracer(lens, path, source, lambda_nm).Region(r.lo, r.hi)) return std::nullopt;
+  // Other wavelengths' light gets through a region a little moved (the pupils' chromatic
+  // shift, far less than the search's step, which the region is already widened by): 2% more.
+  const Vec2d margin = (r.hi - r.lo) * 0.02;
+  r.lo = r.lo - margin, r.hi = r.hi + margin;
+  return r;
+}
+
+}  // namespace
+
+std::optional<BundleRegion> GhostRegion(const LensSystem& lens, const Ghost& ghost, const PointSource& source,
+                                        double lambda_nm) {
+  return FindRegion(lens, GhostPath(lens, ghost), source, lambda_nm);
+}
+
+std::optional<BundleRegion> DirectRegion(const LensSystem& lens, const PointSource& source, double lambda_nm) {
+  return FindRegion(lens, DirectPath(lens), source, lambda_nm);
+}
+
+std::vector<FilmTriangle> GhostBundle(const LensSystem& lens, const Ghost& ghost, const PointSource& source,
+                                      double lambda_nm, int grid, const BundleRegion* region) {
+  const std::vector<SurfaceVisit> path = GhostPath(lens, ghost);
+  return BundleTracer(lens, path, source, lambda_nm).Bundle(grid, region);
+}
+
+std::vector<FilmTriangle> DirectBundle(const LensSystem& lens, const PointSource& source, double lambda_nm, int grid,
+                                       const BundleRegion* region) {
+  const std::vector<SurfaceVisit> path = DirectPath(lens);
+  return BundleTracer(lens, path, source, lambda_nm).Bundle(grid, region);
 }
 
 namespace {
@@ -235,6 +271,57 @@ double OverlapArea(const Vec2d& a, const Vec2d& b, const Vec2d& c, int x, int y)
   return 0.5 * std::abs(twice);
 }
 
+// The exact area coverage of a polygon by accumulation (as font rasterisers do it): each edge
+// p -> q adds, row by row, the signed area it sweeps to its right into the cells it crosses,
+// so that the running sum along a row is the covered share of each pixel (its sign the
+// polygon's orientation). `acc` has rows of `width` cells, the polygon within x in [0,
+// width - 1), y in [0, rows).
+void AccumulateEdge(Vec2d p, Vec2d q, int width, double* acc) {
+  if (p.y == q.y) return;
+  double direction = 1;
+  if (p.y > q.y) {
+    std::swap(p, q);
+    direction = -1;
+  }
+  const double dxdy = (q.x - p.x) / (q.y - p.y);
+  double x = p.x;
+  const int first = int(std::floor(p.y)), last = int(std::ceil(q.y));
+  for (int y = first; y < last; ++y) {
+    double* line = acc + size_t(y) * width;
+    const double dy = std::min(double(y + 1), q.y) - std::max(double(y), p.y);
+    const double x_next = x + dxdy * dy, d = dy * direction;
+    const double lo = std::min(x, x_next), hi = std::max(x, x_next);
+    const double lo_floor = std::floor(lo);
+    const int i0 = int(lo_floor), i1 = int(std::ceil(hi));
+    if (i1 <= i0 + 1) {
+      // Within one column: the part of the cell right of the segment's mean x.
+      const double mean = 0.5 * (x + x_next) - lo_floor;
+      line[i0] += d - d * mean;
+      line[i0 + 1] += d * mean;
+    } else {
+      // Across columns: the swept area grows quadratically in the first and the last column,
+      // linearly between.
+      const double s = 1 / (hi - lo);
+      const double lo_frac = lo - lo_floor;
+      const double a0 = 0.5 * s * (1 - lo_frac) * (1 - lo_frac);
+      const double hi_frac = hi - i1 + 1;
+      const double am = 0.5 * s * hi_frac * hi_frac;
+      line[i0] += d * a0;
+      if (i1 == i0 + 2) {
+        line[i0 + 1] += d * (1 - a0 - am);
+      } else {
+        const double a1 = s * (1.5 - lo_frac);
+        line[i0 + 1] += d * (a1 - a0);
+        for (int i = i0 + 2; i < i1 - 1; ++i) line[i] += d * s;
+        const double a2 = a1 + (i1 - i0 - 3) * s;
+        line[i1 - 1] += d * (1 - a2 - am);
+      }
+      line[i1] += d * am;
+    }
+    x = x_next;
+  }
+}
+
 }  // namespace
 
 double FrontElementFlux(const LensSystem& lens, const PointSource& source) {
@@ -254,6 +341,7 @@ void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, dou
   auto add = [&](int x, int y, double v) {
     if (x >= 0 && y >= 0 && x < r.width && y < r.height) add_at(size_t(y) * r.width + x, v);
   };
+  std::vector<double> coverage;
   for (const FilmTriangle& t : triangles) {
     // Pixel coordinates.
     const Vec2d a((t.a.x - r.x0) / r.w, (t.a.y - r.y0) / r.h), b((t.b.x - r.x0) / r.w, (t.b.y - r.y0) / r.h),
@@ -271,10 +359,28 @@ void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, dou
       add(pixel(m.x, r.width), pixel(m.y, r.height), weight * t.flux / pixel_area);
       continue;
     }
-    // Each pixel gets the flux times the share of the triangle's area that lies in it: the
-    // whole pixel where its four corners lie inside all three edges, nothing where they all lie
-    // outside one, else the clipped area.
     const double per_area = weight * t.flux / (area * pixel_area);
+    // Inside the image: the exact coverage by accumulated edges.
+    if (x0 >= 0 && y0 >= 0 && x1 < r.width && y1 < r.height) {
+      const int bw = x1 - x0 + 2, bh = y1 - y0 + 1;
+      coverage.assign(size_t(bw) * bh, 0.0);
+      const Vec2d o(x0, y0);
+      for (const auto& [p, q] : {std::pair{a, b}, {b, c}, {c, a}}) AccumulateEdge(p - o, q - o, bw, coverage.data());
+      for (int y = 0; y < bh; ++y) {
+        double sum = 0;
+        const double* row = &coverage[size_t(y) * bw];
+        const size_t start = size_t(y0 + y) * r.width + x0;
+        for (int x = 0; x < bw - 1; ++x) {
+          sum += row[x];
+          const double share = std::min(std::abs(sum), 1.0);
+          if (share > 1e-12) add_at(start + x, per_area * share);
+        }
+      }
+      continue;
+    }
+    // Across the image's edge: each pixel gets the flux times the share of the triangle's
+    // area that lies in it: the whole pixel where its four corners lie inside all three
+    // edges, nothing where they all lie outside one, else the clipped area.
     const double orientation = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) >= 0 ? 1 : -1;
     const Vec2d corners[3][2] = {{a, b}, {b, c}, {c, a}};
     for (int y = std::max(y0, 0); y <= std::min(y1, r.height - 1); ++y)

@@ -15,6 +15,7 @@
 // rays get through; cells that lie across the edge of what gets through are split in four,
 // three times over, so that the ghost's outline follows the stop's.
 #pragma once
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -52,14 +53,28 @@ struct FilmTriangle {
   double Area() const { return 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y)); }
 };
 
+// The part of the start square (a plane just in front of the lens) whose rays get through a
+// path, found at one wavelength (a coarse grid of rays, then a finer one if the pupil is
+// small) and widened to hold the other wavelengths' too: a bundle's grid spans it. Nothing
+// where no light gets through.
+struct BundleRegion {
+  Vec2d lo, hi;
+};
+std::optional<BundleRegion> GhostRegion(const LensSystem& lens, const Ghost& ghost, const PointSource& source,
+                                        double lambda_nm);
+
 // The ghost's bundle at one wavelength: `grid` x `grid` cells over the part of the front
-// element its light gets through (each cell split in two triangles).
+// element its light gets through (each cell split in two triangles): `region` (from
+// GhostRegion, at any wavelength: the search is the costlier part for a small grid), or found
+// here at this wavelength.
 std::vector<FilmTriangle> GhostBundle(const LensSystem& lens, const Ghost& ghost, const PointSource& source,
-                                      double lambda_nm, int grid = 64);
+                                      double lambda_nm, int grid = 64, const BundleRegion* region = nullptr);
 
 // The same for the light that goes straight through (no reflection): the point's own image,
 // for comparison (a ghost's share of the light is its flux over this one's).
-std::vector<FilmTriangle> DirectBundle(const LensSystem& lens, const PointSource& source, double lambda_nm, int grid = 64);
+std::optional<BundleRegion> DirectRegion(const LensSystem& lens, const PointSource& source, double lambda_nm);
+std::vector<FilmTriangle> DirectBundle(const LensSystem& lens, const PointSource& source, double lambda_nm, int grid = 64,
+                                       const BundleRegion* region = nullptr);
 
 // The light the point sends onto the front element's clear aperture (per unit intensity, or
 // irradiance, as the bundles' flux): what a ghost's share of the light is measured against.

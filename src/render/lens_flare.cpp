@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "base/cie.h"
 
@@ -12,7 +13,7 @@ namespace objektiv {
 
 namespace {
 
-constexpr double kFlareLambdaMin = 380, kFlareLambdaMax = 780;
+constexpr double kFlareLambdaMin = 380, kFlareLambdaMax = 780, kRegionLambda = 580;
 
 // The flux of a bundle over the film area it covers: its mean irradiance.
 double MeanIrradiance(const std::vector<FilmTriangle>& bundle) {
@@ -21,18 +22,27 @@ double MeanIrradiance(const std::vector<FilmTriangle>& bundle) {
   return area > 0 ? flux / area : 0;
 }
 
-// The ghosts of `source` worth tracing (see lens_flare.h: culling).
-std::vector<Ghost> BrightGhosts(const LensSystem& lens, const std::vector<Ghost>& ghosts, const PointSource& source,
-                                double cull) {
+// A path to trace for one source: a ghost or the direct image, with the region its light
+// gets through (found once, at 580 nm, for all wavelengths).
+struct FlarePath {
+  std::optional<Ghost> ghost;  // none: the direct image
+  BundleRegion region;
+};
+
+// The ghosts of `source` worth tracing (see lens_flare.h: culling), with their regions.
+std::vector<FlarePath> BrightGhosts(const LensSystem& lens, const std::vector<Ghost>& ghosts, const PointSource& source,
+                                    double cull) {
+  std::vector<std::optional<BundleRegion>> regions(ghosts.size());
   std::vector<double> level(ghosts.size(), 0);
   tbb::parallel_for(size_t(0), ghosts.size(), [&](size_t g) {
-    level[g] = MeanIrradiance(GhostBundle(lens, ghosts[g], source, 550, 8));
+    regions[g] = GhostRegion(lens, ghosts[g], source, kRegionLambda);
+    if (regions[g]) level[g] = MeanIrradiance(GhostBundle(lens, ghosts[g], source, kRegionLambda, 8, &*regions[g]));
   });
   double brightest = 0;
   for (double l : level) brightest = std::max(brightest, l);
-  std::vector<Ghost> kept;
+  std::vector<FlarePath> kept;
   for (size_t g = 0; g < ghosts.size(); ++g)
-    if (level[g] > 0 && level[g] >= cull * brightest) kept.push_back(ghosts[g]);
+    if (level[g] > 0 && level[g] >= cull * brightest) kept.push_back({ghosts[g], *regions[g]});
   return kept;
 }
 
@@ -62,27 +72,29 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
   std::vector<double> lambdas;
   for (int k = 0; k < k_count; ++k) lambdas.push_back(kFlareLambdaMin + (k + 0.5) * step);
 
-  // Every (source, path, wavelength) is a task; a path is a ghost or the direct image (-1).
+  // Every (source, path, wavelength) is a task.
   struct Task {
     const FlareSource* source;
-    int ghost;  // index into the source's ghosts, or -1
+    const FlarePath* path;
     double lambda;
   };
   const std::vector<FlareSource> sources = FindFlareSources(scene, camera);
   const std::vector<Ghost> all = TwoReflectionGhosts(lens);
-  std::vector<std::vector<Ghost>> kept(sources.size());
+  std::vector<std::vector<FlarePath>> paths(sources.size());
   std::vector<Task> tasks;
   for (size_t s = 0; s < sources.size(); ++s) {
     if (settings.ghosts) {
-      kept[s] = BrightGhosts(lens, all, sources[s].source, settings.cull);
-      out.ghosts_traced += int(kept[s].size());
-      out.ghosts_culled += int(all.size() - kept[s].size());
+      paths[s] = BrightGhosts(lens, all, sources[s].source, settings.cull);
+      out.ghosts_traced += int(paths[s].size());
+      out.ghosts_culled += int(all.size() - paths[s].size());
     }
-    for (double l : lambdas) {
-      if (settings.light_images) tasks.push_back({&sources[s], -1, l});
-      for (size_t g = 0; g < kept[s].size(); ++g) tasks.push_back({&sources[s], int(g), l});
-    }
+    if (settings.light_images)
+      if (std::optional<BundleRegion> r = DirectRegion(lens, sources[s].source, kRegionLambda))
+        paths[s].push_back({std::nullopt, *r});
   }
+  for (size_t s = 0; s < sources.size(); ++s)
+    for (const FlarePath& p : paths[s])
+      for (double l : lambdas) tasks.push_back({&sources[s], &p, l});
   out.sources = int(sources.size());
 
   struct Images {
@@ -92,14 +104,14 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
   tbb::parallel_for(size_t(0), tasks.size(), [&](size_t i) {
     const Task& t = tasks[i];
     const FlareSource& f = *t.source;
-    const size_t s = size_t(t.source - sources.data());
-    std::vector<FilmTriangle> bundle = t.ghost < 0 ? DirectBundle(lens, f.source, t.lambda, settings.grid)
-                                                   : GhostBundle(lens, kept[s][t.ghost], f.source, t.lambda, settings.grid);
+    const FlarePath& p = *t.path;
+    std::vector<FilmTriangle> bundle = p.ghost ? GhostBundle(lens, *p.ghost, f.source, t.lambda, settings.grid, &p.region)
+                                               : DirectBundle(lens, f.source, t.lambda, settings.grid, &p.region);
     if (bundle.empty()) return;
     const double w = to_pixel * f.irradiance_scale * f.visibility * f.Emission(t.lambda) * step / CieYIntegral();
     const Vec3f cie = CieXyz(float(t.lambda));
     Images& images = local.local();
-    SplatColour(bundle, raster, Vec3d(w * cie.x, w * cie.y, w * cie.z), t.ghost < 0 ? images.lights.data() : images.ghosts.data());
+    SplatColour(bundle, raster, Vec3d(w * cie.x, w * cie.y, w * cie.z), p.ghost ? images.ghosts.data() : images.lights.data());
   });
   for (const Images& images : local) {
     for (size_t i = 0; i < out.ghosts.size(); ++i) out.ghosts[i] += images.ghosts[i];

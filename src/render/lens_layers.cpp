@@ -1,5 +1,6 @@
 #include "render/lens_layers.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -37,6 +38,22 @@ std::vector<float> LensLayers::Sum() const {
   Add(sum, ghosts);
   Add(sum, diffraction);
   return sum;
+}
+
+uint64_t LensEffectsBytes(const Camera& camera, const CropWindow& crop, int threads) {
+  const RealisticCamera* real = WithEffects(camera);
+  if (!real) return 0;
+  const uint64_t pixels = uint64_t(crop.Width()) * crop.Height();
+  // Layers and the sum (XYZ floats), the emitted light (doubles), each thread's two flare images.
+  uint64_t bytes = pixels * 12 * 5 + pixels * 24 + uint64_t(std::max(threads, 1)) * pixels * 24;
+  if (real->effects().diffraction != DiffractionScope::kOff) {
+    // The fine pattern (at most 4096^2: input, transform, pattern) and the padded image's FFTs.
+    const uint64_t fine = uint64_t(4096) * 4096;
+    const int reach = 2 * 512;  // the kernel's radius is at most half the fine grid in pixels, in practice far less
+    const uint64_t padded = uint64_t(crop.Width() + reach) * (crop.Height() + reach);
+    bytes += fine * 24 + padded * (8 + 16 + 16);
+  }
+  return bytes;
 }
 
 void PrepareFilmForLensEffects(const Camera& camera, Film& film) {

@@ -8,6 +8,7 @@
 // - their sum: the picture.
 // Without effects, primary is the film's image and the others are empty.
 #pragma once
+#include <cstdint>
 #include <vector>
 
 #include "camera/camera.h"
@@ -25,6 +26,10 @@ struct LensLayers {
   double fnumber = 0;  // working, of the diffraction pattern
   double ghost_seconds = 0, diffraction_seconds = 0;
 };
+
+// The memory the effects take beyond the film (the layers, the passes' images per thread, the
+// diffraction's FFTs), for the render's memory budget; 0 without effects.
+uint64_t LensEffectsBytes(const Camera& camera, const CropWindow& crop, int threads);
 
 // Films that the effects need prepared before rendering (the emitted light kept apart).
 void PrepareFilmForLensEffects(const Camera& camera, Film& film);
