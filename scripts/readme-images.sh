@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Renders the realistic-camera pictures in the README (docs/images/lens-*.png) from the
 # scenes in scenes/ (a few minutes on 2 cores). Needs a build (make) and oiiotool
-# (openimageio-tools) to put panels side by side.
+# (openimageio-tools) to put panels side by side. `readme-images.sh flare` renders only the
+# ghost and starburst pictures (docs/images/flare-*.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/objektiv
@@ -9,6 +10,34 @@ out=docs/images
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 render() { "$bin" render "$@" --quiet; }
+
+flare() {
+  render scenes/flare/night-street.xml -D spp=64 -o "$tmp/street.exr"
+  cp "$tmp/street.png" "$out/flare-night-street.png"
+  # The pictures, then their ghost layers alone 5 stops brighter (sRGB, clipped).
+  for c in none MgF2 multi; do
+    render scenes/flare/night-street.xml -D coating=$c -D spp=64 -D width=480 -D height=270 -o "$tmp/coat-$c.exr"
+    oiiotool "$tmp/coat-$c.exr" --ch ghosts.R,ghosts.G,ghosts.B --chnames R,G,B --mulc 32 --colorconvert linear sRGB \
+      -o "$tmp/ghosts-$c.png"
+  done
+  oiiotool "$tmp/coat-none.png" "$tmp/coat-MgF2.png" "$tmp/coat-multi.png" \
+    "$tmp/ghosts-none.png" "$tmp/ghosts-MgF2.png" "$tmp/ghosts-multi.png" --mosaic:pad=4 3x2 -o "$out/flare-coatings.png"
+  for l in tessar.brendel.100mm wide.22mm; do
+    render scenes/flare/night-street.xml -D lens=$l -D spp=64 -D width=480 -D height=270 -o "$tmp/lens-$l.exr"
+  done
+  oiiotool "$tmp/coat-none.png" "$tmp/lens-tessar.brendel.100mm.png" "$tmp/lens-wide.22mm.png" --mosaic:pad=4 3x1 \
+    -o "$out/flare-lenses.png"
+  for b in 0 5 6 8 9; do
+    render scenes/flare/starburst.xml -D blades=$b -o "$tmp/star-$b.exr"
+  done
+  oiiotool "$tmp/star-0.png" "$tmp/star-5.png" "$tmp/star-6.png" "$tmp/star-8.png" "$tmp/star-9.png" \
+    --mosaic:pad=4 1x5 -o "$out/flare-starbursts.png"
+}
+if [ "${1:-}" = flare ]; then
+  flare
+  echo "wrote $out/flare-*.png"
+  exit 0
+fi
 
 render scenes/bokeh/bokeh-lens.xml -D spp=1024 -o "$tmp/bokeh-f2.8.exr"
 render scenes/bokeh/bokeh-lens.xml -D spp=1024 -D fnumber=2.03 -o "$tmp/bokeh-open.exr"
@@ -38,4 +67,5 @@ for f in 0.85 2.25 6.05; do
   render scenes/lens/focus-series.xml -D spp=256 -D focus=$f -D width=420 -D height=280 -o "$tmp/focus-$f.exr"
 done
 oiiotool "$tmp/focus-0.85.png" "$tmp/focus-2.25.png" "$tmp/focus-6.05.png" --mosaic:pad=6 3x1 -o "$out/lens-focus-series.png"
-echo "wrote $out/lens-*.png"
+flare
+echo "wrote $out/lens-*.png and $out/flare-*.png"

@@ -150,5 +150,44 @@ TEST(Ghosts, CoatingsDimGhostsByTheirReflectances) {
   }
 }
 
+// Splatting gives each pixel the triangle's flux times the share of its area inside the
+// pixel: against point sampling 256 x 256 points per pixel, for random triangles inside the
+// image (the accumulated-edge path), across its edges (the clipping path), thin and tiny ones.
+TEST(Ghosts, SplatGivesEachPixelItsShareOfTheTriangle) {
+  const FilmRaster raster{24, 16, -1.2, -0.4, 0.1, 0.05};  // pixels of 0.1 x 0.05 mm
+  PCG32 rng(11, 3);
+  auto point = [&](double spread) {
+    return Vec2d(raster.x0 + raster.w * (-spread + (raster.width + 2 * spread) * rng.UniformFloat()),
+                 raster.y0 + raster.h * (-spread + (raster.height + 2 * spread) * rng.UniformFloat()));
+  };
+  for (int trial = 0; trial < 24; ++trial) {
+    // Inside (spread 0) or reaching past the edges (spread 6 pixels); every fourth one thin.
+    const double spread = trial % 2 ? 6 : 0;
+    FilmTriangle t{point(spread), point(spread), point(spread), 1.0};
+    if (trial % 4 == 3) t.c = t.a + (t.b - t.a) * 0.3 + Vec2d(raster.w * 0.05, 0);
+    if (t.Area() < 1e-4 * raster.w * raster.h) continue;
+    std::vector<float> image(size_t(raster.width) * raster.height, 0.f);
+    Splat(std::span(&t, 1), raster, 2.0, image.data());
+    const int n = 256;
+    for (int y = 0; y < raster.height; ++y)
+      for (int x = 0; x < raster.width; ++x) {
+        int inside = 0;
+        for (int j = 0; j < n; ++j)
+          for (int i = 0; i < n; ++i) {
+            const Vec2d p(raster.x0 + raster.w * (x + (i + 0.5) / n), raster.y0 + raster.h * (y + (j + 0.5) / n));
+            auto side = [&](Vec2d a, Vec2d b) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); };
+            const double s0 = side(t.a, t.b), s1 = side(t.b, t.c), s2 = side(t.c, t.a);
+            inside += (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
+          }
+        // Irradiance: the flux times the pixel's share of the triangle, over the pixel's area.
+        const double pixel_area = raster.w * raster.h;
+        const double expected = 2.0 * t.flux * (double(inside) / (n * n) * pixel_area / t.Area()) / pixel_area;
+        // Point sampling errs by about the perimeter's share of a sample row: 4 / 256 of a pixel.
+        EXPECT_NEAR(image[size_t(y) * raster.width + x], expected, 4.0 / n * 2.0 / t.Area())
+            << "trial " << trial << " pixel " << x << "," << y;
+      }
+  }
+}
+
 }  // namespace
 }  // namespace objektiv
