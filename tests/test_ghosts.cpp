@@ -165,25 +165,33 @@ TEST(Ghosts, SplatGivesEachPixelItsShareOfTheTriangle) {
     const double spread = trial % 2 ? 6 : 0;
     FilmTriangle t{point(spread), point(spread), point(spread), 1.0};
     if (trial % 4 == 3) t.c = t.a + (t.b - t.a) * 0.3 + Vec2d(raster.w * 0.05, 0);
+    // Every third one with an irradiance varying across it.
+    if (trial % 3 == 1) t.ea = 1, t.eb = 3, t.ec = 0.5;
+    const double mean_e = (t.ea + t.eb + t.ec) / 3;
     if (t.Area() < 1e-4 * raster.w * raster.h) continue;
     std::vector<float> image(size_t(raster.width) * raster.height, 0.f);
     Splat(std::span(&t, 1), raster, 2.0, image.data());
     const int n = 256;
     for (int y = 0; y < raster.height; ++y)
       for (int x = 0; x < raster.width; ++x) {
-        int inside = 0;
+        // The relative irradiance summed over the sample points inside the triangle.
+        double inside = 0;
+        const double twice = (t.b.x - t.a.x) * (t.c.y - t.a.y) - (t.b.y - t.a.y) * (t.c.x - t.a.x);
         for (int j = 0; j < n; ++j)
           for (int i = 0; i < n; ++i) {
             const Vec2d p(raster.x0 + raster.w * (x + (i + 0.5) / n), raster.y0 + raster.h * (y + (j + 0.5) / n));
             auto side = [&](Vec2d a, Vec2d b) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); };
             const double s0 = side(t.a, t.b), s1 = side(t.b, t.c), s2 = side(t.c, t.a);
-            inside += (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
+            if (!((s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0))) continue;
+            // Barycentric weights: each corner's from the opposite edge's side.
+            inside += (s1 * t.ea + s2 * t.eb + s0 * t.ec) / twice / mean_e;
           }
-        // Irradiance: the flux times the pixel's share of the triangle, over the pixel's area.
-        const double pixel_area = raster.w * raster.h;
-        const double expected = 2.0 * t.flux * (double(inside) / (n * n) * pixel_area / t.Area()) / pixel_area;
-        // Point sampling errs by about the perimeter's share of a sample row: 4 / 256 of a pixel.
-        EXPECT_NEAR(image[size_t(y) * raster.width + x], expected, 4.0 / n * 2.0 / t.Area())
+        // Irradiance: the flux over the triangle's area times the mean relative irradiance
+        // over the pixel (the points outside counting 0).
+        const double expected = 2.0 * t.flux / t.Area() * inside / (n * n);
+        // Point sampling errs by about the perimeter's share of a sample row: 4 / 256 of a
+        // pixel, at the largest relative irradiance (3 / mean).
+        EXPECT_NEAR(image[size_t(y) * raster.width + x], expected, 4.0 / n * 2.0 / t.Area() * std::max(t.eb, 1.0) / mean_e)
             << "trial " << trial << " pixel " << x << "," << y;
       }
   }

@@ -204,6 +204,13 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b
   }
   WarnIfShiftedPastTheImageCircle(p, s, *camera);
   const LensEffects effects = ReadLensEffects(p, spec.model);
+  // The bright points' images and ghosts are traced through the lens as it is.
+  if (effects.Any() && (!s.transmission || s.vignetting != Vignetting::kFull)) {
+    const char* name = !s.transmission ? "transmission" : "vignetting";
+    spdlog::warn("{}:{}: the lights' own images and their ghosts are traced through the lens as it is (its reflection "
+                 "losses and rims), whatever {} says; only the camera rays follow it",
+                 p.LocOf(name).file, p.LocOf(name).line, name);
+  }
   if (auto* real = dynamic_cast<RealisticCamera*>(camera.get())) real->SetEffects(effects);
   return camera;
 }

@@ -118,10 +118,40 @@ class BundleTracer {
     std::vector<Corner> corners(size_t(grid + 1) * (grid + 1));
     for (int j = 0; j <= grid; ++j)
       for (int i = 0; i <= grid; ++i) corners[size_t(j) * (grid + 1) + i] = Trace(Vec2d(lo.x + i * du, lo.y + j * dv));
+    // The irradiance at each grid corner: the mean over the whole cells around it of their
+    // flux over their area on the film (the triangles' corners take it: see FilmTriangle).
+    const int w = grid + 1;
+    std::vector<double> cell_e(size_t(grid) * grid, -1);
     for (int j = 0; j < grid; ++j)
       for (int i = 0; i < grid; ++i) {
-        const Corner* c = &corners[size_t(j) * (grid + 1) + i];
-        Cell(Vec2d(lo.x + i * du, lo.y + j * dv), du, dv, {c[0], c[1], c[grid + 2], c[grid + 1]}, kSubdivisions, out);
+        const Corner* c = &corners[size_t(j) * w + i];
+        if (!(c[0].alive && c[1].alive && c[w + 1].alive && c[w].alive)) continue;
+        const double area = FilmTriangle{c[0].film, c[1].film, c[w + 1].film, 0}.Area() +
+                            FilmTriangle{c[0].film, c[w + 1].film, c[w].film, 0}.Area();
+        const double t = 0.25 * (c[0].transmittance + c[1].transmittance + c[w + 1].transmittance + c[w].transmittance);
+        if (area > 0) cell_e[size_t(j) * grid + i] = t * CellFlux(Vec2d(lo.x + (i + 0.5) * du, lo.y + (j + 0.5) * dv), du, dv) / area;
+      }
+    std::vector<double> corner_e(size_t(w) * w, 0);
+    for (int j = 0; j <= grid; ++j)
+      for (int i = 0; i <= grid; ++i) {
+        double sum = 0;
+        int n = 0;
+        for (int dj = -1; dj <= 0; ++dj)
+          for (int di = -1; di <= 0; ++di) {
+            const int ci = i + di, cj = j + dj;
+            if (ci < 0 || cj < 0 || ci >= grid || cj >= grid) continue;
+            const double e = cell_e[size_t(cj) * grid + ci];
+            if (e >= 0) sum += e, ++n;
+          }
+        corner_e[size_t(j) * w + i] = n ? sum / n : 0;
+      }
+    for (int j = 0; j < grid; ++j)
+      for (int i = 0; i < grid; ++i) {
+        const Corner* c = &corners[size_t(j) * w + i];
+        const double* e = &corner_e[size_t(j) * w + i];
+        const std::array<double, 4> ce = {e[0], e[1], e[w + 1], e[w]};
+        Cell(Vec2d(lo.x + i * du, lo.y + j * dv), du, dv, {c[0], c[1], c[w + 1], c[w]}, kSubdivisions, out,
+             cell_e[size_t(j) * grid + i] > 0 ? &ce : nullptr);
       }
     return out;
   }
@@ -132,13 +162,25 @@ class BundleTracer {
   // (a rim, the stop's blades): it is split in four, down to kSubdivisions levels, so that the
   // bundle's edge follows the opening.
   static constexpr int kSubdivisions = 3;
-  void Cell(Vec2d p, double du, double dv, const std::array<Corner, 4>& c, int depth, std::vector<FilmTriangle>& out) const {
+  // `e`: the irradiance at the corners of a whole cell of the grid (a smooth picture); none:
+  // uniform over each triangle.
+  void Cell(Vec2d p, double du, double dv, const std::array<Corner, 4>& c, int depth, std::vector<FilmTriangle>& out,
+            const std::array<double, 4>* e = nullptr) const {
     const int alive = c[0].alive + c[1].alive + c[2].alive + c[3].alive;
     if (alive == 4) {
       const double t = 0.25 * (c[0].transmittance + c[1].transmittance + c[2].transmittance + c[3].transmittance);
       const double flux = t * CellFlux(Vec2d(p.x + du / 2, p.y + dv / 2), du, dv);
-      out.push_back({c[0].film, c[1].film, c[2].film, flux / 2});
-      out.push_back({c[0].film, c[2].film, c[3].film, flux / 2});
+      // The cell's flux split between its triangles by their area (their irradiance the same).
+      FilmTriangle t1{c[0].film, c[1].film, c[2].film, 0}, t2{c[0].film, c[2].film, c[3].film, 0};
+      const double a1 = t1.Area(), a2 = t2.Area();
+      const double share = a1 + a2 > 0 ? a1 / (a1 + a2) : 0.5;
+      t1.flux = flux * share, t2.flux = flux * (1 - share);
+      if (e && (*e)[0] > 0 && (*e)[1] > 0 && (*e)[2] > 0 && (*e)[3] > 0) {
+        t1.ea = (*e)[0], t1.eb = (*e)[1], t1.ec = (*e)[2];
+        t2.ea = (*e)[0], t2.eb = (*e)[2], t2.ec = (*e)[3];
+      }
+      out.push_back(t1);
+      out.push_back(t2);
       return;
     }
     if (alive == 0) return;
@@ -230,10 +272,14 @@ std::vector<FilmTriangle> DirectBundle(const LensSystem& lens, const PointSource
 
 namespace {
 
-// The area of triangle abc inside the unit pixel [x, x + 1] x [y, y + 1] (pixel coordinates):
-// the triangle clipped by the pixel's four edges in turn (Sutherland-Hodgman), then the
-// shoelace formula.
-double OverlapArea(const Vec2d& a, const Vec2d& b, const Vec2d& c, int x, int y) {
+// The part of triangle abc inside the unit pixel [x, x + 1] x [y, y + 1] (pixel coordinates):
+// the triangle clipped by the pixel's four edges in turn (Sutherland-Hodgman), then its area
+// and centroid by the shoelace formulas.
+struct Overlap {
+  double area = 0;
+  Vec2d centroid{0, 0};
+};
+Overlap OverlapOf(const Vec2d& a, const Vec2d& b, const Vec2d& c, int x, int y) {
   Vec2d buffer[2][9];
   int count = 3;
   buffer[0][0] = a, buffer[0][1] = b, buffer[0][2] = c;
@@ -261,14 +307,19 @@ double OverlapArea(const Vec2d& a, const Vec2d& b, const Vec2d& c, int x, int y)
     count = n;
     from = 1 - from;
   }
-  double twice = 0;
+  double twice = 0, mx = 0, my = 0;
   const Vec2d* poly = buffer[from];
   for (int i = 0; i < count; ++i) {
     const Vec2d& p = poly[i];
     const Vec2d& q = poly[(i + 1) % count];
-    twice += p.x * q.y - q.x * p.y;
+    const double cross = p.x * q.y - q.x * p.y;
+    twice += cross;
+    mx += (p.x + q.x) * cross, my += (p.y + q.y) * cross;
   }
-  return 0.5 * std::abs(twice);
+  Overlap o;
+  o.area = 0.5 * std::abs(twice);
+  o.centroid = twice != 0 ? Vec2d(mx / (3 * twice), my / (3 * twice)) : Vec2d(x + 0.5, y + 0.5);
+  return o;
 }
 
 // The exact area coverage of a polygon by accumulation (as font rasterisers do it): each edge
@@ -360,6 +411,23 @@ void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, dou
       continue;
     }
     const double per_area = weight * t.flux / (area * pixel_area);
+    // A varying irradiance: its relative value at a point (barycentric interpolation of the
+    // corners' values over their mean, which the triangle's flux fixes), taken at the
+    // centroid of the part of the triangle in a pixel (where a linear function has its mean).
+    const double mean_e = (t.ea + t.eb + t.ec) / 3;
+    const bool uniform = t.ea == t.eb && t.eb == t.ec;
+    const double det = (b.y - c.y) * (a.x - c.x) + (c.x - b.x) * (a.y - c.y);
+    auto relative = [&](Vec2d p) {
+      const double la = ((b.y - c.y) * (p.x - c.x) + (c.x - b.x) * (p.y - c.y)) / det;
+      const double lb = ((c.y - a.y) * (p.x - c.x) + (a.x - c.x) * (p.y - c.y)) / det;
+      return std::max(0.0, (la * t.ea + lb * t.eb + (1 - la - lb) * t.ec) / mean_e);
+    };
+    // The value of pixel (x, y) given the share of it the triangle covers.
+    auto value = [&](int x, int y, double share) {
+      if (uniform) return per_area * share;
+      const Vec2d centre = share >= 1 - 1e-9 ? Vec2d(x + 0.5, y + 0.5) : OverlapOf(a, b, c, x, y).centroid;
+      return per_area * share * relative(centre);
+    };
     // Inside the image: the exact coverage by accumulated edges.
     if (x0 >= 0 && y0 >= 0 && x1 < r.width && y1 < r.height) {
       const int bw = x1 - x0 + 2, bh = y1 - y0 + 1;
@@ -373,7 +441,7 @@ void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, dou
         for (int x = 0; x < bw - 1; ++x) {
           sum += row[x];
           const double share = std::min(std::abs(sum), 1.0);
-          if (share > 1e-12) add_at(start + x, per_area * share);
+          if (share > 1e-12) add_at(start + x, value(x0 + x, y0 + y, share));
         }
       }
       continue;
@@ -396,8 +464,8 @@ void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, dou
           any_out |= hi <= 0;
         }
         if (any_out) continue;
-        const double overlap = all_in ? 1.0 : OverlapArea(a, b, c, x, y);
-        if (overlap > 0) add(x, y, per_area * overlap);
+        const double overlap = all_in ? 1.0 : OverlapOf(a, b, c, x, y).area;
+        if (overlap > 0) add(x, y, value(x, y, overlap));
       }
   }
 }

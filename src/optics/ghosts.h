@@ -47,9 +47,14 @@ struct PointSource {
 // A triangle on the film (lens-space x, y, mm) and the flux it carries: per unit intensity
 // (W/sr) of a point at a finite distance, per unit irradiance (W/mm^2, across the beam) of one
 // at infinity.
+// The irradiance over the triangle varies linearly between the relative values ea, eb, ec at
+// its corners (equal: uniform), scaled so that it carries `flux`: a bundle estimates them at
+// its grid's corners from the cells around, so that its picture is smooth where the light is
+// rather than faceted cell by cell.
 struct FilmTriangle {
   Vec2d a, b, c;
   double flux;
+  double ea = 1, eb = 1, ec = 1;
   double Area() const { return 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y)); }
 };
 
@@ -82,8 +87,9 @@ double FrontElementFlux(const LensSystem& lens, const PointSource& source);
 
 // Rasterises triangles into an image of irradiance: pixel (x, y) covers film x in [x0 + x w,
 // x0 + (x + 1) w), y likewise with h; each pixel gets the flux that lands on it over its area:
-// each triangle's flux in proportion to the part of its area inside the pixel (the triangle
-// clipped exactly to the pixel), so every triangle's flux lands exactly once, without the
+// the triangle's irradiance integrated exactly over the part of it inside the pixel (the
+// triangle clipped to the pixel: its area, and for a varying irradiance its centroid, where a
+// linear function takes its mean), so every triangle's flux lands exactly once, without the
 // aliasing of sampling pixel centres. `weight` scales every value.
 struct FilmRaster {
   int width = 0, height = 0;
