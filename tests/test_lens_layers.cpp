@@ -4,11 +4,14 @@
 // kernel against the stop's PSF.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include <fmt/format.h>
 
 #include "camera/realistic_camera.h"
+#include "io/image_io.h"
 #include "io/scene_loader.h"
 #include "optics/ghosts.h"
 #include "render/diffraction_glare.h"
@@ -156,6 +159,50 @@ TEST(LensLayers, DiffractionKernelMatchesTheStopsPsf) {
       EXPECT_NEAR(k.xyz[(size_t(y) * 41 + x) * 3 + 1], psf.At(x, y) / psf_sum, 0.01 * centre) << x << "," << y;
     }
   EXPECT_NEAR(ks, 1, 1e-5);
+}
+
+TEST(LensLayers, AnApertureMasksGreyLevelsDimTheLightsImageAndGhosts) {
+  // A uniform grey mask (128 of 255, read raw: 0.502) passes half the light everywhere.
+  const std::string mask = (std::filesystem::temp_directory_path() / "objektiv_grey_mask.png").string();
+  Image grey(16, 16, {"R", "G", "B"});
+  std::fill(grey.pixels.begin(), grey.pixels.end(), 128.f / 255.f);
+  WritePng(mask, grey);
+  const std::string effects = R"(<boolean name="ghosts" value="true"/><string name="diffraction" value="emitters"/>)";
+  const LensLayers open = RenderLayers(LayerScene(effects, kPointLight, 1));
+  const LensLayers masked = RenderLayers(
+      LayerScene(effects + fmt::format(R"(<string name="aperture_mask" value="{}"/>)", mask), kPointLight, 1));
+  const double t = 128.0 / 255.0;
+  EXPECT_NEAR(TotalY(masked.primary) / TotalY(open.primary), t, 0.01 * t);
+  // A ghost crosses the stop once or three times: between t^3 and t of the light.
+  const double ghosts = TotalY(masked.ghosts) / TotalY(open.ghosts);
+  EXPECT_GT(ghosts, t * t * t * 0.99);
+  EXPECT_LT(ghosts, t * 1.01);
+  std::filesystem::remove(mask);
+}
+
+TEST(LensLayers, OneWavelengthBandKeepsWhiteLightWhite) {
+  // The bands' colours are the matching functions integrated over each band: one band over
+  // 380..780 nm gives a white light the chromaticity that 16 give.
+  auto chromaticity = [](const std::vector<float>& xyz) {
+    double sum[3] = {0, 0, 0};
+    for (size_t i = 0; i < xyz.size(); ++i) sum[i % 3] += xyz[i];
+    return Vec2d(sum[0] / (sum[0] + sum[1] + sum[2]), sum[1] / (sum[0] + sum[1] + sum[2]));
+  };
+  const Vec2d one = chromaticity(RenderLayers(LayerScene(R"(<string name="diffraction" value="emitters"/>
+      <integer name="flare_wavelengths" value="1"/>)", kPointLight, 1)).primary);
+  const Vec2d many = chromaticity(RenderLayers(LayerScene(R"(<string name="diffraction" value="emitters"/>)", kPointLight, 1)).primary);
+  EXPECT_NEAR(one.x, many.x, 0.005);
+  EXPECT_NEAR(one.y, many.y, 0.005);
+}
+
+TEST(LensLayers, DimLightsGhostsAreCulledAgainstTheBrightestOfAll) {
+  const std::string effects = R"(<boolean name="ghosts" value="true"/>)";
+  const LensLayers bright = RenderLayers(LayerScene(effects, kPointLight, 1));
+  const LensLayers both = RenderLayers(LayerScene(effects, std::string(kPointLight) + R"(
+    <emitter type="point"><point name="position" x="-0.3" y="-0.1" z="-3"/><spectrum name="intensity" value="1e-9"/></emitter>)", 1));
+  EXPECT_EQ(both.flare_sources, 2);
+  EXPECT_EQ(both.ghosts_traced, bright.ghosts_traced);
+  EXPECT_EQ(both.ghosts_culled, bright.ghosts_culled + bright.ghosts_traced + bright.ghosts_culled);
 }
 
 }  // namespace

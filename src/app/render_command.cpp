@@ -136,11 +136,17 @@ void AddLensLayers(const LensLayers& layers, const ColorSpace& cs, float exposur
   }
   image = std::move(out);
   header.push_back({"objektiv:flare_sources", layers.flare_sources});
+  if (!layers.ghosts.empty() && layers.other_lights > 0)
+    spdlog::warn("ghosts: {} area or environment light{} of the scene make{} no ghosts (only point, spot and directional "
+                 "lights do, {} here)",
+                 layers.other_lights, layers.other_lights == 1 ? "" : "s", layers.other_lights == 1 ? "s" : "",
+                 layers.flare_sources);
   if (!layers.ghosts.empty()) {
     header.push_back({"objektiv:ghosts_traced", layers.ghosts_traced});
     header.push_back({"objektiv:ghosts_culled", layers.ghosts_culled});
-    spdlog::info("ghosts: {} bright points, {} ghosts traced ({} culled as too dim), {:.2f} s", layers.flare_sources,
-                 layers.ghosts_traced, layers.ghosts_culled, layers.ghost_seconds);
+    spdlog::info("ghosts: {} bright point{}, {} ghosts traced, {} culled as too dim, {} reach no film; {:.2f} s",
+                 layers.flare_sources, layers.flare_sources == 1 ? "" : "s", layers.ghosts_traced, layers.ghosts_culled,
+                 layers.ghosts_dark, layers.ghost_seconds);
   }
   if (!layers.diffraction.empty()) {
     header.push_back({"objektiv:diffraction_fnumber", layers.fnumber});

@@ -88,8 +88,9 @@ Vec2d SensorSize(const Properties& p, int width, int height) {
     }
     if (!found) throw ErrorAt(p.LocOf("sensor"), "unknown sensor '{}' (known: {})", name, known);
   } else {
+    // Neither given: the full frame (36 x 24 mm). A width alone: the film's aspect.
     w = p.FloatIn("sensor_width", 36, 1e-3, 1e4);
-    h = p.Has("sensor_height") ? p.FloatIn("sensor_height", 24, 1e-3, 1e4) : w * height / width;
+    h = p.Has("sensor_height") ? p.FloatIn("sensor_height", 24, 1e-3, 1e4) : p.Has("sensor_width") ? w * height / width : 24;
   }
   double aspect = double(width) / height;
   return w / h > aspect ? Vec2d(h * aspect, h) : Vec2d(w, w / aspect);
@@ -130,10 +131,11 @@ LensEffects ReadLensEffects(const Properties& p, LensModel model) {
   }
   if (!e.Any()) warn("flare_wavelengths", "without ghosts or diffraction");
   if (model != LensModel::kReal && e.Any()) {
-    const char* name = p.Has("ghosts") && e.ghosts ? "ghosts" : "diffraction";
-    spdlog::warn("{}:{}: {} needs lens_model 'real' (the ghosts and the diffraction come from the lens's surfaces and "
-                 "its exit pupil): ignored",
-                 p.LocOf(name).file, p.LocOf(name).line, name);
+    for (const char* name : {"ghosts", "diffraction"})
+      if (name == std::string("ghosts") ? e.ghosts : e.diffraction != DiffractionScope::kOff)
+        spdlog::warn("{}:{}: {} needs lens_model 'real' (the ghosts and the diffraction come from the lens's surfaces "
+                     "and its exit pupil): ignored",
+                     p.LocOf(name).file, p.LocOf(name).line, name);
     return {};
   }
   return e;

@@ -34,8 +34,9 @@ namespace {
 // traced along `path` to the film.
 class BundleTracer {
  public:
-  BundleTracer(const LensSystem& lens, std::span<const SurfaceVisit> path, const PointSource& source, double lambda_nm)
-      : lens_(lens), path_(path), source_(source), lambda_(lambda_nm) {
+  BundleTracer(const LensSystem& lens, std::span<const SurfaceVisit> path, const PointSource& source, double lambda_nm,
+               const BundleOptions& options = {})
+      : lens_(lens), path_(path), source_(source), lambda_(lambda_nm), options_(options) {
     const LensSurface& front = lens.surface(0);
     const double rim_z = lens.VertexZ(0) + front.Sag(front.semi_diameter);
     start_z_ = std::min(lens.VertexZ(0), rim_z) - 1;
@@ -61,12 +62,20 @@ class BundleTracer {
     const Vec3d d = source_.at_infinity ? source_.direction : Normalize(at - source_.position);
     Corner c;
     if (!(d.z > 0)) return c;
-    TraceResult r = TraceSequence(lens_, {at, d}, lambda_, path_);
+    thread_local std::vector<Vec3d> points;
+    points.clear();
+    const bool masked = bool(options_.stop_transmittance);
+    TraceResult r = TraceSequence(lens_, {at, d}, lambda_, path_, masked ? &points : nullptr);
     if (!r.ray || !(r.ray->d.z > 0)) return c;
     const double t = (lens_.FilmZ() - r.ray->o.z) / r.ray->d.z;
     c.alive = true;
     c.film = {r.ray->o.x + t * r.ray->d.x, r.ray->o.y + t * r.ray->d.y};
-    c.transmittance = r.surface_transmittance * r.internal_transmittance;
+    c.transmittance = options_.lossless ? 1.0 : r.surface_transmittance * r.internal_transmittance;
+    if (masked) {
+      const double inv = 1 / lens_.StopSemiDiameter();
+      for (size_t k = 0; k < points.size() && k < path_.size(); ++k)
+        if (path_[k].surface == lens_.StopIndex()) c.transmittance *= options_.stop_transmittance(points[k].x * inv, points[k].y * inv);
+    }
     return c;
   }
 
@@ -222,6 +231,7 @@ class BundleTracer {
   const LensSystem& lens_;
   std::span<const SurfaceVisit> path_;
   PointSource source_;
+  BundleOptions options_;
   double lambda_, start_z_, reach_;
   Vec2d centre_{0, 0};  // of the start square
 };
@@ -259,15 +269,29 @@ std::optional<BundleRegion> DirectRegion(const LensSystem& lens, const PointSour
 }
 
 std::vector<FilmTriangle> GhostBundle(const LensSystem& lens, const Ghost& ghost, const PointSource& source,
-                                      double lambda_nm, int grid, const BundleRegion* region) {
+                                      double lambda_nm, const BundleOptions& options) {
   const std::vector<SurfaceVisit> path = GhostPath(lens, ghost);
-  return BundleTracer(lens, path, source, lambda_nm).Bundle(grid, region);
+  return BundleTracer(lens, path, source, lambda_nm, options).Bundle(options.grid, options.region);
+}
+
+std::vector<FilmTriangle> GhostBundle(const LensSystem& lens, const Ghost& ghost, const PointSource& source,
+                                      double lambda_nm, int grid, const BundleRegion* region) {
+  BundleOptions options;
+  options.grid = grid, options.region = region;
+  return GhostBundle(lens, ghost, source, lambda_nm, options);
+}
+
+std::vector<FilmTriangle> DirectBundle(const LensSystem& lens, const PointSource& source, double lambda_nm,
+                                       const BundleOptions& options) {
+  const std::vector<SurfaceVisit> path = DirectPath(lens);
+  return BundleTracer(lens, path, source, lambda_nm, options).Bundle(options.grid, options.region);
 }
 
 std::vector<FilmTriangle> DirectBundle(const LensSystem& lens, const PointSource& source, double lambda_nm, int grid,
                                        const BundleRegion* region) {
-  const std::vector<SurfaceVisit> path = DirectPath(lens);
-  return BundleTracer(lens, path, source, lambda_nm).Bundle(grid, region);
+  BundleOptions options;
+  options.grid = grid, options.region = region;
+  return DirectBundle(lens, source, lambda_nm, options);
 }
 
 namespace {

@@ -15,6 +15,7 @@
 // rays get through; cells that lie across the edge of what gets through are split in four,
 // three times over, so that the ghost's outline follows the stop's.
 #pragma once
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -75,8 +76,23 @@ std::optional<BundleRegion> GhostRegion(const LensSystem& lens, const Ghost& gho
 std::vector<FilmTriangle> GhostBundle(const LensSystem& lens, const Ghost& ghost, const PointSource& source,
                                       double lambda_nm, int grid = 64, const BundleRegion* region = nullptr);
 
+// Everything a bundle can be asked for: the grid, the region (see GhostBundle), the stop's
+// transmittance at (u, v) in stop radii where its opening lets light through (an aperture
+// mask's grey levels; none: 1), applied at each crossing of the stop, and whether to leave
+// out the surfaces' and glasses' losses (the camera's `transmission false`).
+struct BundleOptions {
+  int grid = 64;
+  const BundleRegion* region = nullptr;
+  std::function<double(double u, double v)> stop_transmittance;
+  bool lossless = false;
+};
+std::vector<FilmTriangle> GhostBundle(const LensSystem& lens, const Ghost& ghost, const PointSource& source,
+                                      double lambda_nm, const BundleOptions& options);
+
 // The same for the light that goes straight through (no reflection): the point's own image,
 // for comparison (a ghost's share of the light is its flux over this one's).
+std::vector<FilmTriangle> DirectBundle(const LensSystem& lens, const PointSource& source, double lambda_nm,
+                                       const BundleOptions& options);
 std::optional<BundleRegion> DirectRegion(const LensSystem& lens, const PointSource& source, double lambda_nm);
 std::vector<FilmTriangle> DirectBundle(const LensSystem& lens, const PointSource& source, double lambda_nm, int grid = 64,
                                        const BundleRegion* region = nullptr);

@@ -47,18 +47,26 @@ DiffractionKernel MakeDiffractionKernel(const PupilFunction& pupil, double fnumb
   // Fine samples: unaliased (at most lambda N / 2), at least 4 per pixel, yet the pupil at
   // least 128 samples across in the largest grid.
   const double step = std::max(std::min(scale0 / 2, pitch / 4), 128 * scale0 / kMaxGrid);
-  const int n = std::clamp(NextPowerOfTwo(2 * (max_radius + 1) * pitch / step), 256, kMaxGrid);
+  // The shortest wavelength's copy is the smallest: the reach every wavelength shares.
+  const double shrink = kShortest / kLongest;
+  const int n = std::clamp(NextPowerOfTwo(2 * (max_radius + 1) * pitch / (step * shrink)), 256, kMaxGrid);
   const std::vector<double> fine = SampledPattern(pupil, kLongest * 1e-3, fnumber, step, n);
-  // The kernel reaches as far as the grid's half (at the longest wavelength) or max_radius.
   DiffractionKernel k;
-  k.radius = std::min(max_radius, int(std::floor(0.5 * n * step / std::max(pitch_x_um, pitch_y_um))));
+  k.radius = std::min(max_radius, int(std::floor(0.5 * n * step * shrink / std::max(pitch_x_um, pitch_y_um))));
   const int size = k.Size();
+  // Each wavelength band's colour: the matching functions integrated over the band (so that
+  // few bands still make white light white), its pattern at the band's middle.
   std::vector<double> lambdas, weights[3];
   const double dl = (kLongest - kShortest) / wavelengths;
   for (int i = 0; i < wavelengths; ++i) {
-    const double l = kShortest + (i + 0.5) * dl;
-    const Vec3f c = CieXyz(float(l));
-    lambdas.push_back(l);
+    const double l0 = kShortest + i * dl;
+    lambdas.push_back(l0 + 0.5 * dl);
+    Vec3d c(0.0);
+    const int steps = std::max(1, int(std::ceil(dl)));
+    for (int j = 0; j < steps; ++j) {
+      const Vec3f v = CieXyz(float(l0 + (j + 0.5) * dl / steps));
+      c += Vec3d(v.x, v.y, v.z) * (dl / steps);
+    }
     weights[0].push_back(c.x), weights[1].push_back(c.y), weights[2].push_back(c.z);
   }
   // Each wavelength's copy of the fine pattern, shrunk by lambda / 780, into the pixels: each
@@ -105,6 +113,15 @@ DiffractionKernel MakeDiffractionKernel(const PupilFunction& pupil, double fnumb
   std::vector<double> sum(size_t(size) * size * 3, 0.0);
   for (const std::vector<double>& acc : local)
     for (size_t i = 0; i < sum.size(); ++i) sum[i] += acc[i];
+  // Faded out over the outer quarter of the radius, every wavelength alike: a pattern cut
+  // off sharply (at a square, or at a radius that differs with the wavelength) would draw its
+  // edge, in colours.
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const double r = std::hypot(x - k.radius, y - k.radius) / std::max(k.radius, 1);
+      const double fade = r <= 0.75 ? 1 : r >= 1 ? 0 : std::pow(std::cos(0.5 * M_PI * (r - 0.75) / 0.25), 2);
+      for (int c = 0; c < 3; ++c) sum[(size_t(y) * size + x) * 3 + c] *= fade;
+    }
   double total[3] = {0, 0, 0};
   for (size_t i = 0; i < sum.size(); ++i) total[i % 3] += sum[i];
   k.xyz.resize(sum.size());

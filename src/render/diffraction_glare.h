@@ -9,9 +9,12 @@
 // functions: a kernel per X, Y and Z (each summing to 1) for light of even spectrum. A pixel's
 // spectrum is not known (the film keeps XYZ), so coloured light is spread as white light of its
 // X, Y and Z would be: exact for grey light, close for the broad spectra of lamps and the sun.
-// Its reach: the fine FFT covers at most 4096 samples per side, about 1024 lambda N across
-// (at f/8: 6 mm of film, 230 pixels of 28 um either side); the light beyond (the far tails,
-// well under 1%) is left in the kernel's sum (each channel renormalised to 1).
+// Its reach: the fine FFT covers at most 4096 samples per side, 1024 lambda N across at 780
+// nm, and the shortest wavelength's copy half as much: the kernel reaches as far as all
+// wavelengths do (at f/8: about 3 mm of film, 110 pixels of 28 um either side; twice as far
+// at f/16), faded out over its outer quarter alike for every wavelength, round; the light
+// beyond (the far tails, about 1% at f/8 on 28 um pixels) is left in the kernel's sum (each
+// channel renormalised to 1), so the spikes of a very bright light end there.
 //
 // Convolution: by FFT over the image padded by the kernel's radius (light from outside the
 // image is not known and does not come in; light spread past its edges leaves).

@@ -30,6 +30,6 @@ struct FlareSource {
 // The delta lights in front of the lens that some of the front element sees (spots: whose
 // cone includes the lens). Visibility: shadow rays from `visibility_samples` points spread over
 // the front element's clear aperture.
-std::vector<FlareSource> FindFlareSources(const Scene& scene, const RealisticCamera& camera, int visibility_samples = 16);
+std::vector<FlareSource> FindFlareSources(const Scene& scene, const RealisticCamera& camera, int visibility_samples = 64);
 
 }  // namespace objektiv

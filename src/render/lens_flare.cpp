@@ -29,21 +29,27 @@ struct FlarePath {
   BundleRegion region;
 };
 
-// The ghosts of `source` worth tracing (see lens_flare.h: culling), with their regions.
-std::vector<FlarePath> BrightGhosts(const LensSystem& lens, const std::vector<Ghost>& ghosts, const PointSource& source,
-                                    double cull) {
+// Every ghost of `source` whose light reaches the film, with its region and its level: the
+// mean irradiance of a coarse bundle at 580 nm (see lens_flare.h: culling).
+struct LitGhost {
+  FlarePath path;
+  double level = 0;
+};
+std::vector<LitGhost> LitGhosts(const LensSystem& lens, const std::vector<Ghost>& ghosts, const PointSource& source,
+                                const BundleOptions& options) {
   std::vector<std::optional<BundleRegion>> regions(ghosts.size());
   std::vector<double> level(ghosts.size(), 0);
   tbb::parallel_for(size_t(0), ghosts.size(), [&](size_t g) {
     regions[g] = GhostRegion(lens, ghosts[g], source, kRegionLambda);
-    if (regions[g]) level[g] = MeanIrradiance(GhostBundle(lens, ghosts[g], source, kRegionLambda, 8, &*regions[g]));
+    if (!regions[g]) return;
+    BundleOptions coarse = options;
+    coarse.grid = 8, coarse.region = &*regions[g];
+    level[g] = MeanIrradiance(GhostBundle(lens, ghosts[g], source, kRegionLambda, coarse));
   });
-  double brightest = 0;
-  for (double l : level) brightest = std::max(brightest, l);
-  std::vector<FlarePath> kept;
+  std::vector<LitGhost> lit;
   for (size_t g = 0; g < ghosts.size(); ++g)
-    if (level[g] > 0 && level[g] >= cull * brightest) kept.push_back({ghosts[g], *regions[g]});
-  return kept;
+    if (level[g] > 0) lit.push_back({{ghosts[g], *regions[g]}, level[g]});
+  return lit;
 }
 
 }  // namespace
@@ -82,11 +88,36 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
   const std::vector<Ghost> all = TwoReflectionGhosts(lens);
   std::vector<std::vector<FlarePath>> paths(sources.size());
   std::vector<Task> tasks;
+  // The bundles' options: the aperture mask's grey levels at the stop; the camera's
+  // transmission off leaves the lights' own images without losses (ghosts need reflections).
+  BundleOptions options;
+  options.grid = settings.grid;
+  if (const ApertureMask* mask = camera.settings().aperture_mask.get())
+    options.stop_transmittance = [mask](double u, double v) { return double(mask->Transmittance(float(u), float(v))); };
+  BundleOptions direct_options = options;
+  direct_options.lossless = !camera.settings().transmission;
+  // Culling over all the lights at once: a ghost's level times its light's brightness
+  // against the brightest's, so that dim lights cost little.
+  std::vector<std::vector<LitGhost>> lit(sources.size());
+  double brightest = 0;
+  if (settings.ghosts)
+    for (size_t s = 0; s < sources.size(); ++s) {
+      lit[s] = LitGhosts(lens, all, sources[s].source, options);
+      out.ghosts_dark += int(all.size() - lit[s].size());
+      const double brightness = sources[s].irradiance_scale * sources[s].visibility * sources[s].Emission(kRegionLambda);
+      for (LitGhost& g : lit[s]) {
+        g.level *= brightness;
+        brightest = std::max(brightest, g.level);
+      }
+    }
   for (size_t s = 0; s < sources.size(); ++s) {
-    if (settings.ghosts) {
-      paths[s] = BrightGhosts(lens, all, sources[s].source, settings.cull);
-      out.ghosts_traced += int(paths[s].size());
-      out.ghosts_culled += int(all.size() - paths[s].size());
+    for (const LitGhost& g : lit[s]) {
+      if (g.level >= settings.cull * brightest && g.level > 0) {
+        paths[s].push_back(g.path);
+        ++out.ghosts_traced;
+      } else {
+        ++out.ghosts_culled;
+      }
     }
     if (settings.light_images)
       if (std::optional<BundleRegion> r = DirectRegion(lens, sources[s].source, kRegionLambda))
@@ -105,13 +136,23 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
     const Task& t = tasks[i];
     const FlareSource& f = *t.source;
     const FlarePath& p = *t.path;
-    std::vector<FilmTriangle> bundle = p.ghost ? GhostBundle(lens, *p.ghost, f.source, t.lambda, settings.grid, &p.region)
-                                               : DirectBundle(lens, f.source, t.lambda, settings.grid, &p.region);
+    BundleOptions o = p.ghost ? options : direct_options;
+    o.region = &p.region;
+    std::vector<FilmTriangle> bundle =
+        p.ghost ? GhostBundle(lens, *p.ghost, f.source, t.lambda, o) : DirectBundle(lens, f.source, t.lambda, o);
     if (bundle.empty()) return;
-    const double w = to_pixel * f.irradiance_scale * f.visibility * f.Emission(t.lambda) * step / CieYIntegral();
-    const Vec3f cie = CieXyz(float(t.lambda));
+    // The band's colour: the emission times the matching functions integrated over the band
+    // (so that few bands keep white light white), its geometry at the band's middle.
+    Vec3d colour(0.0);
+    const int steps = std::max(1, int(std::ceil(step)));
+    for (int j = 0; j < steps; ++j) {
+      const double l = t.lambda - 0.5 * step + (j + 0.5) * step / steps;
+      const Vec3f cie = CieXyz(float(l));
+      colour += Vec3d(cie.x, cie.y, cie.z) * (f.Emission(l) * step / steps);
+    }
+    const double w = to_pixel * f.irradiance_scale * f.visibility / CieYIntegral();
     Images& images = local.local();
-    SplatColour(bundle, raster, Vec3d(w * cie.x, w * cie.y, w * cie.z), p.ghost ? images.ghosts.data() : images.lights.data());
+    SplatColour(bundle, raster, colour * w, p.ghost ? images.ghosts.data() : images.lights.data());
   });
   for (const Images& images : local) {
     for (size_t i = 0; i < out.ghosts.size(); ++i) out.ghosts[i] += images.ghosts[i];

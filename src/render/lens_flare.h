@@ -6,9 +6,14 @@
 // each weighted by the light's emission and the CIE matching functions; deterministic (no
 // noise: what is left is the grid's faceting and the wavelength steps).
 //
-// Culling: each ghost is first traced coarsely at 550 nm; a ghost whose mean irradiance (its
-// flux over its area) is below `cull` times the brightest ghost's is left out: it adds less
-// than that fraction of the brightest ghost's level wherever it lands.
+// Culling: each ghost is first traced coarsely at 580 nm; a ghost whose mean irradiance (its
+// flux over its area, times its light's brightness) is below `cull` times the brightest
+// ghost's of all the lights is left out: it adds less than that fraction of the brightest
+// ghost's level wherever it lands.
+//
+// The aperture mask's grey levels weight every bundle where it crosses the stop; with the
+// camera's transmission off, the lights' own images leave out the lens's losses as the camera
+// rays do.
 #pragma once
 #include <vector>
 
@@ -29,7 +34,9 @@ struct FlareImages {
   int width = 0, height = 0;  // the crop window's
   // CIE XYZ per pixel (interleaved), in the film's units (camera/lens_camera.h).
   std::vector<float> ghosts, lights;
-  int sources = 0, ghosts_traced = 0, ghosts_culled = 0;  // ghosts per source, summed over sources
+  // Ghosts per source, summed over sources: traced, culled as too dim, and those whose light
+  // does not reach the film at all.
+  int sources = 0, ghosts_traced = 0, ghosts_culled = 0, ghosts_dark = 0;
   double seconds = 0;
 };
 

@@ -77,7 +77,9 @@ LensLayers ComposeLensLayers(const Scene& scene, const Camera& camera, const Fil
   flare.wavelengths = e.wavelengths;
   flare.cull = e.ghost_cull;
   FlareImages f = RenderFlare(scene, *real, crop, flare);
+  for (const std::unique_ptr<Light>& light : scene.lights()) out.other_lights += !light->IsDelta();
   out.flare_sources = f.sources, out.ghosts_traced = f.ghosts_traced, out.ghosts_culled = f.ghosts_culled;
+  out.ghosts_dark = f.ghosts_dark;
   out.ghost_seconds = f.seconds;
   Add(out.primary, f.lights);
   if (e.ghosts) out.ghosts = std::move(f.ghosts);

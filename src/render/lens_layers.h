@@ -22,8 +22,9 @@ struct LensLayers {
   std::vector<float> primary, ghosts, diffraction;  // ghosts, diffraction: empty when not asked for
   std::vector<float> Sum() const;
   // What the passes did, for the log and the header.
-  int flare_sources = 0, ghosts_traced = 0, ghosts_culled = 0, diffraction_radius = 0;
+  int flare_sources = 0, ghosts_traced = 0, ghosts_culled = 0, ghosts_dark = 0, diffraction_radius = 0;
   double fnumber = 0;  // working, of the diffraction pattern
+  int other_lights = 0;  // area and environment lights: no ghosts, no own images
   double ghost_seconds = 0, diffraction_seconds = 0;
 };
 
