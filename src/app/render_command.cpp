@@ -137,7 +137,7 @@ void AddLensLayers(const LensLayers& layers, const ColorSpace& cs, float exposur
   image = std::move(out);
   header.push_back({"objektiv:flare_sources", layers.flare_sources});
   if (!layers.ghosts.empty() && layers.other_lights > 0)
-    spdlog::warn("ghosts: {} area or environment light{} of the scene make{} no ghosts (only point, spot and directional "
+    spdlog::info("ghosts: {} area or environment light{} of the scene make{} no ghosts (only point, spot and directional "
                  "lights do, {} here)",
                  layers.other_lights, layers.other_lights == 1 ? "" : "s", layers.other_lights == 1 ? "s" : "",
                  layers.flare_sources);
