@@ -12,6 +12,7 @@
 
 #include "camera/realistic_camera.h"
 #include "io/image_io.h"
+#include "log_capture.h"
 #include "io/scene_loader.h"
 #include "optics/ghosts.h"
 #include "render/diffraction_glare.h"
@@ -203,6 +204,23 @@ TEST(LensLayers, DimLightsGhostsAreCulledAgainstTheBrightestOfAll) {
   EXPECT_EQ(both.flare_sources, 2);
   EXPECT_EQ(both.ghosts_traced, bright.ghosts_traced);
   EXPECT_EQ(both.ghosts_culled, bright.ghosts_culled + bright.ghosts_traced + bright.ghosts_culled);
+}
+
+// What the effects cannot do as the camera is told is said, with the line; their tuning
+// without them, and the effects with an ideal lens model, are said to do nothing.
+TEST(LensLayers, SettingsTheEffectsCannotFollowAreWarned) {
+  auto warnings = [](const std::string& sensor) {
+    test::LogCapture log;
+    LoadSceneFromString(LayerScene(sensor, kPointLight), "w.xml", {});
+    return log.Text();
+  };
+  EXPECT_NE(warnings(R"(<boolean name="ghosts" value="true"/><string name="vignetting" value="cos4"/>)").find("keep the lens's vignetting"), std::string::npos);
+  EXPECT_NE(warnings(R"(<boolean name="ghosts" value="true"/><boolean name="transmission" value="false"/>)").find("ghosts are made of the surfaces' reflections"), std::string::npos);
+  EXPECT_EQ(warnings(R"(<boolean name="ghosts" value="true"/>)"), "");
+  EXPECT_NE(warnings(R"(<integer name="ghost_grid" value="16"/>)").find("ghost_grid does nothing"), std::string::npos);
+  const std::string thin = warnings(R"(<string name="lens_model" value="thin"/><boolean name="ghosts" value="true"/>
+      <string name="diffraction" value="image"/>)");
+  EXPECT_EQ(test::Occurrences(thin, "needs lens_model 'real'"), 2);
 }
 
 }  // namespace

@@ -206,13 +206,15 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b
   }
   WarnIfShiftedPastTheImageCircle(p, s, *camera);
   const LensEffects effects = ReadLensEffects(p, spec.model);
-  // The bright points' images and ghosts are traced through the lens as it is.
-  if (effects.Any() && (!s.transmission || s.vignetting != Vignetting::kFull)) {
-    const char* name = !s.transmission ? "transmission" : "vignetting";
-    spdlog::warn("{}:{}: the lights' own images and their ghosts are traced through the lens as it is (its reflection "
-                 "losses and rims), whatever {} says; only the camera rays follow it",
-                 p.LocOf(name).file, p.LocOf(name).line, name);
-  }
+  // What the bundles cannot leave out.
+  if (effects.Any() && s.vignetting != Vignetting::kFull)
+    spdlog::warn("{}:{}: the lights' own images and their ghosts keep the lens's vignetting (the rims and the cos^4 "
+                 "falloff) whatever vignetting says; only the camera rays follow it",
+                 p.LocOf("vignetting").file, p.LocOf("vignetting").line);
+  if (effects.ghosts && !s.transmission)
+    spdlog::warn("{}:{}: ghosts are made of the surfaces' reflections: with transmission false they keep them (and the "
+                 "other surfaces' losses); the lights' own images leave the losses out as the camera rays do",
+                 p.LocOf("transmission").file, p.LocOf("transmission").line);
   if (auto* real = dynamic_cast<RealisticCamera*>(camera.get())) real->SetEffects(effects);
   return camera;
 }
