@@ -16,6 +16,7 @@
 #include "base/output_file.h"
 #include "io/image_io.h"
 #include "io/scene_loader.h"
+#include "render/aov.h"
 #include "render/lens_layers.h"
 #include "render/renderer.h"
 
@@ -156,6 +157,23 @@ void AddLensLayers(const LensLayers& layers, const ColorSpace& cs, float exposur
   }
 }
 
+// The AOVs (render/aov.h) as channels of their own names after the others.
+void AddAovChannels(const AovIntegrator& integrator, const Film& film, Image& image) {
+  std::vector<std::string> names;
+  for (const Aov& a : integrator.aovs())
+    for (const std::string& n : a.ChannelNames()) names.push_back(n);
+  const std::vector<float> values = film.Aovs();
+  const size_t base = image.channels.size(), n = names.size(), pixels = size_t(image.width) * image.height;
+  Image out(image.width, image.height, image.channels);
+  for (const std::string& name : names) out.channels.push_back(name);
+  out.pixels.assign(pixels * out.channels.size(), 0.f);
+  for (size_t i = 0; i < pixels; ++i) {
+    for (size_t c = 0; c < base; ++c) out.pixels[i * (base + n) + c] = image.pixels[i * base + c];
+    for (size_t c = 0; c < n; ++c) out.pixels[i * (base + n) + base + c] = values[i * n + c];
+  }
+  image = std::move(out);
+}
+
 int RunRender(const RenderArgs& a) {
   SetupLogging(a.quiet ? 0 : (a.verbose ? 2 : 1));
   std::map<std::string, std::string> defines;
@@ -196,8 +214,13 @@ int RunRender(const RenderArgs& a) {
   if (a.seed >= 0) setup.sampler.seed = uint64_t(a.seed);
   std::unique_ptr<Sampler> sampler = MakeSampler(setup.sampler);
   int threads = a.threads > 0 ? a.threads : int(std::thread::hardware_concurrency());
-  Film film = MakeFilm(fs_, a.max_memory_gib, LensEffectsBytes(*setup.camera, fs_.crop, threads));
+  const auto* aov_integrator = dynamic_cast<const AovIntegrator*>(setup.integrator.get());
+  // The AOVs: double sums, then float channels in the image (twice: the image is copied).
+  const uint64_t aov_bytes =
+      aov_integrator ? uint64_t(fs_.crop.Width()) * fs_.crop.Height() * aov_integrator->AovChannels() * (8 + 2 * 4) : 0;
+  Film film = MakeFilm(fs_, a.max_memory_gib, LensEffectsBytes(*setup.camera, fs_.crop, threads) + aov_bytes);
   PrepareFilmForLensEffects(*setup.camera, film);
+  if (aov_integrator) film.KeepAovs(aov_integrator->AovChannels());
   RenderOptions opts;
   opts.spp_begin = 0;
   opts.spp_end = sampler->spp();
@@ -228,6 +251,7 @@ int RunRender(const RenderArgs& a) {
   }
   Image linear = XyzToImage(layers.Sum(), layers.width, layers.height, *fs_.color_space, fs_.exposure);
   AddLensLayers(layers, *fs_.color_space, fs_.exposure, linear, header);
+  if (aov_integrator) AddAovChannels(*aov_integrator, film, linear);
   WriteExr(exr.string(), linear, header);
   WritePng(png.string(), ApplyToneMap(linear, fs_.tonemap));
   if (!a.stats_json.empty()) WriteStatsJson(a.stats_json, stats, threads, layers);

@@ -1,7 +1,32 @@
 // The <integrator> plugins: each makes an Integrator from its properties.
 #include "io/loader_context.h"
+#include "render/aov.h"
 
 namespace objektiv {
+
+namespace {
+
+// Mitsuba's `aov`: the AOVs (render/aov.h) beside the image of the nested integrator (the path
+// tracer when none is nested).
+std::unique_ptr<Integrator> MakeAovIntegrator(const Properties& p, const Scene& scene) {
+  std::vector<Aov> aovs;
+  try {
+    aovs = ParseAovs(p.String("aovs"));
+  } catch (const std::invalid_argument& e) {
+    throw ErrorAt(p.LocOf("aovs"), "aovs: {}", e.what());
+  }
+  auto nested = p.Children("integrator");
+  if (nested.size() > 1) throw ErrorAt(nested[1]->loc, "aov takes one nested <integrator>, got {}", nested.size());
+  std::unique_ptr<Integrator> inner =
+      nested.empty() ? std::make_unique<PathIntegrator>(scene, -1, 5) : IntegratorPlugins().Build(*nested[0], scene);
+  auto* camera_path = dynamic_cast<CameraPathIntegrator*>(inner.get());
+  if (!camera_path) throw ErrorAt(nested[0]->loc, "aov needs an integrator of camera paths inside, not '{}'", nested[0]->type);
+  if (dynamic_cast<AovIntegrator*>(inner.get())) throw ErrorAt(nested[0]->loc, "aov cannot wrap another aov");
+  inner.release();
+  return std::make_unique<AovIntegrator>(scene, std::move(aovs), std::unique_ptr<CameraPathIntegrator>(camera_path));
+}
+
+}  // namespace
 
 const IntegratorRegistry& IntegratorPlugins() {
   static const IntegratorRegistry registry(
@@ -23,6 +48,7 @@ const IntegratorRegistry& IntegratorPlugins() {
              return std::make_unique<DirectIntegrator>(scene, int(p.IntIn("emitter_samples", shading, 0, 1 << 16)),
                                                        int(p.IntIn("bsdf_samples", shading, 0, 1 << 16)));
            }},
+          {"aov", {{"aovs", PropType::kString}, {"integrator", PropType::kObject}}, MakeAovIntegrator},
       });
   return registry;
 }

@@ -80,6 +80,9 @@ class BlockContext {
   void AddEmitted(Vec2i pixel, const SampledSpectrum& Le, const SampledWavelengths& lambda, float filter_weight) {
     if (!Le.HasNaN() && !Le.HasInf()) film_.AddEmitted(pixel, Le, lambda, filter_weight);
   }
+  // The AOVs of a camera sample of a pixel of this block (the film's channels: Film::KeepAovs).
+  int AovChannels() const { return film_.aov_channels(); }
+  void AddAovs(Vec2i pixel, const float* values, float filter_weight) { film_.AddAovs(pixel, values, filter_weight); }
   // A contribution at a continuous film position (full-film pixel coordinates, as
   // CameraSample::p_film), spread over the pixels by the filter. The image shows the sum of a
   // pixel's splats divided by the samples per pixel of the render: an integrator that traces

@@ -1,5 +1,6 @@
 // The block loop of the camera-path integrators: a pixel's camera rays made and traced to their
 // first hits together, then each sample's path estimated by Li.
+#include <algorithm>
 #include <vector>
 
 #include "render/direct_lighting.h"
@@ -39,6 +40,8 @@ void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
   const Camera& camera = ctx.camera();
   const bool lens_sample = camera.UsesLensSample();
   const bool keep_emitted = ctx.KeepsEmitted();
+  const int aov_channels = ctx.AovChannels();
+  std::vector<float> aov(size_t(std::max(aov_channels, 0)));
   CameraBatch b(ctx.sampler());
   ctx.ForEachPixel([&](Vec2i pixel) {
     for (int s0 = block.sample_begin; s0 < block.sample_end; s0 += kCameraBatch) {
@@ -66,6 +69,11 @@ void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
         if (cr && keep_emitted)
           ctx.AddEmitted(pixel, cr->weight * DirectEmission(cr->ray, b.first_hits[k], b.lambdas[k]), b.lambdas[k],
                          b.filter_samples[k].weight);
+        if (aov_channels > 0) {
+          if (cr) EvaluateAovs(cr->ray, b.first_hits[k], aov.data());
+          else std::fill(aov.begin(), aov.end(), 0.f);
+          ctx.AddAovs(pixel, aov.data(), b.filter_samples[k].weight);
+        }
         if (cr) L = cr->weight * Li(cr->ray, b.first_hits[k], b.lambdas[k], b.samplers[k], ctx);
         ctx.AddSample(pixel, L, b.lambdas[k], b.filter_samples[k].weight);
       }

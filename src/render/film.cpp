@@ -83,6 +83,15 @@ std::vector<float> Film::EmittedXyz() const {
   return out;
 }
 
+std::vector<float> Film::Aovs() const {
+  const size_t n = size_t(aov_channels_);
+  std::vector<float> out(n * pixels_.size(), 0.f);
+  for (size_t i = 0; i < pixels_.size(); ++i)
+    if (pixels_[i].weight != 0)
+      for (size_t c = 0; c < n; ++c) out[i * n + c] = float(aov_sums_[i * n + c] / pixels_[i].weight);
+  return out;
+}
+
 Image Film::ToImage(const ColorSpace& cs, float exposure_stops) const {
   return XyzToImage(Xyz(), crop_.Width(), crop_.Height(), cs, exposure_stops);
 }

@@ -35,6 +35,10 @@ class CameraPathIntegrator : public Integrator {
   // the camera) may be splatted through ctx.AddSplat.
   virtual SampledSpectrum Li(const Ray& ray, const std::optional<SurfaceInteraction>& first_hit,
                              SampledWavelengths& lambda, Sampler& sampler, BlockContext& ctx) const = 0;
+  // Values of the first hit kept beside the image (render/aov.h): how many, and each camera
+  // sample's (written to `out`, AovChannels() of them; `hit` empty: a miss).
+  virtual int AovChannels() const { return 0; }
+  virtual void EvaluateAovs(const Ray&, const std::optional<SurfaceInteraction>&, float*) const {}
 
  private:
   // The radiance along the camera ray straight from an emitter (Li's first term): what the

@@ -1,0 +1,83 @@
+#include "render/aov.h"
+
+#include <stdexcept>
+
+namespace objektiv {
+
+namespace {
+
+struct AovName {
+  const char* name;
+  AovType type;
+};
+constexpr AovName kAovTypes[] = {{"depth", AovType::kDepth},
+                                 {"position", AovType::kPosition},
+                                 {"uv", AovType::kUv},
+                                 {"geo_normal", AovType::kGeoNormal},
+                                 {"sh_normal", AovType::kShNormal}};
+
+std::string Trim(const std::string& s) {
+  const size_t a = s.find_first_not_of(" \t\n\r"), b = s.find_last_not_of(" \t\n\r");
+  return a == std::string::npos ? "" : s.substr(a, b - a + 1);
+}
+
+}  // namespace
+
+std::vector<std::string> Aov::ChannelNames() const {
+  switch (type) {
+    case AovType::kDepth: return {name};
+    case AovType::kUv: return {name + ".U", name + ".V"};
+    default: return {name + ".X", name + ".Y", name + ".Z"};
+  }
+}
+
+std::vector<Aov> ParseAovs(const std::string& text) {
+  std::vector<Aov> out;
+  size_t start = 0;
+  while (start <= text.size()) {
+    const size_t comma = std::min(text.find(',', start), text.size());
+    const std::string item = Trim(text.substr(start, comma - start));
+    start = comma + 1;
+    if (item.empty()) throw std::invalid_argument("an empty entry (expected name:type, separated by commas)");
+    const size_t colon = item.find(':');
+    if (colon == std::string::npos) throw std::invalid_argument("'" + item + "' is not name:type");
+    const std::string name = Trim(item.substr(0, colon)), type = Trim(item.substr(colon + 1));
+    if (name.empty()) throw std::invalid_argument("'" + item + "' has no name");
+    bool found = false;
+    std::string known;
+    for (const AovName& a : kAovTypes) {
+      known += known.empty() ? a.name : std::string(", ") + a.name;
+      if (type == a.name) out.push_back({name, a.type}), found = true;
+    }
+    if (!found) throw std::invalid_argument("unknown AOV type '" + type + "' (known: " + known + ")");
+    for (size_t i = 0; i + 1 < out.size(); ++i)
+      if (out[i].name == name) throw std::invalid_argument("the AOV name '" + name + "' is given twice");
+    if (comma == text.size()) break;
+  }
+  return out;
+}
+
+int AovIntegrator::AovChannels() const {
+  int n = 0;
+  for (const Aov& a : aovs_) n += a.Channels();
+  return n;
+}
+
+void AovIntegrator::EvaluateAovs(const Ray& ray, const std::optional<SurfaceInteraction>& hit, float* out) const {
+  for (const Aov& a : aovs_) {
+    const int n = a.Channels();
+    if (!hit) {
+      for (int c = 0; c < n; ++c) *out++ = 0;
+      continue;
+    }
+    switch (a.type) {
+      case AovType::kDepth: *out++ = hit->t * Length(ray.d); break;
+      case AovType::kPosition: *out++ = hit->p.x, *out++ = hit->p.y, *out++ = hit->p.z; break;
+      case AovType::kUv: *out++ = hit->uv.x, *out++ = hit->uv.y; break;
+      case AovType::kGeoNormal: *out++ = hit->n.x, *out++ = hit->n.y, *out++ = hit->n.z; break;
+      case AovType::kShNormal: *out++ = hit->shading.n.x, *out++ = hit->shading.n.y, *out++ = hit->shading.n.z; break;
+    }
+  }
+}
+
+}  // namespace objektiv

@@ -1,0 +1,52 @@
+// Arbitrary output variables: what the camera ray's first hit is, beside the radiance, as
+// Mitsuba 3's `aov` integrator gives them (`<integrator type="aov">` with `aovs` =
+// "name:type,..." and the integrator of the image nested in it). Each pixel holds its camera
+// samples' values averaged with the filter's weights, as the image does; a sample whose ray
+// hits nothing (or that starts no ray) counts zero.
+//   depth       the distance along the camera ray from where it starts   channel NAME
+//               (the near clip plane; the realistic camera: its front element) to the hit
+//   position    the hit point (world)                                     NAME.X, .Y, .Z
+//   uv          the surface's texture coordinates                         NAME.U, .V
+//   geo_normal  the geometric normal (world, unit)                        NAME.X, .Y, .Z
+//   sh_normal   the shading normal (world, unit)                          NAME.X, .Y, .Z
+#pragma once
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "render/integrator.h"
+
+namespace objektiv {
+
+enum class AovType { kDepth, kPosition, kUv, kGeoNormal, kShNormal };
+
+struct Aov {
+  std::string name;
+  AovType type;
+  int Channels() const { return type == AovType::kDepth ? 1 : type == AovType::kUv ? 2 : 3; }
+  std::vector<std::string> ChannelNames() const;
+};
+
+// "dd.y:depth,nn:sh_normal" -> the AOVs; throws std::invalid_argument naming what is wrong.
+std::vector<Aov> ParseAovs(const std::string& text);
+
+// The nested integrator's image, and the AOVs of every camera sample's first hit.
+class AovIntegrator final : public CameraPathIntegrator {
+ public:
+  AovIntegrator(const Scene& scene, std::vector<Aov> aovs, std::unique_ptr<CameraPathIntegrator> inner)
+      : CameraPathIntegrator(scene), aovs_(std::move(aovs)), inner_(std::move(inner)) {}
+  SampledSpectrum Li(const Ray& ray, const std::optional<SurfaceInteraction>& first_hit, SampledWavelengths& lambda,
+                     Sampler& sampler, BlockContext& ctx) const override {
+    return inner_->Li(ray, first_hit, lambda, sampler, ctx);
+  }
+  int AovChannels() const override;
+  void EvaluateAovs(const Ray& ray, const std::optional<SurfaceInteraction>& hit, float* out) const override;
+  const std::vector<Aov>& aovs() const { return aovs_; }
+
+ private:
+  std::vector<Aov> aovs_;
+  std::unique_ptr<CameraPathIntegrator> inner_;
+};
+
+}  // namespace objektiv
