@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include <fmt/format.h>
+#include <tbb/global_control.h>
 
 #include "camera/realistic_camera.h"
 #include "io/image_io.h"
@@ -16,6 +17,7 @@
 #include "io/scene_loader.h"
 #include "optics/ghosts.h"
 #include "render/diffraction_glare.h"
+#include "render/lens_flare.h"
 #include "render/lens_layers.h"
 #include "render/renderer.h"
 
@@ -168,7 +170,8 @@ TEST(LensLayers, AnApertureMasksGreyLevelsDimTheLightsImageAndGhosts) {
   Image grey(16, 16, {"R", "G", "B"});
   std::fill(grey.pixels.begin(), grey.pixels.end(), 128.f / 255.f);
   WritePng(mask, grey);
-  const std::string effects = R"(<boolean name="ghosts" value="true"/><string name="diffraction" value="emitters"/>)";
+  const std::string effects = R"(<boolean name="ghosts" value="true"/><integer name="ghost_grid" value="16"/>
+      <integer name="flare_wavelengths" value="4"/>)";
   const LensLayers open = RenderLayers(LayerScene(effects, kPointLight, 1));
   const LensLayers masked = RenderLayers(
       LayerScene(effects + fmt::format(R"(<string name="aperture_mask" value="{}"/>)", mask), kPointLight, 1));
@@ -189,15 +192,21 @@ TEST(LensLayers, OneWavelengthBandKeepsWhiteLightWhite) {
     for (size_t i = 0; i < xyz.size(); ++i) sum[i % 3] += xyz[i];
     return Vec2d(sum[0] / (sum[0] + sum[1] + sum[2]), sum[1] / (sum[0] + sum[1] + sum[2]));
   };
-  const Vec2d one = chromaticity(RenderLayers(LayerScene(R"(<string name="diffraction" value="emitters"/>
-      <integer name="flare_wavelengths" value="1"/>)", kPointLight, 1)).primary);
-  const Vec2d many = chromaticity(RenderLayers(LayerScene(R"(<string name="diffraction" value="emitters"/>)", kPointLight, 1)).primary);
+  const RenderSetup setup = LoadSceneFromString(LayerScene("", kPointLight, 1), "white.xml", {});
+  const auto& camera = dynamic_cast<const RealisticCamera&>(*setup.camera);
+  FlareSettings settings;
+  settings.light_images = true;
+  settings.wavelengths = 1;
+  const Vec2d one = chromaticity(RenderFlare(*setup.scene, camera, setup.film.crop, settings).lights);
+  settings.wavelengths = 16;
+  const Vec2d many = chromaticity(RenderFlare(*setup.scene, camera, setup.film.crop, settings).lights);
   EXPECT_NEAR(one.x, many.x, 0.005);
   EXPECT_NEAR(one.y, many.y, 0.005);
 }
 
 TEST(LensLayers, DimLightsGhostsAreCulledAgainstTheBrightestOfAll) {
-  const std::string effects = R"(<boolean name="ghosts" value="true"/>)";
+  const std::string effects = R"(<boolean name="ghosts" value="true"/><integer name="ghost_grid" value="16"/>
+      <integer name="flare_wavelengths" value="2"/>)";
   const LensLayers bright = RenderLayers(LayerScene(effects, kPointLight, 1));
   const LensLayers both = RenderLayers(LayerScene(effects, std::string(kPointLight) + R"(
     <emitter type="point"><point name="position" x="-0.3" y="-0.1" z="-3"/><spectrum name="intensity" value="1e-9"/></emitter>)", 1));
@@ -221,6 +230,25 @@ TEST(LensLayers, SettingsTheEffectsCannotFollowAreWarned) {
   const std::string thin = warnings(R"(<string name="lens_model" value="thin"/><boolean name="ghosts" value="true"/>
       <string name="diffraction" value="image"/>)");
   EXPECT_EQ(test::Occurrences(thin, "needs lens_model 'real'"), 2);
+}
+
+// The flare layers are the same, bit for bit, on any number of threads (the bundles are
+// splatted in one order per pixel).
+TEST(LensLayers, FlareIsTheSameOnAnyNumberOfThreads) {
+  const std::string xml = LayerScene(R"(<boolean name="ghosts" value="true"/><string name="diffraction" value="emitters"/>
+      <integer name="ghost_grid" value="16"/><integer name="flare_wavelengths" value="8"/>)",
+                                     std::string(kPointLight) + R"(<emitter type="point"><point name="position" x="-0.2" y="0.15" z="-2"/>
+    <spectrum name="intensity" value="0.5"/></emitter>)",
+                                     1);
+  auto render = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    return RenderLayers(xml);
+  };
+  const LensLayers one = render(1), three = render(3);
+  EXPECT_GT(TotalY(one.ghosts), 0);
+  EXPECT_EQ(one.ghosts, three.ghosts);
+  EXPECT_EQ(one.primary, three.primary);
+  EXPECT_EQ(one.diffraction, three.diffraction);
 }
 
 }  // namespace

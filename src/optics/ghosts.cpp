@@ -350,8 +350,8 @@ Overlap OverlapOf(const Vec2d& a, const Vec2d& b, const Vec2d& c, int x, int y) 
 // p -> q adds, row by row, the signed area it sweeps to its right into the cells it crosses,
 // so that the running sum along a row is the covered share of each pixel (its sign the
 // polygon's orientation). `acc` has rows of `width` cells, the polygon within x in [0,
-// width - 1), y in [0, rows).
-void AccumulateEdge(Vec2d p, Vec2d q, int width, double* acc) {
+// width - 1); only rows [0, rows) are kept (the polygon may reach beyond them).
+void AccumulateEdge(Vec2d p, Vec2d q, int width, int rows, double* acc) {
   if (p.y == q.y) return;
   double direction = 1;
   if (p.y > q.y) {
@@ -359,12 +359,13 @@ void AccumulateEdge(Vec2d p, Vec2d q, int width, double* acc) {
     direction = -1;
   }
   const double dxdy = (q.x - p.x) / (q.y - p.y);
-  double x = p.x;
-  const int first = int(std::floor(p.y)), last = int(std::ceil(q.y));
+  // Only the rows kept (each row's sums stand alone): x where the edge enters each row anew.
+  const int first = std::max(int(std::floor(p.y)), 0), last = std::min(int(std::ceil(q.y)), rows);
   for (int y = first; y < last; ++y) {
     double* line = acc + size_t(y) * width;
-    const double dy = std::min(double(y + 1), q.y) - std::max(double(y), p.y);
-    const double x_next = x + dxdy * dy, d = dy * direction;
+    const double top = std::max(double(y), p.y), bottom = std::min(double(y + 1), q.y);
+    const double x = p.x + dxdy * (top - p.y), x_next = p.x + dxdy * (bottom - p.y);
+    const double d = (bottom - top) * direction;
     const double lo = std::min(x, x_next), hi = std::max(x, x_next);
     const double lo_floor = std::floor(lo);
     const int i0 = int(lo_floor), i1 = int(std::ceil(hi));
@@ -393,7 +394,6 @@ void AccumulateEdge(Vec2d p, Vec2d q, int width, double* acc) {
       }
       line[i1] += d * am;
     }
-    x = x_next;
   }
 }
 
@@ -452,20 +452,21 @@ void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, dou
       const Vec2d centre = share >= 1 - 1e-9 ? Vec2d(x + 0.5, y + 0.5) : OverlapOf(a, b, c, x, y).centroid;
       return per_area * share * relative(centre);
     };
-    // Inside the image: the exact coverage by accumulated edges.
-    if (x0 >= 0 && y0 >= 0 && x1 < r.width && y1 < r.height) {
-      const int bw = x1 - x0 + 2, bh = y1 - y0 + 1;
+    // Within the image's width: the exact coverage by accumulated edges, for the rows inside
+    // the image (a band of rows: render/lens_flare.cpp splats by bands).
+    if (x0 >= 0 && x1 < r.width) {
+      const int row0 = std::max(y0, 0), bw = x1 - x0 + 2, bh = std::min(y1, r.height - 1) - row0 + 1;
       coverage.assign(size_t(bw) * bh, 0.0);
-      const Vec2d o(x0, y0);
-      for (const auto& [p, q] : {std::pair{a, b}, {b, c}, {c, a}}) AccumulateEdge(p - o, q - o, bw, coverage.data());
+      const Vec2d o(x0, row0);
+      for (const auto& [p, q] : {std::pair{a, b}, {b, c}, {c, a}}) AccumulateEdge(p - o, q - o, bw, bh, coverage.data());
       for (int y = 0; y < bh; ++y) {
         double sum = 0;
         const double* row = &coverage[size_t(y) * bw];
-        const size_t start = size_t(y0 + y) * r.width + x0;
+        const size_t start = size_t(row0 + y) * r.width + x0;
         for (int x = 0; x < bw - 1; ++x) {
           sum += row[x];
           const double share = std::min(std::abs(sum), 1.0);
-          if (share > 1e-12) add_at(start + x, value(x0 + x, y0 + y, share));
+          if (share > 1e-12) add_at(start + x, value(x0 + x, row0 + y, share));
         }
       }
       continue;

@@ -1,6 +1,5 @@
 #include "render/lens_flare.h"
 
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <chrono>
@@ -128,35 +127,50 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
       for (double l : lambdas) tasks.push_back({&sources[s], &p, l});
   out.sources = int(sources.size());
 
-  struct Images {
-    std::vector<float> ghosts, lights;
+  // Deterministic on any number of threads: the tasks go in chunks; a chunk's bundles are
+  // traced in parallel, then splatted in parallel by bands of rows, each band taking the
+  // chunk's bundles in task order (so every pixel's sum has one order).
+  struct Traced {
+    std::vector<FilmTriangle> bundle;
+    Vec3d weight{0.0};
+    bool ghost = false;
   };
-  tbb::enumerable_thread_specific<Images> local([&] { return Images{std::vector<float>(out.ghosts.size(), 0.f), std::vector<float>(out.lights.size(), 0.f)}; });
-  tbb::parallel_for(size_t(0), tasks.size(), [&](size_t i) {
-    const Task& t = tasks[i];
-    const FlareSource& f = *t.source;
-    const FlarePath& p = *t.path;
-    BundleOptions o = p.ghost ? options : direct_options;
-    o.region = &p.region;
-    std::vector<FilmTriangle> bundle =
-        p.ghost ? GhostBundle(lens, *p.ghost, f.source, t.lambda, o) : DirectBundle(lens, f.source, t.lambda, o);
-    if (bundle.empty()) return;
-    // The band's colour: the emission times the matching functions integrated over the band
-    // (so that few bands keep white light white), its geometry at the band's middle.
-    Vec3d colour(0.0);
-    const int steps = std::max(1, int(std::ceil(step)));
-    for (int j = 0; j < steps; ++j) {
-      const double l = t.lambda - 0.5 * step + (j + 0.5) * step / steps;
-      const Vec3f cie = CieXyz(float(l));
-      colour += Vec3d(cie.x, cie.y, cie.z) * (f.Emission(l) * step / steps);
-    }
-    const double w = to_pixel * f.irradiance_scale * f.visibility / CieYIntegral();
-    Images& images = local.local();
-    SplatColour(bundle, raster, colour * w, p.ghost ? images.ghosts.data() : images.lights.data());
-  });
-  for (const Images& images : local) {
-    for (size_t i = 0; i < out.ghosts.size(); ++i) out.ghosts[i] += images.ghosts[i];
-    for (size_t i = 0; i < out.lights.size(); ++i) out.lights[i] += images.lights[i];
+  constexpr size_t kChunk = 64;
+  constexpr int kBandRows = 16;
+  const int bands = (out.height + kBandRows - 1) / kBandRows;
+  std::vector<Traced> traced(kChunk);
+  for (size_t first = 0; first < tasks.size(); first += kChunk) {
+    const size_t count = std::min(kChunk, tasks.size() - first);
+    tbb::parallel_for(size_t(0), count, [&](size_t k) {
+      const Task& t = tasks[first + k];
+      const FlareSource& f = *t.source;
+      const FlarePath& p = *t.path;
+      BundleOptions o = p.ghost ? options : direct_options;
+      o.region = &p.region;
+      Traced& r = traced[k];
+      r.ghost = p.ghost.has_value();
+      r.bundle = p.ghost ? GhostBundle(lens, *p.ghost, f.source, t.lambda, o) : DirectBundle(lens, f.source, t.lambda, o);
+      // The band's colour: the emission times the matching functions integrated over the band
+      // (so that few bands keep white light white), its geometry at the band's middle.
+      Vec3d colour(0.0);
+      const int steps = std::max(1, int(std::ceil(step)));
+      for (int j = 0; j < steps; ++j) {
+        const double l = t.lambda - 0.5 * step + (j + 0.5) * step / steps;
+        const Vec3f cie = CieXyz(float(l));
+        colour += Vec3d(cie.x, cie.y, cie.z) * (f.Emission(l) * step / steps);
+      }
+      r.weight = colour * (to_pixel * f.irradiance_scale * f.visibility / CieYIntegral());
+    });
+    tbb::parallel_for(0, bands, [&](int band) {
+      FilmRaster rows = raster;
+      const int y0 = band * kBandRows;
+      rows.height = std::min(kBandRows, out.height - y0);
+      rows.y0 = raster.y0 + y0 * raster.h;
+      const size_t offset = size_t(y0) * out.width * 3;
+      for (size_t k = 0; k < count; ++k)
+        SplatColour(traced[k].bundle, rows, traced[k].weight,
+                    (traced[k].ghost ? out.ghosts.data() : out.lights.data()) + offset);
+    });
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
