@@ -90,6 +90,9 @@ TEST(Properties, ChoiceGivesTheValueOrListsTheChoices) {
   EXPECT_EQ(Properties(*pear, kNone, decls).Choice("fruit", Fruit::kApple, kFruits), Fruit::kPear);
   auto none = Node({});
   EXPECT_EQ(Properties(*none, kNone, decls).Choice("fruit", Fruit::kPear, kFruits), Fruit::kPear);
+  // Without case.
+  auto upper = Node({{"fruit", std::string("PeAr")}});
+  EXPECT_EQ(Properties(*upper, kNone, decls).Choice("fruit", Fruit::kApple, kFruits), Fruit::kPear);
   auto plum = Node({{"fruit", std::string("plum")}});
   std::string msg = InputErrorOf([&] { Properties(*plum, kNone, decls).Choice("fruit", Fruit::kApple, kFruits); });
   EXPECT_NE(msg.find("x.xml:2:"), std::string::npos) << msg;

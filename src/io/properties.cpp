@@ -1,6 +1,7 @@
 #include "io/properties.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -151,9 +152,14 @@ std::optional<size_t> Properties::ChoiceIndex(const std::string& name, std::span
     throw std::logic_error(
         fmt::format("{} '{}' reads '{}' with other choices than it declares", node_.tag, node_.type, name));
   if (!Has(name)) return std::nullopt;
+  // Compared without case ("Emitters" is "emitters"), as sensor formats and glass names are.
+  auto lower = [](std::string t) {
+    for (char& c : t) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return t;
+  };
   std::string v = String(name), list;
   for (size_t i = 0; i < names.size(); ++i) {
-    if (v == names[i]) return i;
+    if (lower(v) == lower(names[i])) return i;
     list += list.empty() ? names[i] : std::string(", ") + names[i];
   }
   throw ErrorAt(LocOf(name), "{} '{}': '{}' = '{}' is not one of: {}", node_.tag, node_.type, name, v, list);
