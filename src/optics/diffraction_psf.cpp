@@ -131,11 +131,6 @@ void BoxFilter(std::vector<double>& pattern, int n, double width) {
   fftw_destroy_plan(backward);
 }
 
-int NextPowerOfTwo(double v) {
-  int n = 1;
-  while (n < v) n *= 2;
-  return n;
-}
 
 }  // namespace
 

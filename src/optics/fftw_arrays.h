@@ -23,4 +23,11 @@ std::unique_ptr<T[], FftwFree> FftwArray(size_t n) {
 
 std::mutex& FftwPlannerMutex();
 
+// The smallest power of two >= v (a grid size for the FFTs).
+inline int NextPowerOfTwo(double v) {
+  int n = 1;
+  while (n < v) n *= 2;
+  return n;
+}
+
 }  // namespace objektiv

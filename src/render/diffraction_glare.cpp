@@ -19,12 +19,6 @@ namespace {
 constexpr double kLongest = 780, kShortest = 380;
 constexpr int kMaxGrid = 4096;
 
-int NextPowerOfTwo(double v) {
-  int n = 1;
-  while (n < v) n *= 2;
-  return n;
-}
-
 // The smallest size >= n whose only prime factors are 2, 3, 5 and 7 (FFTW's fast sizes).
 int FastFftSize(int n) {
   for (int m = std::max(n, 1);; ++m) {
@@ -61,12 +55,7 @@ DiffractionKernel MakeDiffractionKernel(const PupilFunction& pupil, double fnumb
   for (int i = 0; i < wavelengths; ++i) {
     const double l0 = kShortest + i * dl;
     lambdas.push_back(l0 + 0.5 * dl);
-    Vec3d c(0.0);
-    const int steps = std::max(1, int(std::ceil(dl)));
-    for (int j = 0; j < steps; ++j) {
-      const Vec3f v = CieXyz(float(l0 + (j + 0.5) * dl / steps));
-      c += Vec3d(v.x, v.y, v.z) * (dl / steps);
-    }
+    const Vec3d c = CieXyzOverBand(l0, l0 + dl, [](double) { return 1.0; });
     weights[0].push_back(c.x), weights[1].push_back(c.y), weights[2].push_back(c.z);
   }
   // Each wavelength's copy of the fine pattern, shrunk by lambda / 780, into the pixels: each

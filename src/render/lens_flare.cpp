@@ -152,13 +152,8 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
       r.bundle = p.ghost ? GhostBundle(lens, *p.ghost, f.source, t.lambda, o) : DirectBundle(lens, f.source, t.lambda, o);
       // The band's colour: the emission times the matching functions integrated over the band
       // (so that few bands keep white light white), its geometry at the band's middle.
-      Vec3d colour(0.0);
-      const int steps = std::max(1, int(std::ceil(step)));
-      for (int j = 0; j < steps; ++j) {
-        const double l = t.lambda - 0.5 * step + (j + 0.5) * step / steps;
-        const Vec3f cie = CieXyz(float(l));
-        colour += Vec3d(cie.x, cie.y, cie.z) * (f.Emission(l) * step / steps);
-      }
+      const Vec3d colour =
+          CieXyzOverBand(t.lambda - 0.5 * step, t.lambda + 0.5 * step, [&f](double l) { return f.Emission(l); });
       r.weight = colour * (to_pixel * f.irradiance_scale * f.visibility / CieYIntegral());
     });
     tbb::parallel_for(0, bands, [&](int band) {
