@@ -36,7 +36,7 @@ class BundleTracer {
  public:
   BundleTracer(const LensSystem& lens, std::span<const SurfaceVisit> path, const PointSource& source, double lambda_nm,
                const BundleOptions& options = {})
-      : lens_(lens), path_(path), source_(source), lambda_(lambda_nm), options_(options) {
+      : lens_(lens), path_(path), source_(source), options_(options), lambda_(lambda_nm) {
     const LensSurface& front = lens.surface(0);
     const double rim_z = lens.VertexZ(0) + front.Sag(front.semi_diameter);
     start_z_ = std::min(lens.VertexZ(0), rim_z) - 1;

@@ -87,6 +87,58 @@ std::optional<double> Intersect(const LensSystem& lens, int i, const LensRay& ra
   return t;
 }
 
+}  // namespace
+
+SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, double lambda_nm, bool toward_film) {
+  SurfaceCrossing c;
+  const LensSurface& s = lens.surface(i);
+  std::optional<double> t = Intersect(lens, i, ray);
+  if (!t || *t < -1e-9) {
+    c.failure = TraceFailure::kMissedSurface;
+    return c;
+  }
+  c.t = *t;
+  c.p = ray.o + ray.d * *t;
+  const double r = std::sqrt(c.p.x * c.p.x + c.p.y * c.p.y);
+  if (s.is_stop ? !lens.InsideStop(c.p.x, c.p.y) : r > s.semi_diameter) {
+    c.failure = TraceFailure::kClipped;
+    return c;
+  }
+  // Indices on the incoming and outgoing sides (a stop inside glass has the same on both;
+  // between different media it refracts as the flat interface it is).
+  const double n_object_side = i > 0 ? lens.surface(i - 1).IndexAfter(lambda_nm) : 1.0;
+  const double n_film_side = s.IndexAfter(lambda_nm);
+  const double n1 = toward_film ? n_object_side : n_film_side, n2 = toward_film ? n_film_side : n_object_side;
+  c.interface = n1 != n2;
+  if (!c.interface) return c;
+  // The normal facing the incoming ray.
+  c.normal = Normal(s, c.p);
+  if (Dot(c.normal, ray.d) > 0) c.normal = -c.normal;
+  c.eta = n1 / n2;
+  c.cos_i = -Dot(c.normal, ray.d);
+  c.reflectance = lens.SurfaceReflectance(i, lambda_nm, c.cos_i, toward_film, n_object_side, n_film_side);
+  return c;
+}
+
+LensRay Reflected(const SurfaceCrossing& c, const Vec3d& d) {
+  Vec3d r = d + c.normal * (2 * c.cos_i);
+  return {c.p, r / Length(r)};
+}
+
+std::optional<LensRay> Refracted(const SurfaceCrossing& c, const Vec3d& d) {
+  const double k2 = 1 - c.eta * c.eta * (1 - c.cos_i * c.cos_i);
+  if (k2 < 0) return std::nullopt;
+  Vec3d r = d * c.eta + c.normal * (c.eta * c.cos_i - std::sqrt(k2));
+  return LensRay{c.p, r / Length(r)};
+}
+
+double SegmentTransmittance(const LensSystem& lens, int from, int to, double lambda_nm, double length) {
+  const Glass* g = lens.surface(std::min(from, to)).medium.get();
+  return g ? g->InternalTransmittance(lambda_nm, length) : 1.0;
+}
+
+namespace {
+
 // The ray through `count` visits, visit(k) giving the k-th (surface, reflect, toward_film):
 // consecutive visits are neighbouring surfaces (or the same surface's neighbours after a
 // reflection), so the segment between them lies in one medium.
@@ -99,63 +151,44 @@ TraceResult TraceVisits(const LensSystem& lens, const LensRay& in, double lambda
   for (int k = 0; k < count; ++k) {
     const SurfaceVisit v = visit(k);
     const int i = v.surface;
-    const LensSurface& s = lens.surface(i);
-    std::optional<double> t = Intersect(lens, i, ray);
-    if (!t || *t < -1e-9) {
-      result.failure = TraceFailure::kMissedSurface;
+    const SurfaceCrossing c = CrossSurface(lens, i, ray, lambda_nm, v.toward_film);
+    if (c.failure == TraceFailure::kMissedSurface) {
+      result.failure = c.failure;
       result.surface = i;
       return result;
     }
-    Vec3d p = ray.o + ray.d * *t;
-    if (path) path->push_back(p);
-    double r = std::sqrt(p.x * p.x + p.y * p.y);
-    bool blocked = s.is_stop ? !lens.InsideStop(p.x, p.y) : r > s.semi_diameter;
-    if (blocked) {
-      result.failure = TraceFailure::kClipped;
+    if (path) path->push_back(c.p);
+    if (c.failure != TraceFailure::kNone) {
+      result.failure = c.failure;
       result.surface = i;
       return result;
     }
     // Absorption along the segment just travelled, inside the medium between the surfaces.
-    if (previous >= 0) {
-      if (const Glass* g = lens.surface(std::min(previous, i)).medium.get())
-        result.internal_transmittance *= g->InternalTransmittance(lambda_nm, *t);
-    }
+    if (previous >= 0) result.internal_transmittance *= SegmentTransmittance(lens, previous, i, lambda_nm, c.t);
     previous = i;
-    ray.o = p;
-    // Indices on the incoming and outgoing sides (a stop inside glass has the same on both;
-    // between different media it refracts as the flat interface it is).
-    double n_object_side = i > 0 ? lens.surface(i - 1).IndexAfter(lambda_nm) : 1.0;
-    double n_film_side = s.IndexAfter(lambda_nm);
-    double n1 = v.toward_film ? n_object_side : n_film_side, n2 = v.toward_film ? n_film_side : n_object_side;
-    if (n1 == n2) {
+    if (!c.interface) {
       if (v.reflect) {  // nothing to reflect from
         result.failure = TraceFailure::kMissedSurface;
         result.surface = i;
         return result;
       }
+      ray.o = c.p;
       continue;
     }
-    // Vector Snell's law with the normal facing the incoming ray.
-    Vec3d nrm = Normal(s, p);
-    if (Dot(nrm, ray.d) > 0) nrm = -nrm;
-    double eta = n1 / n2, cos_i = -Dot(nrm, ray.d);
-    double reflectance = lens.SurfaceReflectance(i, lambda_nm, cos_i, v.toward_film, n_object_side, n_film_side);
-    if (events) events->push_back({i, reflectance, cos_i});
+    if (events) events->push_back({i, c.reflectance, c.cos_i});
     if (v.reflect) {
-      result.surface_transmittance *= reflectance;
-      ray.d = ray.d + nrm * (2 * cos_i);
-      ray.d = ray.d / Length(ray.d);
+      result.surface_transmittance *= c.reflectance;
+      ray = Reflected(c, ray.d);
       continue;
     }
-    result.surface_transmittance *= 1 - reflectance;
-    double k2 = 1 - eta * eta * (1 - cos_i * cos_i);
-    if (k2 < 0) {
+    result.surface_transmittance *= 1 - c.reflectance;
+    std::optional<LensRay> out = Refracted(c, ray.d);
+    if (!out) {
       result.failure = TraceFailure::kTotalInternalReflection;
       result.surface = i;
       return result;
     }
-    ray.d = ray.d * eta + nrm * (eta * cos_i - std::sqrt(k2));
-    ray.d = ray.d / Length(ray.d);
+    ray = *out;
   }
   result.ray = ray;
   return result;

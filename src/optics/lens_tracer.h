@@ -62,6 +62,27 @@ struct SurfaceVisit {
 TraceResult TraceSequence(const LensSystem& lens, const LensRay& ray, double lambda_nm,
                           std::span<const SurfaceVisit> visits, std::vector<Vec3d>* path = nullptr,
                           std::vector<SurfaceEvent>* events = nullptr);
+// One step of any path: where `ray` meets surface i travelling toward the film (or the
+// object), whether it gets through the opening there, and what the interface does; the
+// caller chooses to reflect or refract (Reflected, Refracted). The exact tracer's own step.
+struct SurfaceCrossing {
+  TraceFailure failure = TraceFailure::kNone;  // kMissedSurface, or kClipped (p is set)
+  Vec3d p;                 // the point on the surface
+  double t = 0;            // the distance travelled to it
+  bool interface = false;  // whether the index changes there (else the ray goes straight on)
+  Vec3d normal;            // unit, facing the incoming ray (where an interface)
+  double cos_i = 1, eta = 1;  // eta: incoming index over outgoing
+  double reflectance = 0;     // unpolarised (LensSystem::SurfaceReflectance), 0 where no interface
+};
+SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, double lambda_nm, bool toward_film);
+// The ray leaving an interface crossing in direction d reflected, or refracted (nothing beyond
+// the critical angle).
+LensRay Reflected(const SurfaceCrossing& c, const Vec3d& d);
+std::optional<LensRay> Refracted(const SurfaceCrossing& c, const Vec3d& d);
+// The glass's internal transmittance over `length` mm between neighbouring surfaces `from`
+// and `to` (1 in air).
+double SegmentTransmittance(const LensSystem& lens, int from, int to, double lambda_nm, double length);
+
 // Where a ray from the film meets the stop's plane, whether or not the stop lets it through;
 // nothing if it does not get that far (or the lens has no stop).
 std::optional<Vec3d> StopCrossingFromFilm(const LensSystem& lens, const LensRay& ray, double lambda_nm);
