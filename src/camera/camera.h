@@ -22,6 +22,19 @@ struct CameraRay {
   SampledSpectrum weight{1.f};
 };
 
+// The light side of a camera (camera importance, as pbrt-v4's Camera::SampleWi): light
+// leaving a scene point toward the camera. A point of the camera's lens is chosen; the light
+// through it lands on the film at p_film (continuous pixel coordinates of the full film), and
+// light of radiant intensity J leaving the scene point toward p_lens (a light path's vertex on
+// a surface: its beta f |cos|; a point light: its intensity) adds J x weight there, splatted
+// (Film::AddSplat) by one light path per pixel sample of the full film. The shadow ray runs
+// from the scene point to p_lens.
+struct CameraImportance {
+  Vec2f p_film;
+  Vec3f p_lens;
+  SampledSpectrum weight{0.f};
+};
+
 // Camera rays traced through a lens, and those of them that came out of its front (film
 // points that no light reaches, such as outside a fisheye's image circle, trace nothing).
 struct CameraRayCount {
@@ -40,6 +53,13 @@ class Camera {
   // Whether rays depend on CameraSample::p_lens; if not, the renderer does not draw it (one
   // 2D sample fewer per camera ray for pinhole and orthographic cameras).
   virtual bool UsesLensSample() const { return true; }
+  // Camera importance for light at world point p (u in [0,1)^2 picks the lens point);
+  // nothing where no light from p reaches the film through that point, or where the camera
+  // cannot be reached from the light side.
+  virtual std::optional<CameraImportance> SampleImportance(const Vec3f& /*p*/, Vec2f /*u*/,
+                                                           SampledWavelengths& /*lambda*/) const {
+    return std::nullopt;
+  }
   int width() const { return width_; }
   int height() const { return height_; }
 

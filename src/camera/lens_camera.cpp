@@ -62,11 +62,15 @@ Vec2d LensCamera::FilmPoint(Vec2f p) const {
 float LensCamera::Weight(Vec2d film, double cos_theta, double dz, double pdf) const {
   float c2 = float(cos_theta * cos_theta), z2 = float(dz * dz);
   float w = weight_scale_ * c2 * c2 / (z2 * float(pdf));
-  if (settings_.vignetting == Vignetting::kOptical || settings_.vignetting == Vignetting::kNone) {
-    float chief2 = z2 / (z2 + float(film.x * film.x + film.y * film.y));  // cos^2 of the chief ray
-    w /= chief2 * chief2;
-  }
+  if (settings_.vignetting == Vignetting::kOptical || settings_.vignetting == Vignetting::kNone)
+    w /= float(ChiefRayFactor(film, dz));
   return w;
+}
+
+double LensCamera::ChiefRayFactor(Vec2d film, double dz) const {
+  if (!(settings_.vignetting == Vignetting::kOptical || settings_.vignetting == Vignetting::kNone)) return 1;
+  const double z2 = dz * dz, chief2 = z2 / (z2 + film.x * film.x + film.y * film.y);  // cos^2 of the chief ray
+  return chief2 * chief2;
 }
 
 Ray LensCamera::WorldRay(Vec3d o, Vec3d d) const {

@@ -64,6 +64,8 @@ class LensCamera : public Camera {
   // without the cos^4 of the chief ray (toward the pupil's centre) when natural vignetting
   // is off.
   float Weight(Vec2d film, double cos_theta, double dz, double pdf) const;
+  // The chief ray's cos^4 that Weight divides out (1 where natural vignetting is kept).
+  double ChiefRayFactor(Vec2d film, double dz) const;
   // The world ray for a ray leaving the lens at lens-space `o` in direction `d` (d.z < 0).
   Ray WorldRay(Vec3d o, Vec3d d) const;
   // Lens-space z of the camera-space origin (the entrance pupil).

@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "optics/dispersion.h"
+#include "optics/front_element.h"
+#include "optics/lens_tracer.h"
 #include "optics/paraxial.h"
 
 namespace objektiv {
@@ -117,6 +119,45 @@ void RealisticCamera::GenerateRays(std::span<const CameraSample> samples, std::s
     if (mask) w *= mask->Transmittance(batch.stop_x[j] * inv_stop, batch.stop_y[j] * inv_stop);
     out[index[j]] = Finish(batch.Get(j), w);
   }
+}
+
+std::optional<CameraImportance> RealisticCamera::SampleImportance(const Vec3f& p, Vec2f u,
+                                                                  SampledWavelengths& lambda) const {
+  const FrontPoint front = SampleFrontElement(lens_, Vec2d(u.x, u.y));
+  const Vec3d from = LensSpacePoint(p);
+  Vec3d d = front.p - from;
+  const double distance = Length(d);  // mm
+  if (!(distance > 0)) return std::nullopt;
+  d = d / distance;
+  const double projected = front.ProjectedCosine(d);
+  if (projected <= 0) return std::nullopt;
+  if (one_wavelength_) lambda.TerminateSecondary();
+  // From just in front of the surface point (the scene point may be far away).
+  std::vector<Vec3d> path;
+  const bool masked = settings_.aperture_mask != nullptr;
+  const TraceResult r = TraceFromObject(lens_, {front.p - d, d}, lambda[0], masked ? &path : nullptr);
+  if (!r.ray || !(r.ray->d.z > 0)) return std::nullopt;
+  const double t = (film_z_ - r.ray->o.z) / r.ray->d.z;
+  const Vec2d film(r.ray->o.x + t * r.ray->d.x, r.ray->o.y + t * r.ray->d.y);
+  const Vec2d pixel = PixelOf(film);
+  if (!(pixel.x >= 0 && pixel.x < width_ && pixel.y >= 0 && pixel.y < height_)) return std::nullopt;
+  double w = settings_.transmission ? r.surface_transmittance * r.internal_transmittance : 1.0;
+  if (masked && lens_.StopIndex() >= 0 && path.size() > size_t(lens_.StopIndex())) {
+    const Vec3d& s = path[size_t(lens_.StopIndex())];
+    w *= settings_.aperture_mask->Transmittance(float(s.x / stop_radius_), float(s.y / stop_radius_));
+  }
+  // The flux through the front element toward this film point, J projected pi r^2 / distance^2,
+  // over the sensor's area, as the pixel's (4 / pi) exposure_scale irradiance (camera/lens_camera.h)
+  // for one light path per pixel: scene units cancel but for the sensor's area.
+  const double mm_to_units = 1e-3 / settings_.metres_per_unit;
+  const double sensor = settings_.sensor_width * settings_.sensor_height * mm_to_units * mm_to_units;
+  w *= 4 / M_PI * settings_.exposure_scale * projected * FrontElementArea(lens_) / (distance * distance) / sensor;
+  w /= ChiefRayFactor(film, bounds_.rear_z() - film_z_);
+  CameraImportance out;
+  out.p_film = Vec2f(float(pixel.x), float(pixel.y));
+  out.p_lens = WorldPoint(front.p);
+  out.weight = SampledSpectrum(float(w));
+  return out;
 }
 
 }  // namespace objektiv

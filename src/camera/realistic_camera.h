@@ -18,6 +18,11 @@ class RealisticCamera final : public LensCamera {
   std::optional<CameraRay> GenerateRay(const CameraSample& s, SampledWavelengths& lambda) const override;
   void GenerateRays(std::span<const CameraSample> samples, std::span<SampledWavelengths> lambdas,
                     std::span<std::optional<CameraRay>> out, CameraRayCount& count) const override;
+  // Through a point of the front element chosen uniformly (optics/front_element.h), traced
+  // exactly to the film at the hero wavelength (the others terminated where the camera rays
+  // carry the hero alone), with the lens's transmittance and the aperture mask. Follows
+  // `vignetting` full and optical; with natural and none the rims still clip.
+  std::optional<CameraImportance> SampleImportance(const Vec3f& p, Vec2f u, SampledWavelengths& lambda) const override;
   const PupilBounds& bounds() const { return bounds_; }
   // The lens as set up (stop, focus, coatings): what the flare passes trace.
   const LensSystem& lens() const { return lens_; }
