@@ -227,6 +227,7 @@ TEST(LensLayers, SettingsTheEffectsCannotFollowAreWarned) {
   EXPECT_NE(warnings(R"(<boolean name="ghosts" value="true"/><boolean name="transmission" value="false"/>)").find("ghosts are made of the surfaces' reflections"), std::string::npos);
   EXPECT_EQ(warnings(R"(<boolean name="ghosts" value="true"/>)"), "");
   EXPECT_NE(warnings(R"(<integer name="ghost_grid" value="16"/>)").find("ghost_grid does nothing"), std::string::npos);
+  EXPECT_NE(warnings(R"(<integer name="glare_samples" value="16"/>)").find("glare_samples does nothing"), std::string::npos);
   const std::string thin = warnings(R"(<string name="lens_model" value="thin"/><boolean name="ghosts" value="true"/>
       <string name="diffraction" value="image"/>)");
   EXPECT_EQ(test::Occurrences(thin, "needs lens_model 'real'"), 2);

@@ -53,6 +53,9 @@ void WriteStatsJson(const std::string& path, const RenderStats& s, int threads, 
     j["ghost_seconds"] = layers.ghost_seconds;
     j["ghosts_traced"] = layers.ghosts_traced;
     j["ghosts_culled"] = layers.ghosts_culled;
+    j["glare_seconds"] = layers.glare_seconds;
+    j["glare_paths"] = layers.glare_paths;
+    j["glare_paths_landed"] = layers.glare_landed;
   }
   if (!layers.diffraction.empty()) j["diffraction_seconds"] = layers.diffraction_seconds;
   WriteTextFileAtomically(path, j.dump(2) + "\n");
@@ -137,18 +140,25 @@ void AddLensLayers(const LensLayers& layers, const ColorSpace& cs, float exposur
   }
   image = std::move(out);
   header.push_back({"objektiv:flare_sources", layers.flare_sources});
-  if (!layers.ghosts.empty() && layers.other_lights > 0)
-    spdlog::info("ghosts: {} area or environment light{} of the scene make{} no ghosts (only point, spot and directional "
-                 "lights do, {} here)",
+  if (!layers.ghosts.empty() && layers.other_lights > 0 && layers.glare_paths == 0)
+    spdlog::warn("ghosts: {} area or environment light{} of the scene make{} no ghosts with glare_samples 0 (only point, "
+                 "spot and directional lights do, {} here)",
                  layers.other_lights, layers.other_lights == 1 ? "" : "s", layers.other_lights == 1 ? "s" : "",
                  layers.flare_sources);
   if (!layers.ghosts.empty()) {
     header.push_back({"objektiv:ghosts_traced", layers.ghosts_traced});
     header.push_back({"objektiv:ghosts_culled", layers.ghosts_culled});
+    header.push_back({"objektiv:glare_paths", double(layers.glare_paths)});
     spdlog::info("ghosts: {} bright point{}, {} ghosts traced, {} culled as too dim, {} reach no film; {:.2f} s",
                  layers.flare_sources, layers.flare_sources == 1 ? "" : "s", layers.ghosts_traced, layers.ghosts_culled,
                  layers.ghosts_dark, layers.ghost_seconds);
   }
+  if (layers.glare_paths > 0)
+    spdlog::info("ghosts and glare by light tracing: {} paths, {} landed; a pixel brighter than 1% of the brightest got "
+                 "{:g} of them (median: relative noise about {:.0f}%; raise glare_samples for less); {:.2f} s",
+                 layers.glare_paths, layers.glare_landed, layers.glare_median_landings,
+                 layers.glare_median_landings > 0 ? 100 / std::sqrt(layers.glare_median_landings) : 100.0,
+                 layers.glare_seconds);
   if (!layers.diffraction.empty()) {
     header.push_back({"objektiv:diffraction_fnumber", layers.fnumber});
     header.push_back({"objektiv:diffraction_radius", layers.diffraction_radius});
@@ -180,6 +190,7 @@ std::string LensPassTimes(const LensLayers& layers) {
   std::string text;
   if (!layers.ghosts.empty() || !layers.diffraction.empty())
     text += fmt::format(" + bright points{} {:.2f} s", layers.ghosts.empty() ? "" : " and ghosts", layers.ghost_seconds);
+  if (layers.glare_paths > 0) text += fmt::format(" + glare {:.2f} s", layers.glare_seconds);
   if (!layers.diffraction.empty()) text += fmt::format(" + diffraction {:.2f} s", layers.diffraction_seconds);
   return text;
 }

@@ -120,6 +120,7 @@ LensEffects ReadLensEffects(const Properties& p, LensModel model) {
   e.ghosts = p.Bool("ghosts", false);
   e.ghost_grid = int(p.IntIn("ghost_grid", 32, 4, 512));
   e.ghost_cull = p.FloatIn("ghost_cull", 1e-3, 0, 1);
+  e.glare_samples = int(p.IntIn("glare_samples", 4, 0, 65536));
   e.wavelengths = int(p.IntIn("flare_wavelengths", 16, 1, 64));
   e.diffraction = p.Choice("diffraction", DiffractionScope::kOff, kDiffractionScopes);
   auto warn = [&p](const char* name, const char* why) {
@@ -128,6 +129,7 @@ LensEffects ReadLensEffects(const Properties& p, LensModel model) {
   if (!e.ghosts) {
     warn("ghost_grid", "without ghosts true");
     warn("ghost_cull", "without ghosts true");
+    warn("glare_samples", "without ghosts true");
   }
   if (!e.Any()) warn("flare_wavelengths", "without ghosts or diffraction");
   if (model != LensModel::kReal && e.Any()) {
@@ -246,6 +248,7 @@ SensorRegistry::PluginType RealisticSensorPlugin() {
            {"aperture_mask", PropType::kString},
            {"ghosts", PropType::kBoolean},
            {"ghost_grid", PropType::kInteger},
+           {"glare_samples", PropType::kInteger},
            {"ghost_cull", PropType::kFloat},
            {"flare_wavelengths", PropType::kInteger},
            {"diffraction", kDiffractionScopes}},

@@ -6,6 +6,7 @@
 
 #include "camera/realistic_camera.h"
 #include "render/diffraction_glare.h"
+#include "render/glare_light_tracer.h"
 #include "render/lens_flare.h"
 
 namespace objektiv {
@@ -46,6 +47,8 @@ uint64_t LensEffectsBytes(const Camera& camera, const CropWindow& crop, int thre
   const uint64_t pixels = uint64_t(crop.Width()) * crop.Height();
   // Layers and the sum (XYZ floats), the emitted light (doubles), each thread's two flare images.
   uint64_t bytes = pixels * 12 * 5 + pixels * 24 + uint64_t(std::max(threads, 1)) * pixels * 24;
+  // The light-traced glare: its sums (doubles), counts and a chunk of paths' landings.
+  if (real->effects().ghosts && real->effects().glare_samples > 0) bytes += pixels * 28 + (uint64_t(1) << 20);
   if (real->effects().diffraction != DiffractionScope::kOff) {
     // The fine pattern (at most 4096^2: input, transform, pattern) and the padded image's FFTs.
     const uint64_t fine = uint64_t(4096) * 4096;
@@ -83,6 +86,17 @@ LensLayers ComposeLensLayers(const Scene& scene, const Camera& camera, const Fil
   out.ghost_seconds = f.seconds;
   Add(out.primary, f.lights);
   if (e.ghosts) out.ghosts = std::move(f.ghosts);
+  if (e.ghosts && e.glare_samples > 0) {
+    // As many paths per pixel of the whole film whatever the crop: a crop's pixels get the
+    // full render's noise.
+    GlareSettings g;
+    g.paths = int64_t(e.glare_samples) * real->width() * real->height();
+    const GlareImage glare = TraceGlare(scene, *real, crop, g);
+    Add(out.ghosts, glare.xyz);
+    out.glare_paths = glare.paths, out.glare_landed = glare.landed;
+    out.glare_median_landings = glare.median_landings;
+    out.glare_seconds = glare.seconds;
+  }
 
   if (e.diffraction == DiffractionScope::kOff) return out;
   const auto start = std::chrono::steady_clock::now();

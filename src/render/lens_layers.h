@@ -2,7 +2,8 @@
 // film's XYZ (crop-window sized, interleaved):
 // - primary: what the camera rays traced (the integrator's image), plus the bright points'
 //   own images through the lens;
-// - ghosts: the two-reflection ghosts of the bright points;
+// - ghosts: the two-reflection ghosts of the bright points (ray bundles), and by light
+//   tracing the other lights' ghosts and every light's veiling glare;
 // - diffraction: what the stop's diffraction changes: the diffracted light minus the same
 //   light undiffracted (negative where the pattern takes light away from a point's core);
 // - their sum: the picture.
@@ -24,8 +25,11 @@ struct LensLayers {
   // What the passes did, for the log and the header.
   int flare_sources = 0, ghosts_traced = 0, ghosts_culled = 0, ghosts_dark = 0, diffraction_radius = 0;
   double fnumber = 0;  // working, of the diffraction pattern
-  int other_lights = 0;  // area and environment lights: no ghosts, no own images
-  double ghost_seconds = 0, diffraction_seconds = 0;
+  int other_lights = 0;  // area and environment lights: ghosts by light tracing only, no own images
+  // The light-traced part of the ghosts layer (render/glare_light_tracer.h).
+  int64_t glare_paths = 0, glare_landed = 0;
+  double glare_median_landings = 0;
+  double ghost_seconds = 0, glare_seconds = 0, diffraction_seconds = 0;
 };
 
 // The memory the effects take beyond the film (the layers, the passes' images per thread, the

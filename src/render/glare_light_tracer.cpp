@@ -1,0 +1,135 @@
+#include "render/glare_light_tracer.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "optics/front_element.h"
+#include "optics/lens_walk.h"
+
+namespace objektiv {
+
+namespace {
+
+// What one path leaves on the crop window: a pixel (or none) and its XYZ.
+struct Landing {
+  uint32_t pixel = std::numeric_limits<uint32_t>::max();
+  float xyz[3] = {0, 0, 0};
+};
+
+// The interfaces of the lens: where its index changes.
+int Interfaces(const LensSystem& lens) {
+  int n = 0;
+  for (int i = 0; i < lens.SurfaceCount(); ++i) {
+    const double before = i > 0 ? lens.surface(i - 1).IndexAfter(587.6) : 1.0;
+    n += before != lens.surface(i).IndexAfter(587.6);
+  }
+  return n;
+}
+
+class GlarePaths {
+ public:
+  GlarePaths(const Scene& scene, const RealisticCamera& camera, const CropWindow& crop, const GlareSettings& settings)
+      : scene_(scene), camera_(camera), lens_(camera.lens()), crop_(crop), settings_(settings) {
+    walk_.min_reflect_probability = 1.0 / std::max(Interfaces(lens_), 2);
+    walk_.max_reflections = settings.max_reflections;
+    walk_.lossless = !camera.settings().transmission;
+    if (const ApertureMask* mask = camera.settings().aperture_mask.get())
+      walk_.stop_transmittance = [mask](double u, double v) { return double(mask->Transmittance(float(u), float(v))); };
+    // Flux over the pixel's area, as the film's value, per path: (4 / pi) exposure_scale x
+    // (front element's projected area / pixel's area) / paths (scene units cancel).
+    const Vec2d pixel = camera.PixelSize();
+    scale_ = 4 / M_PI * camera.settings().exposure_scale * FrontElementArea(lens_) / (pixel.x * pixel.y) /
+             double(settings.paths);
+  }
+
+  Landing Trace(int64_t index) const {
+    Landing out;
+    PCG32 rng(uint64_t(index), settings_.seed);
+    float pmf = 0;
+    const Light* light = scene_.SampleLight(rng.UniformFloat(), &pmf);
+    if (!light || !(pmf > 0)) return out;
+    const FrontPoint front = SampleFrontElement(lens_, Vec2d(rng.UniformFloat(), rng.UniformFloat()));
+    const Vec3f at = camera_.WorldPoint(front.p);
+    SampledWavelengths lambda = SampledWavelengths::SampleVisible(rng.UniformFloat());
+    lambda.TerminateSecondary();
+    const Vec2f u(rng.UniformFloat(), rng.UniformFloat());
+    const std::optional<LightSample> ls = light->SampleLi(at, u, lambda);
+    if (!ls || !(ls->pdf > 0) || !(ls->L[0] > 0)) return out;
+    const Vec3d d = camera_.LensSpaceDirection(-ls->wi);  // the way the light travels
+    const double projected = front.ProjectedCosine(d);
+    if (projected <= 0) return out;
+    const LensWalk walk = WalkFromObject(lens_, {front.p - d, d}, lambda[0], rng, walk_);
+    if (!walk.film || walk.reflections < 2) return out;
+    if (walk.reflections == 2 && light->IsDelta() && !settings_.delta_light_ghosts) return out;
+    const Vec2d p = camera_.PixelOf(Vec2d(walk.film->o.x, walk.film->o.y));
+    const double px = std::floor(p.x), py = std::floor(p.y);
+    if (!(px >= crop_.x0 && px < crop_.x1 && py >= crop_.y0 && py < crop_.y1)) return out;
+    // The shadow ray last: most walks are left out before it.
+    Ray shadow;
+    shadow.o = at;
+    shadow.d = ls->wi;
+    if (!ls->infinite) shadow.tmax = Length(ls->p - at) * (1 - 1e-4f);
+    if (scene_.Occluded(shadow)) return out;
+    const double value = double(ls->L[0]) * projected * walk.weight / (double(ls->pdf) * pmf) * scale_;
+    const Vec3f xyz = SampledToXYZ(SampledSpectrum(float(value)), lambda);
+    out.pixel = uint32_t((int(py) - crop_.y0) * crop_.Width() + (int(px) - crop_.x0));
+    out.xyz[0] = xyz.x, out.xyz[1] = xyz.y, out.xyz[2] = xyz.z;
+    return out;
+  }
+
+ private:
+  const Scene& scene_;
+  const RealisticCamera& camera_;
+  const LensSystem& lens_;
+  CropWindow crop_;
+  GlareSettings settings_;
+  LensWalkOptions walk_;
+  double scale_ = 0;
+};
+
+}  // namespace
+
+GlareImage TraceGlare(const Scene& scene, const RealisticCamera& camera, const CropWindow& crop,
+                      const GlareSettings& settings) {
+  const auto start = std::chrono::steady_clock::now();
+  GlareImage out;
+  out.width = crop.Width(), out.height = crop.Height();
+  const size_t pixels = size_t(out.width) * out.height;
+  std::vector<double> sum(3 * pixels, 0.0);
+  std::vector<uint32_t> landings(pixels, 0);
+  if (settings.paths > 0 && !scene.lights().empty()) {
+    const GlarePaths paths(scene, camera, crop, settings);
+    constexpr int64_t kChunk = 1 << 16;
+    std::vector<Landing> landed(kChunk);
+    for (int64_t first = 0; first < settings.paths; first += kChunk) {
+      const int64_t count = std::min(kChunk, settings.paths - first);
+      tbb::parallel_for(int64_t(0), count, [&](int64_t k) { landed[k] = paths.Trace(first + k); });
+      for (int64_t k = 0; k < count; ++k) {
+        const Landing& l = landed[k];
+        if (l.pixel == std::numeric_limits<uint32_t>::max()) continue;
+        ++out.landed;
+        ++landings[l.pixel];
+        for (int c = 0; c < 3; ++c) sum[3 * size_t(l.pixel) + c] += l.xyz[c];
+      }
+    }
+    out.paths = settings.paths;
+  }
+  out.xyz.assign(sum.begin(), sum.end());
+  double brightest = 0;
+  for (size_t i = 0; i < pixels; ++i) brightest = std::max(brightest, sum[3 * i + 1]);
+  std::vector<uint32_t> lit;
+  for (size_t i = 0; i < pixels; ++i)
+    if (brightest > 0 && sum[3 * i + 1] >= 0.01 * brightest) lit.push_back(landings[i]);
+  if (!lit.empty()) {
+    std::nth_element(lit.begin(), lit.begin() + lit.size() / 2, lit.end());
+    out.median_landings = lit[lit.size() / 2];
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace objektiv
