@@ -167,12 +167,21 @@ void AddLensLayers(const LensLayers& layers, const ColorSpace& cs, float exposur
   }
 }
 
-// The AOVs (render/aov.h) as channels of their own names after the others.
-void AddAovChannels(const AovIntegrator& integrator, const Film& film, Image& image) {
+// The AOVs (render/aov.h) as channels of their own names after the others; albedos from the
+// film's XYZ into the colour space's RGB.
+void AddAovChannels(const AovIntegrator& integrator, const Film& film, const ColorSpace& cs, Image& image) {
   std::vector<std::string> names;
-  for (const Aov& a : integrator.aovs())
+  std::vector<size_t> albedos;  // first channel of each
+  for (const Aov& a : integrator.aovs()) {
+    if (a.type == AovType::kAlbedo) albedos.push_back(names.size());
     for (const std::string& n : a.ChannelNames()) names.push_back(n);
-  const std::vector<float> values = film.Aovs();
+  }
+  std::vector<float> values = film.Aovs();
+  for (size_t i = 0; i + names.size() <= values.size(); i += names.size())
+    for (size_t a : albedos) {
+      const Vec3f rgb = cs.ToRGB(Vec3f(values[i + a], values[i + a + 1], values[i + a + 2]));
+      values[i + a] = rgb.x, values[i + a + 1] = rgb.y, values[i + a + 2] = rgb.z;
+    }
   const size_t base = image.channels.size(), n = names.size(), pixels = size_t(image.width) * image.height;
   Image out(image.width, image.height, image.channels);
   for (const std::string& name : names) out.channels.push_back(name);
@@ -272,7 +281,7 @@ int RunRender(const RenderArgs& a) {
   }
   Image linear = XyzToImage(layers.Sum(), layers.width, layers.height, *fs_.color_space, fs_.exposure);
   AddLensLayers(layers, *fs_.color_space, fs_.exposure, linear, header);
-  if (aov_integrator) AddAovChannels(*aov_integrator, film, linear);
+  if (aov_integrator) AddAovChannels(*aov_integrator, film, *setup.film.color_space, linear);
   WriteExr(exr.string(), linear, header);
   WritePng(png.string(), ApplyToneMap(linear, fs_.tonemap));
   if (!a.stats_json.empty()) WriteStatsJson(a.stats_json, stats, threads, layers);

@@ -2,6 +2,11 @@
 
 #include <stdexcept>
 
+#include "base/rng.h"
+#include "render/film.h"
+#include "scene/material.h"
+#include "scene/shape.h"
+
 namespace objektiv {
 
 namespace {
@@ -14,7 +19,8 @@ constexpr AovName kAovTypes[] = {{"depth", AovType::kDepth},
                                  {"position", AovType::kPosition},
                                  {"uv", AovType::kUv},
                                  {"geo_normal", AovType::kGeoNormal},
-                                 {"sh_normal", AovType::kShNormal}};
+                                 {"sh_normal", AovType::kShNormal},
+                                 {"albedo", AovType::kAlbedo}};
 
 std::string Trim(const std::string& s) {
   const size_t a = s.find_first_not_of(" \t\n\r"), b = s.find_last_not_of(" \t\n\r");
@@ -27,6 +33,7 @@ std::vector<std::string> Aov::ChannelNames() const {
   switch (type) {
     case AovType::kDepth: return {name};
     case AovType::kUv: return {name + ".U", name + ".V"};
+    case AovType::kAlbedo: return {name + ".R", name + ".G", name + ".B"};
     default: return {name + ".X", name + ".Y", name + ".Z"};
   }
 }
@@ -63,7 +70,30 @@ int AovIntegrator::AovChannels() const {
   return n;
 }
 
-void AovIntegrator::EvaluateAovs(const Ray& ray, const std::optional<SurfaceInteraction>& hit, float* out) const {
+namespace {
+
+// One BSDF sample's estimate of the reflectance toward -ray.d (f cos / pdf), as XYZ under D65.
+Vec3f AlbedoXyz(const Ray& ray, const SurfaceInteraction& hit, const SampledWavelengths& lambda, uint64_t seed) {
+  const Material* material = hit.shape ? hit.shape->material.get() : nullptr;
+  if (!material) return Vec3f(0.f);
+  SampledWavelengths l = lambda;  // a dispersive surface may keep the hero alone
+  const BSDF bsdf = material->GetBSDF(hit, l);
+  PCG32 rng;
+  rng.SetSequence(seed);
+  const float uc = rng.UniformFloat();
+  const Vec2f u(rng.UniformFloat(), rng.UniformFloat());
+  // Energy, not radiance: light entering glass is not counted n^2 denser.
+  const std::optional<BSDFSample> s = bsdf.Sample(-Normalize(ray.d), uc, u, TransportMode::kImportance);
+  if (!s || !(s->pdf > 0)) return Vec3f(0.f);
+  SampledSpectrum rho = s->f * (AbsDot(s->wi, hit.shading.n) / s->pdf);
+  for (int i = 0; i < kSpectrumSamples; ++i) rho[i] *= D65Normalized(l[i]);
+  return SampledToXYZ(rho, l);
+}
+
+}  // namespace
+
+void AovIntegrator::EvaluateAovs(const Ray& ray, const std::optional<SurfaceInteraction>& hit,
+                                 const SampledWavelengths& lambda, uint64_t seed, float* out) const {
   for (const Aov& a : aovs_) {
     const int n = a.Channels();
     if (!hit) {
@@ -76,6 +106,11 @@ void AovIntegrator::EvaluateAovs(const Ray& ray, const std::optional<SurfaceInte
       case AovType::kUv: *out++ = hit->uv.x, *out++ = hit->uv.y; break;
       case AovType::kGeoNormal: *out++ = hit->n.x, *out++ = hit->n.y, *out++ = hit->n.z; break;
       case AovType::kShNormal: *out++ = hit->shading.n.x, *out++ = hit->shading.n.y, *out++ = hit->shading.n.z; break;
+      case AovType::kAlbedo: {
+        const Vec3f xyz = AlbedoXyz(ray, *hit, lambda, seed);
+        *out++ = xyz.x, *out++ = xyz.y, *out++ = xyz.z;
+        break;
+      }
     }
   }
 }

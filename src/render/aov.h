@@ -9,6 +9,13 @@
 //   uv          the surface's texture coordinates                         NAME.U, .V
 //   geo_normal  the geometric normal (world, unit)                        NAME.X, .Y, .Z
 //   sh_normal   the shading normal (world, unit)                          NAME.X, .Y, .Z
+//   albedo      the surface's reflectance toward the camera: the fraction NAME.R, .G, .B
+//               of light from all directions it scatters toward the camera (reflected
+//               and transmitted: white diffuse 1, clear glass 1, a tinted metal its tint),
+//               estimated with one BSDF sample per camera sample (its own random numbers:
+//               the image stays the nested integrator's) at the sample's wavelengths; the
+//               film keeps XYZ under D65 (Y = 1 for a reflectance of 1), written as RGB of
+//               the film's colour space, where D65 is white: a reflectance of 1 is (1, 1, 1)
 #pragma once
 #include <memory>
 #include <optional>
@@ -19,7 +26,7 @@
 
 namespace objektiv {
 
-enum class AovType { kDepth, kPosition, kUv, kGeoNormal, kShNormal };
+enum class AovType { kDepth, kPosition, kUv, kGeoNormal, kShNormal, kAlbedo };
 
 struct Aov {
   std::string name;
@@ -41,7 +48,8 @@ class AovIntegrator final : public CameraPathIntegrator {
     return inner_->Li(ray, first_hit, lambda, sampler, ctx);
   }
   int AovChannels() const override;
-  void EvaluateAovs(const Ray& ray, const std::optional<SurfaceInteraction>& hit, float* out) const override;
+  void EvaluateAovs(const Ray& ray, const std::optional<SurfaceInteraction>& hit, const SampledWavelengths& lambda,
+                    uint64_t seed, float* out) const override;
   const std::vector<Aov>& aovs() const { return aovs_; }
 
  private:

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "base/rng.h"
 #include "render/direct_lighting.h"
 #include "render/integrator.h"
 
@@ -70,7 +71,7 @@ void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
           ctx.AddEmitted(pixel, cr->weight * DirectEmission(cr->ray, b.first_hits[k], b.lambdas[k]), b.lambdas[k],
                          b.filter_samples[k].weight);
         if (aov_channels > 0) {
-          if (cr) EvaluateAovs(cr->ray, b.first_hits[k], aov.data());
+          if (cr) EvaluateAovs(cr->ray, b.first_hits[k], b.lambdas[k], Hash(pixel.x, pixel.y, s0 + k, 0xa0), aov.data());
           else std::fill(aov.begin(), aov.end(), 0.f);
           ctx.AddAovs(pixel, aov.data(), b.filter_samples[k].weight);
         }

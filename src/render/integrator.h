@@ -36,9 +36,11 @@ class CameraPathIntegrator : public Integrator {
   virtual SampledSpectrum Li(const Ray& ray, const std::optional<SurfaceInteraction>& first_hit,
                              SampledWavelengths& lambda, Sampler& sampler, BlockContext& ctx) const = 0;
   // Values of the first hit kept beside the image (render/aov.h): how many, and each camera
-  // sample's (written to `out`, AovChannels() of them; `hit` empty: a miss).
+  // sample's (written to `out`, AovChannels() of them; `hit` empty: a miss), at the sample's
+  // wavelengths, with `seed` for any random numbers they need (the sample's own stay the image's).
   virtual int AovChannels() const { return 0; }
-  virtual void EvaluateAovs(const Ray&, const std::optional<SurfaceInteraction>&, float*) const {}
+  virtual void EvaluateAovs(const Ray&, const std::optional<SurfaceInteraction>&, const SampledWavelengths&, uint64_t,
+                            float*) const {}
 
  private:
   // The radiance along the camera ray straight from an emitter (Li's first term): what the
