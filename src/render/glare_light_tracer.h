@@ -14,7 +14,13 @@
 // with the reflections asked for, its flux (radiance x projected area of the front element /
 // densities x the walk's weight) splatted into the pixel it lands in, in the film's units
 // (pixel = exposure_scale (4 / pi) irradiance, camera/lens_camera.h). The number of paths is
-// the layer's own: it converges independently of the image's samples.
+// the layer's own: it converges independently of the image's samples. The front element's
+// point is guided: the first eighth of the paths learn, per light, through which parts of the
+// front element light lands; the rest go there more often (with their density in the weight,
+// and a tenth of them uniform: unbiased). At f/11 that lands about 15 times more paths.
+//
+// The estimator is unbiased but noisy where a ghost spreads far (few paths land on each of
+// its pixels, each carrying much): large, faint ghosts need many paths.
 //
 // Deterministic on any number of threads: every path's random numbers come from its index,
 // and paths are splatted in index order.
