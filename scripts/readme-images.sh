@@ -27,6 +27,8 @@ flare() {
   done
   oiiotool "$tmp/coat-none.png" "$tmp/lens-tessar.brendel.100mm.png" "$tmp/lens-wide.22mm.png" --mosaic:pad=4 3x1 \
     -o "$out/flare-lenses.png"
+  render scenes/flare/sun-disc.xml -D spp=64 -D glare=1024 -D width=480 -D height=270 -o "$tmp/sun.exr"
+  cp "$tmp/sun.png" "$out/flare-sun.png"
   for b in 0 5 6 8 9; do
     render scenes/flare/starburst.xml -D blades=$b -o "$tmp/star-$b.exr"
   done
