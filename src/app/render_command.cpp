@@ -277,7 +277,7 @@ int RunRender(const RenderArgs& a) {
   {
     std::unique_ptr<tbb::global_control> limit;  // the passes after the render keep to --threads too
     if (a.threads > 0) limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, a.threads);
-    layers = ComposeLensLayers(*setup.scene, *setup.camera, film);
+    layers = ComposeLensLayers(*setup.scene, *setup.camera, film, setup.sampler.seed);
   }
   Image linear = XyzToImage(layers.Sum(), layers.width, layers.height, *fs_.color_space, fs_.exposure);
   AddLensLayers(layers, *fs_.color_space, fs_.exposure, linear, header);

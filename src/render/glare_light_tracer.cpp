@@ -26,11 +26,11 @@ struct Landing {
 // Guiding: the front element's points are chosen through u in [0, 1)^2 (optics/front_element.h:
 // equal areas for equal u); per light, a grid of kGuideCells^2 cells of u. The first eighth of
 // the paths choose u uniformly and record which cells their landings came through (weighted
-// by their luminance); the rest choose u from each light's record mixed with a tenth of the
-// uniform density (so no cell is ever left out: unbiased), which sends them where the light
-// gets through the lens (at f/11 a few percent of the front element).
+// by their luminance); the rest choose u from each light's record mixed half and half with the
+// uniform density (so no cell is ever left out: unbiased; no weight above 2), which sends them
+// where the light gets through the lens (at f/11 a few percent of the front element).
 constexpr int kGuideCells = 16;
-constexpr double kUniformShare = 0.1;
+constexpr double kUniformShare = 0.5;
 
 class FrontGuide {
  public:

@@ -17,7 +17,10 @@
 // the layer's own: it converges independently of the image's samples. The front element's
 // point is guided: the first eighth of the paths learn, per light, through which parts of the
 // front element light lands; the rest go there more often (with their density in the weight,
-// and a tenth of them uniform: unbiased). At f/11 that lands about 15 times more paths.
+// half of them uniform: unbiased, and no weight above 2). Measured on a small sun: at f/11 9x
+// more paths land and the relative RMS error of a pixel falls from 0.99 to 0.48 for the same
+// paths; at f/4 from 0.68 to 0.49 (a tenth uniform did better at f/11, 0.44, but no better
+// than none at f/4).
 //
 // The estimator is unbiased but noisy where a ghost spreads far (few paths land on each of
 // its pixels, each carrying much): large, faint ghosts need many paths.

@@ -64,7 +64,7 @@ void PrepareFilmForLensEffects(const Camera& camera, Film& film) {
     if (real->effects().diffraction == DiffractionScope::kEmitters) film.KeepEmitted();
 }
 
-LensLayers ComposeLensLayers(const Scene& scene, const Camera& camera, const Film& film) {
+LensLayers ComposeLensLayers(const Scene& scene, const Camera& camera, const Film& film, uint64_t seed) {
   LensLayers out;
   const CropWindow& crop = film.crop();
   out.width = crop.Width(), out.height = crop.Height();
@@ -91,6 +91,7 @@ LensLayers ComposeLensLayers(const Scene& scene, const Camera& camera, const Fil
     // full render's noise.
     GlareSettings g;
     g.paths = int64_t(e.glare_samples) * real->width() * real->height();
+    g.seed = seed;
     const GlareImage glare = TraceGlare(scene, *real, crop, g);
     Add(out.ghosts, glare.xyz);
     out.glare_paths = glare.paths, out.glare_landed = glare.landed;

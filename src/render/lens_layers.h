@@ -39,6 +39,7 @@ uint64_t LensEffectsBytes(const Camera& camera, const CropWindow& crop, int thre
 // Films that the effects need prepared before rendering (the emitted light kept apart).
 void PrepareFilmForLensEffects(const Camera& camera, Film& film);
 
-LensLayers ComposeLensLayers(const Scene& scene, const Camera& camera, const Film& film);
+// `seed`: the sampler's, so that renders with different seeds have independent glare noise.
+LensLayers ComposeLensLayers(const Scene& scene, const Camera& camera, const Film& film, uint64_t seed = 0);
 
 }  // namespace objektiv
