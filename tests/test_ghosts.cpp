@@ -199,3 +199,29 @@ TEST(Ghosts, SplatGivesEachPixelItsShareOfTheTriangle) {
 
 }  // namespace
 }  // namespace objektiv
+
+namespace objektiv {
+namespace {
+
+TEST(Ghosts, SplatTakesSliversWithFlatEdges) {
+  // An edge whose height is a denormal (its slope overflows to infinity: a lamp on the axis
+  // focuses ghosts into such slivers) wrote outside the coverage buffer: heap corruption, a
+  // crash in the starburst scene with ghosts on. Its flux lands inside the image, all of it,
+  // and nothing beyond the image changes.
+  const FilmRaster raster{8, 8, 0, 0, 1, 1};
+  for (const double dy : {1e-310, 1e-300, 1e-17, 0.0}) {
+    std::vector<float> image(64 + 8, 0.f);  // 8 guard values after the image
+    const FilmTriangle t{{0.5, 0.0}, {5.999999999999999, dy}, {3.0, 3.0}, 1.0};
+    Splat(std::span(&t, 1), raster, 1, image.data());
+    double total = 0;
+    for (int i = 0; i < 64; ++i) {
+      ASSERT_TRUE(std::isfinite(image[i])) << dy;
+      total += image[i];
+    }
+    EXPECT_NEAR(total, 1.0, 1e-5) << dy;
+    for (int i = 64; i < 72; ++i) EXPECT_EQ(image[i], 0.f) << dy;
+  }
+}
+
+}  // namespace
+}  // namespace objektiv

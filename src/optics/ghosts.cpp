@@ -358,13 +358,17 @@ void AccumulateEdge(Vec2d p, Vec2d q, int width, int rows, double* acc) {
     std::swap(p, q);
     direction = -1;
   }
-  const double dxdy = (q.x - p.x) / (q.y - p.y);
+  // x along the edge at height h, as a share of its height: always between p.x and q.x, even
+  // for an edge so flat that its slope dx/dy overflows (rounding past the polygon's columns
+  // wrote outside `acc`: a lamp on the axis focuses ghosts into such slivers).
+  const double dy = q.y - p.y;
+  auto x_at = [&](double h) { return p.x + (q.x - p.x) * std::clamp((h - p.y) / dy, 0.0, 1.0); };
   // Only the rows kept (each row's sums stand alone): x where the edge enters each row anew.
   const int first = std::max(int(std::floor(p.y)), 0), last = std::min(int(std::ceil(q.y)), rows);
   for (int y = first; y < last; ++y) {
     double* line = acc + size_t(y) * width;
     const double top = std::max(double(y), p.y), bottom = std::min(double(y + 1), q.y);
-    const double x = p.x + dxdy * (top - p.y), x_next = p.x + dxdy * (bottom - p.y);
+    const double x = x_at(top), x_next = x_at(bottom);
     const double d = (bottom - top) * direction;
     const double lo = std::min(x, x_next), hi = std::max(x, x_next);
     const double lo_floor = std::floor(lo);
