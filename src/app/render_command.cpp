@@ -55,6 +55,7 @@ void WriteStatsJson(const std::string& path, const RenderStats& s, int threads, 
     j["ghosts_culled"] = layers.ghosts_culled;
     j["glare_seconds"] = layers.glare_seconds;
     j["glare_paths"] = layers.glare_paths;
+    j["glare_paths_asked"] = layers.glare_paths_asked;
     j["glare_paths_landed"] = layers.glare_landed;
   }
   if (!layers.diffraction.empty()) j["diffraction_seconds"] = layers.diffraction_seconds;
@@ -153,6 +154,9 @@ void AddLensLayers(const LensLayers& layers, const ColorSpace& cs, float exposur
                  layers.flare_sources, layers.flare_sources == 1 ? "" : "s", layers.ghosts_traced, layers.ghosts_culled,
                  layers.ghosts_dark, layers.ghost_seconds);
   }
+  if (layers.glare_paths < layers.glare_paths_asked)
+    spdlog::warn("interrupted: ghosts and glare by light tracing from {} of the {} paths asked for (noisier)",
+                 layers.glare_paths, layers.glare_paths_asked);
   if (layers.glare_paths > 0)
     spdlog::info("ghosts and glare by light tracing: {} paths, {} landed; a pixel brighter than 1% of the brightest got "
                  "{:g} of them (median: relative noise about {:.0f}%; raise glare_samples for less); {:.2f} s",

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "base/interrupt.h"
 #include "base/sampling.h"
 #include "optics/front_element.h"
 #include "optics/lens_walk.h"
@@ -160,7 +161,10 @@ GlareImage TraceGlare(const Scene& scene, const RealisticCamera& camera, const C
     std::vector<std::vector<double>> record(lights, std::vector<double>(kGuideCells * kGuideCells, 0.0));
     std::vector<FrontGuide> guides;
     const int64_t learn = std::max<int64_t>(settings.paths / 8, 1);
-    for (int64_t first = 0; first < settings.paths;) {
+    int64_t first = 0;
+    while (first < settings.paths) {
+      // Ctrl-C: stop after the chunk in progress; the paths traced stand for all (below).
+      if (InterruptRequested().load(std::memory_order_relaxed)) break;
       // The learning paths, then the guided ones (chunks never straddle the two).
       const bool learning = first < learn;
       const int64_t count = std::min(kChunk, (learning ? learn : settings.paths) - first);
@@ -178,7 +182,11 @@ GlareImage TraceGlare(const Scene& scene, const RealisticCamera& camera, const C
       if (first == learn)
         for (size_t i = 0; i < lights; ++i) guides.emplace_back(record[i]);
     }
-    out.paths = settings.paths;
+    // Each path's value was divided by the paths asked for; an interrupted pass rescales to
+    // the paths traced (each is an estimate of the whole on its own).
+    out.paths = first;
+    if (first > 0 && first < settings.paths)
+      for (double& v : sum) v *= double(settings.paths) / double(first);
   }
   out.xyz.assign(sum.begin(), sum.end());
   double brightest = 0;

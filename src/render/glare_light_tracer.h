@@ -47,7 +47,7 @@ struct GlareSettings {
 struct GlareImage {
   int width = 0, height = 0;  // the crop window's
   std::vector<float> xyz;     // CIE XYZ per pixel, interleaved
-  int64_t paths = 0, landed = 0;  // traced, and splatted on the crop window
+  int64_t paths = 0, landed = 0;  // traced (fewer than asked if interrupted), and splatted on the crop window
   // The median number of paths a pixel got where the image is brighter than 1% of its
   // brightest pixel (Y): its relative noise there is roughly 1 / sqrt of it. 0 where nothing landed.
   double median_landings = 0;

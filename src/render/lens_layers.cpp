@@ -94,7 +94,7 @@ LensLayers ComposeLensLayers(const Scene& scene, const Camera& camera, const Fil
     g.seed = seed;
     const GlareImage glare = TraceGlare(scene, *real, crop, g);
     Add(out.ghosts, glare.xyz);
-    out.glare_paths = glare.paths, out.glare_landed = glare.landed;
+    out.glare_paths = glare.paths, out.glare_landed = glare.landed, out.glare_paths_asked = g.paths;
     out.glare_median_landings = glare.median_landings;
     out.glare_seconds = glare.seconds;
   }

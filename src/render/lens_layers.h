@@ -27,7 +27,7 @@ struct LensLayers {
   double fnumber = 0;  // working, of the diffraction pattern
   int other_lights = 0;  // area and environment lights: ghosts by light tracing only, no own images
   // The light-traced part of the ghosts layer (render/glare_light_tracer.h).
-  int64_t glare_paths = 0, glare_landed = 0;
+  int64_t glare_paths = 0, glare_landed = 0, glare_paths_asked = 0;
   double glare_median_landings = 0;
   double ghost_seconds = 0, glare_seconds = 0, diffraction_seconds = 0;
 };
