@@ -62,9 +62,7 @@ Vec2d LensCamera::FilmPoint(Vec2f p) const {
 float LensCamera::Weight(Vec2d film, double cos_theta, double dz, double pdf) const {
   float c2 = float(cos_theta * cos_theta), z2 = float(dz * dz);
   float w = weight_scale_ * c2 * c2 / (z2 * float(pdf));
-  if (settings_.vignetting == Vignetting::kOptical || settings_.vignetting == Vignetting::kNone)
-    w /= float(ChiefRayFactor(film, dz));
-  return w;
+  return w / float(ChiefRayFactor(film, dz));
 }
 
 double LensCamera::ChiefRayFactor(Vec2d film, double dz) const {

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "optics/lens_tracer.h"
+
 namespace objektiv {
 
 FrontPoint SampleFrontElement(const LensSystem& lens, Vec2d u) {
@@ -11,10 +13,7 @@ FrontPoint SampleFrontElement(const LensSystem& lens, Vec2d u) {
   const double x = rho * std::cos(phi), y = rho * std::sin(phi);
   FrontPoint f;
   f.p = {x, y, lens.VertexZ(0) + s.Sag(rho)};
-  // z = sag(r): the normal (-dz/dx, -dz/dy, 1) normalised.
-  const double slope = rho > 0 ? s.SagSlope(rho) : 0;
-  const Vec3d n = rho > 0 ? Vec3d(-slope * x / rho, -slope * y / rho, 1) : Vec3d(0, 0, 1);
-  f.normal = n / Length(n);
+  f.normal = SurfaceNormal(s, f.p);
   return f;
 }
 

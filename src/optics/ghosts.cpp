@@ -7,13 +7,18 @@
 
 namespace objektiv {
 
-std::vector<Ghost> TwoReflectionGhosts(const LensSystem& lens) {
-  // Surfaces where the index changes (at the d line: a change anywhere is a change there).
+std::vector<int> ReflectingSurfaces(const LensSystem& lens) {
+  // At the d line: a change anywhere is a change there.
   std::vector<int> reflecting;
   for (int i = 0; i < lens.SurfaceCount(); ++i) {
     const double before = i > 0 ? lens.surface(i - 1).IndexAfter(kLambdad) : 1.0;
     if (before != lens.surface(i).IndexAfter(kLambdad)) reflecting.push_back(i);
   }
+  return reflecting;
+}
+
+std::vector<Ghost> TwoReflectionGhosts(const LensSystem& lens) {
+  const std::vector<int> reflecting = ReflectingSurfaces(lens);
   std::vector<Ghost> ghosts;
   for (size_t a = 0; a < reflecting.size(); ++a)
     for (size_t b = 0; b < a; ++b) ghosts.push_back({reflecting[a], reflecting[b]});

@@ -29,6 +29,8 @@ struct Ghost {
   int first = 0, second = 0;  // the surfaces that reflect, first > second
 };
 
+// The surfaces where the index changes (the interfaces that reflect), in order.
+std::vector<int> ReflectingSurfaces(const LensSystem& lens);
 // Every two-reflection path: each pair of surfaces where the index changes.
 std::vector<Ghost> TwoReflectionGhosts(const LensSystem& lens);
 // A ghost's path: surfaces 0..first toward the film (reflected at first), first-1..second

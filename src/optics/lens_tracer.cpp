@@ -23,17 +23,15 @@ double FresnelReflectance(double n1, double n2, double cos_i) {
   return FresnelDielectric(std::clamp(cos_i, 0.0, 1.0), n2 / n1);
 }
 
-namespace {
-
-// The unit normal of surface s at p (relative to the vertex or not: it depends on x, y only),
-// pointing toward +z.
-Vec3d Normal(const LensSurface& s, const Vec3d& p) {
+Vec3d SurfaceNormal(const LensSurface& s, const Vec3d& p) {
   double r = std::sqrt(p.x * p.x + p.y * p.y);
   if (r == 0) return {0, 0, 1};
   double slope = s.SagSlope(r);
   Vec3d n(-slope * p.x / r, -slope * p.y / r, 1);
   return n / Length(n);
 }
+
+namespace {
 
 // Where the ray (lens space) meets surface i: the parameter t, or nothing.
 std::optional<double> Intersect(const LensSystem& lens, int i, const LensRay& ray) {
@@ -112,7 +110,7 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
   c.interface = n1 != n2;
   if (!c.interface) return c;
   // The normal facing the incoming ray.
-  c.normal = Normal(s, c.p);
+  c.normal = SurfaceNormal(s, c.p);
   if (Dot(c.normal, ray.d) > 0) c.normal = -c.normal;
   c.eta = n1 / n2;
   c.cos_i = -Dot(c.normal, ray.d);

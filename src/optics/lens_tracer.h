@@ -62,6 +62,10 @@ struct SurfaceVisit {
 TraceResult TraceSequence(const LensSystem& lens, const LensRay& ray, double lambda_nm,
                           std::span<const SurfaceVisit> visits, std::vector<Vec3d>* path = nullptr,
                           std::vector<SurfaceEvent>* events = nullptr);
+// The unit normal of surface s at p (relative to its vertex or not: it depends on x, y only),
+// pointing toward +z (the film).
+Vec3d SurfaceNormal(const LensSurface& s, const Vec3d& p);
+
 // One step of any path: where `ray` meets surface i travelling toward the film (or the
 // object), whether it gets through the opening there, and what the interface does; the
 // caller chooses to reflect or refract (Reflected, Refracted). The exact tracer's own step.

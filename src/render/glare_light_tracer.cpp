@@ -10,6 +10,7 @@
 #include "base/interrupt.h"
 #include "base/sampling.h"
 #include "optics/front_element.h"
+#include "optics/ghosts.h"
 #include "optics/lens_walk.h"
 
 namespace objektiv {
@@ -65,21 +66,11 @@ int GuideCell(Vec2f u) {
   return j * kGuideCells + i;
 }
 
-// The interfaces of the lens: where its index changes.
-int Interfaces(const LensSystem& lens) {
-  int n = 0;
-  for (int i = 0; i < lens.SurfaceCount(); ++i) {
-    const double before = i > 0 ? lens.surface(i - 1).IndexAfter(587.6) : 1.0;
-    n += before != lens.surface(i).IndexAfter(587.6);
-  }
-  return n;
-}
-
 class GlarePaths {
  public:
   GlarePaths(const Scene& scene, const RealisticCamera& camera, const CropWindow& crop, const GlareSettings& settings)
       : scene_(scene), camera_(camera), lens_(camera.lens()), crop_(crop), settings_(settings) {
-    walk_.min_reflect_probability = 1.0 / std::max(Interfaces(lens_), 2);
+    walk_.min_reflect_probability = 1.0 / std::max(int(ReflectingSurfaces(lens_).size()), 2);
     walk_.max_reflections = settings.max_reflections;
     walk_.lossless = !camera.settings().transmission;
     if (const ApertureMask* mask = camera.settings().aperture_mask.get())
