@@ -151,5 +151,46 @@ TEST(GlareLightTracer, SameOnAnyNumberOfThreads) {
   EXPECT_EQ(one.xyz, two.xyz);
 }
 
+// Ghosts are the surfaces' reflections: with the camera's transmission off (the image without
+// the lens's losses) the light-traced ghosts stay what they are, as the bundles' do.
+TEST(GlareLightTracer, GhostsKeepTheReflectionsWithTransmissionOff) {
+  auto trace = [](const char* transmission) {
+    RenderSetup setup = LoadSceneFromString(GlareScene(transmission, kPointLight), "glare.xml", {});
+    GlareSettings g;
+    g.paths = 200000;
+    g.delta_light_ghosts = true;
+    return TraceGlare(*setup.scene, dynamic_cast<const RealisticCamera&>(*setup.camera), {0, 0, 48, 32}, g);
+  };
+  const GlareImage with = trace(""), without = trace(R"(<boolean name="transmission" value="false"/>)");
+  EXPECT_GT(without.landed, 100);
+  EXPECT_EQ(without.landed, with.landed);
+  EXPECT_EQ(without.xyz, with.xyz);
+}
+
+// A light whose light cannot enter the lens (the sun behind the camera, by far the most
+// powerful light) takes few of the paths once the learning paths have found so: the small lamp
+// in front keeps most of its landings, and its glare is unchanged within the noise.
+TEST(GlareLightTracer, LightsThatCannotReachTheFilmTakeFewPaths) {
+  const std::string lamp = R"(<shape type="sphere"><point name="center" x="0.4" y="0.15" z="-3"/>
+      <float name="radius" value="0.01"/><bsdf type="diffuse"><rgb name="reflectance" value="0"/></bsdf>
+      <emitter type="area"><spectrum name="radiance" value="3000"/></emitter></shape>)";
+  const std::string sun_behind = R"(<emitter type="directional"><vector name="direction" x="0" y="0" z="-1"/>
+      <spectrum name="irradiance" value="10"/></emitter>
+      <shape type="rectangle"><transform name="to_world"><scale x="5" y="5"/><translate z="-4"/></transform></shape>)";
+  auto trace = [](const std::string& content) {
+    RenderSetup setup = LoadSceneFromString(GlareScene("", content), "glare.xml", {});
+    GlareSettings g;
+    g.paths = 1 << 19;
+    g.max_reflections = 2;
+    return TraceGlare(*setup.scene, dynamic_cast<const RealisticCamera&>(*setup.camera), {0, 0, 48, 32}, g);
+  };
+  const GlareImage alone = trace(lamp), with_sun = trace(lamp + sun_behind);
+  std::printf("lamp alone: %lld landed, total Y %.5g; with the sun behind: %lld landed, total Y %.5g\n",
+              (long long)alone.landed, BlocksOf(alone.xyz).total, (long long)with_sun.landed, BlocksOf(with_sun.xyz).total);
+  ASSERT_GT(alone.landed, 1000);
+  EXPECT_GT(double(with_sun.landed), 0.5 * double(alone.landed));
+  EXPECT_NEAR(BlocksOf(with_sun.xyz).total, BlocksOf(alone.xyz).total, 0.15 * BlocksOf(alone.xyz).total);
+}
+
 }  // namespace
 }  // namespace objektiv

@@ -17,7 +17,7 @@ enum class DiffractionScope { kOff, kEmitters, kImage };
 struct LensEffects {
   bool ghosts = false;
   int ghost_grid = 32;         // rays per side of each ghost's bundle
-  double ghost_cull = 1e-3;    // ghosts dimmer than this times the brightest are left out
+  double ghost_cull = 1e-3;    // the dimmest ghosts, together at most this share of the ghosts' light, are left out
   int glare_samples = 4;       // light paths per film pixel for the light-traced part (0: none)
   int wavelengths = 16;        // for the ghosts, the lights' images and the diffraction kernel
   DiffractionScope diffraction = DiffractionScope::kOff;

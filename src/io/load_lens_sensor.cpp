@@ -173,9 +173,6 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b
   s.exposure_scale = p.FloatIn("exposure_scale", 1, 0, 1e30);
   s.vignetting = p.Choice("vignetting", Vignetting::kFull, kVignettingModes);
   s.transmission = p.Bool("transmission", true);
-  if (!s.transmission && p.Has("coating") && spec.model == LensModel::kReal)
-    spdlog::warn("{}:{}: coating does nothing with transmission false (the surfaces' losses are not applied)",
-                 p.LocOf("coating").file, p.LocOf("coating").line);
   // The ideal models have no glass and no rims: what only the real lens has is said to do nothing.
   if (spec.model != LensModel::kReal) {
     const char* model = spec.model == LensModel::kThick ? "thick" : "thin";
@@ -213,6 +210,10 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b
     spdlog::warn("{}:{}: the lights' own images and their ghosts keep the lens's vignetting (the rims and the cos^4 "
                  "falloff) whatever vignetting says; only the camera rays follow it",
                  p.LocOf("vignetting").file, p.LocOf("vignetting").line);
+  if (!s.transmission && p.Has("coating") && spec.model == LensModel::kReal)
+    spdlog::warn("{}:{}: coating {} with transmission false (the surfaces' losses are not applied to the image)",
+                 p.LocOf("coating").file, p.LocOf("coating").line,
+                 effects.ghosts ? "changes only the ghosts and the glare" : "does nothing");
   if (effects.ghosts && !s.transmission)
     spdlog::warn("{}:{}: ghosts are made of the surfaces' reflections: with transmission false they keep them (and the "
                  "other surfaces' losses); the lights' own images leave the losses out as the camera rays do",

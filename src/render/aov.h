@@ -1,8 +1,9 @@
 // Arbitrary output variables: what the camera ray's first hit is, beside the radiance, as
 // Mitsuba 3's `aov` integrator gives them (`<integrator type="aov">` with `aovs` =
 // "name:type,..." and the integrator of the image nested in it). Each pixel holds its camera
-// samples' values averaged with the filter's weights, as the image does; a sample whose ray
-// hits nothing (or that starts no ray) counts zero.
+// rays' values averaged with the filter's weights; a ray that hits nothing counts zero, a
+// sample that starts no ray (through a real lens: stopped by a rim or the stop) is left out
+// (a pixel that no ray leaves holds zero).
 //   depth       the distance along the camera ray from where it starts   channel NAME
 //               (the near clip plane; the realistic camera: its front element) to the hit
 //   position    the hit point (world)                                     NAME.X, .Y, .Z

@@ -70,9 +70,8 @@ void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
         if (cr && keep_emitted)
           ctx.AddEmitted(pixel, cr->weight * DirectEmission(cr->ray, b.first_hits[k], b.lambdas[k]), b.lambdas[k],
                          b.filter_samples[k].weight);
-        if (aov_channels > 0) {
-          if (cr) EvaluateAovs(cr->ray, b.first_hits[k], b.lambdas[k], Hash(pixel.x, pixel.y, s0 + k, 0xa0), aov.data());
-          else std::fill(aov.begin(), aov.end(), 0.f);
+        if (aov_channels > 0 && cr) {
+          EvaluateAovs(cr->ray, b.first_hits[k], b.lambdas[k], Hash(pixel.x, pixel.y, s0 + k, 0xa0), aov.data());
           ctx.AddAovs(pixel, aov.data(), b.filter_samples[k].weight);
         }
         if (cr) L = cr->weight * Li(cr->ray, b.first_hits[k], b.lambdas[k], b.samplers[k], ctx);

@@ -86,9 +86,10 @@ std::vector<float> Film::EmittedXyz() const {
 std::vector<float> Film::Aovs() const {
   const size_t n = size_t(aov_channels_);
   std::vector<float> out(n * pixels_.size(), 0.f);
+  if (n == 0) return out;
   for (size_t i = 0; i < pixels_.size(); ++i)
-    if (pixels_[i].weight != 0)
-      for (size_t c = 0; c < n; ++c) out[i * n + c] = float(aov_sums_[i * n + c] / pixels_[i].weight);
+    if (aov_weights_[i] != 0)
+      for (size_t c = 0; c < n; ++c) out[i * n + c] = float(aov_sums_[i * n + c] / aov_weights_[i]);
   return out;
 }
 

@@ -43,16 +43,19 @@ class Film {
   void KeepEmitted() { emitted_xyz_.assign(3 * pixels_.size(), 0.0); }
   bool keeps_emitted() const { return !emitted_xyz_.empty(); }
   void AddEmitted(Vec2i pixel, const SampledSpectrum& Le, const SampledWavelengths& lambda, float weight);
-  // Arbitrary output variables (render/aov.h): `channels` values per camera sample, averaged
-  // per pixel with the samples' filter weights. Not synchronised, as AddSample.
+  // Arbitrary output variables (render/aov.h): `channels` values per camera ray, averaged per
+  // pixel with the samples' filter weights over the samples that start a ray (through a real
+  // lens, many do not: they describe nothing). Not synchronised, as AddSample.
   void KeepAovs(int channels) {
     aov_channels_ = channels;
     aov_sums_.assign(size_t(channels) * pixels_.size(), 0.0);
+    aov_weights_.assign(pixels_.size(), 0.0);
   }
   int aov_channels() const { return aov_channels_; }
   void AddAovs(Vec2i pixel, const float* values, float weight) {
     double* sum = &aov_sums_[size_t(aov_channels_) * Index(pixel)];
     for (int c = 0; c < aov_channels_; ++c) sum[c] += double(weight) * values[c];
+    aov_weights_[Index(pixel)] += weight;
   }
   // Crop-window sized, interleaved, `aov_channels()` per pixel.
   std::vector<float> Aovs() const;
@@ -95,7 +98,7 @@ class Film {
   std::vector<Pixel> pixels_;
   std::vector<double> splat_xyz_;  // 3 per pixel, added to through std::atomic_ref
   int aov_channels_ = 0;
-  std::vector<double> aov_sums_;
+  std::vector<double> aov_sums_, aov_weights_;
   std::vector<double> emitted_xyz_;  // 3 per pixel, weighted sums (like Pixel::xyz); empty unless kept
   int64_t samples_per_pixel_ = 0;
 };

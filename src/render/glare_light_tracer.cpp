@@ -61,6 +61,43 @@ class FrontGuide {
   bool guided_ = false;
 };
 
+// The lights are guided the same way: the learning paths choose them by power and record how
+// much of their light lands; the rest choose them in proportion to a mixture of that record
+// (kLearnedLightShare) and the power (the rest: every light keeps a chance, weights stay
+// below 1 / (1 - kLearnedLightShare)). A light whose light cannot reach the film (behind the
+// camera, behind a wall) then takes a quarter of its power share instead of all of it.
+constexpr double kLearnedLightShare = 0.75;
+
+class LightGuide {
+ public:
+  LightGuide() = default;
+  LightGuide(const Scene& scene, const std::vector<double>& landed) {
+    double total = 0;
+    for (double w : landed) total += w;
+    if (!(total > 0)) return;
+    std::vector<float> f(landed.size());
+    for (size_t i = 0; i < f.size(); ++i)
+      f[i] = float((1 - kLearnedLightShare) * scene.LightPmf(scene.lights()[i].get()) +
+                   kLearnedLightShare * landed[i] / total);
+    dist_ = Distribution1D(f);
+    guided_ = true;
+  }
+  const Light* Sample(const Scene& scene, float u, float* pmf) const {
+    if (!guided_) return scene.SampleLight(u, pmf);
+    return scene.lights()[size_t(dist_.SampleDiscrete(u, pmf))].get();
+  }
+
+ private:
+  Distribution1D dist_;
+  bool guided_ = false;
+};
+
+// What the learning paths teach the rest: per light, its front element's cells; the lights.
+struct GlareGuide {
+  std::vector<FrontGuide> fronts;
+  LightGuide lights;
+};
+
 int GuideCell(Vec2f u) {
   const int i = std::min(int(u.x * kGuideCells), kGuideCells - 1), j = std::min(int(u.y * kGuideCells), kGuideCells - 1);
   return j * kGuideCells + i;
@@ -72,7 +109,8 @@ class GlarePaths {
       : scene_(scene), camera_(camera), lens_(camera.lens()), crop_(crop), settings_(settings) {
     walk_.min_reflect_probability = 1.0 / std::max(int(ReflectingSurfaces(lens_).size()), 2);
     walk_.max_reflections = settings.max_reflections;
-    walk_.lossless = !camera.settings().transmission;
+    // Ghosts are the surfaces' reflections: the walk keeps them (and the losses) whatever the
+    // camera's transmission says, as the bundles do.
     if (const ApertureMask* mask = camera.settings().aperture_mask.get())
       walk_.stop_transmittance = [mask](double u, double v) { return double(mask->Transmittance(float(u), float(v))); };
     // Flux over the pixel's area, as the film's value, per path: (4 / pi) exposure_scale x
@@ -82,16 +120,17 @@ class GlarePaths {
              double(settings.paths);
   }
 
-  // `guides`: per light (its index in the scene), or none: uniform.
-  Landing Trace(int64_t index, const std::vector<FrontGuide>* guides) const {
+  // `guide`: what the learning paths found, or none: lights by power, the front uniformly.
+  Landing Trace(int64_t index, const GlareGuide* guide) const {
     Landing out;
     PCG32 rng(uint64_t(index), settings_.seed);
     float pmf = 0;
-    const Light* light = scene_.SampleLight(rng.UniformFloat(), &pmf);
+    const float u_light = rng.UniformFloat();
+    const Light* light = guide ? guide->lights.Sample(scene_, u_light, &pmf) : scene_.SampleLight(u_light, &pmf);
     if (!light || !(pmf > 0)) return out;
     float u_pdf = 1;
     Vec2f u_front(rng.UniformFloat(), rng.UniformFloat());
-    if (guides) u_front = (*guides)[size_t(light->index())].Sample(u_front, &u_pdf);
+    if (guide) u_front = guide->fronts[size_t(light->index())].Sample(u_front, &u_pdf);
     if (!(u_pdf > 0)) return out;
     const FrontPoint front = SampleFrontElement(lens_, Vec2d(u_front.x, u_front.y));
     const Vec3f at = camera_.WorldPoint(front.p);
@@ -150,7 +189,8 @@ GlareImage TraceGlare(const Scene& scene, const RealisticCamera& camera, const C
     std::vector<Landing> landed(kChunk);
     const size_t lights = scene.lights().size();
     std::vector<std::vector<double>> record(lights, std::vector<double>(kGuideCells * kGuideCells, 0.0));
-    std::vector<FrontGuide> guides;
+    std::vector<double> light_landed(lights, 0.0);
+    GlareGuide guide;
     const int64_t learn = std::max<int64_t>(settings.paths / 8, 1);
     int64_t first = 0;
     while (first < settings.paths) {
@@ -159,7 +199,7 @@ GlareImage TraceGlare(const Scene& scene, const RealisticCamera& camera, const C
       // The learning paths, then the guided ones (chunks never straddle the two).
       const bool learning = first < learn;
       const int64_t count = std::min(kChunk, (learning ? learn : settings.paths) - first);
-      const std::vector<FrontGuide>* g = learning ? nullptr : &guides;
+      const GlareGuide* g = learning ? nullptr : &guide;
       tbb::parallel_for(int64_t(0), count, [&](int64_t k) { landed[k] = paths.Trace(first + k, g); });
       for (int64_t k = 0; k < count; ++k) {
         const Landing& l = landed[k];
@@ -167,11 +207,16 @@ GlareImage TraceGlare(const Scene& scene, const RealisticCamera& camera, const C
         ++out.landed;
         ++landings[l.pixel];
         for (int c = 0; c < 3; ++c) sum[3 * size_t(l.pixel) + c] += l.xyz[c];
-        if (learning) record[size_t(l.light)][size_t(l.cell)] += std::abs(l.xyz[1]);
+        if (learning) {
+          record[size_t(l.light)][size_t(l.cell)] += std::abs(l.xyz[1]);
+          light_landed[size_t(l.light)] += std::abs(l.xyz[1]);
+        }
       }
       first += count;
-      if (first == learn)
-        for (size_t i = 0; i < lights; ++i) guides.emplace_back(record[i]);
+      if (first == learn) {
+        for (size_t i = 0; i < lights; ++i) guide.fronts.emplace_back(record[i]);
+        guide.lights = LightGuide(scene, light_landed);
+      }
     }
     // Each path's value was divided by the paths asked for; an interrupted pass rescales to
     // the paths traced (each is an estimate of the whole on its own).

@@ -6,21 +6,22 @@
 // - point, spot and directional lights' two-reflection ghosts only where asked for (the
 //   bundles draw them without noise; this estimator is their independent check).
 //
-// Each path: a point of the front element chosen uniformly (optics/front_element.h), a light
-// chosen by power and sampled from that point (Light::SampleLi: the point's solid angle), the
-// shadow ray toward it, one wavelength (visible-importance sampled), the walk through the lens
-// with reflections encouraged (probability at least 1 / the number of interfaces, which sends
+// Each path: a point of the front element (optics/front_element.h), a light chosen and sampled
+// from that point (Light::SampleLi: the point's solid angle), the shadow ray toward it, one
+// wavelength (visible-importance sampled), the walk through the lens with reflections encouraged (probability at least 1 / the number of interfaces, which sends
 // about one walk in two into reflections on the way through), and, if it lands on the film
 // with the reflections asked for, its flux (radiance x projected area of the front element /
 // densities x the walk's weight) splatted into the pixel it lands in, in the film's units
 // (pixel = exposure_scale (4 / pi) irradiance, camera/lens_camera.h). The number of paths is
 // the layer's own: it converges independently of the image's samples. The front element's
-// point is guided: the first eighth of the paths learn, per light, through which parts of the
-// front element light lands; the rest go there more often (with their density in the weight,
-// half of them uniform: unbiased, and no weight above 2). Measured on a small sun: at f/11 9x
-// more paths land and the relative RMS error of a pixel falls from 0.99 to 0.48 for the same
-// paths; at f/4 from 0.68 to 0.49 (a tenth uniform did better at f/11, 0.44, but no better
-// than none at f/4).
+// point and the light are guided: the first eighth of the paths learn, per light, through which
+// parts of the front element light lands, and how much of each light lands; the rest go there
+// more often (with their density in the weight, half of the front points uniform and a quarter
+// of the lights by power: unbiased, and no weight above 2 or 4). A light that cannot reach
+// the film (a sun behind the camera) so takes few paths. Measured on a small sun (front
+// guide): at f/11 9x more paths land and the relative RMS error of a pixel falls from 0.99 to
+// 0.48 for the same paths; at f/4 from 0.68 to 0.49 (a tenth uniform did better at f/11,
+// 0.44, but no better than none at f/4).
 //
 // The estimator is unbiased but noisy where a ghost spreads far (few paths land on each of
 // its pixels, each carrying much): large, faint ghosts need many paths.

@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <optional>
@@ -14,11 +15,11 @@ namespace {
 
 constexpr double kFlareLambdaMin = 380, kFlareLambdaMax = 780, kRegionLambda = 580;
 
-// The flux of a bundle over the film area it covers: its mean irradiance.
-double MeanIrradiance(const std::vector<FilmTriangle>& bundle) {
-  double flux = 0, area = 0;
-  for (const FilmTriangle& t : bundle) flux += t.flux, area += t.Area();
-  return area > 0 ? flux / area : 0;
+// The flux a bundle carries to the film.
+double BundleFlux(const std::vector<FilmTriangle>& bundle) {
+  double flux = 0;
+  for (const FilmTriangle& t : bundle) flux += t.flux;
+  return flux;
 }
 
 // A path to trace for one source: a ghost or the direct image, with the region its light
@@ -29,7 +30,7 @@ struct FlarePath {
 };
 
 // Every ghost of `source` whose light reaches the film, with its region and its level: the
-// mean irradiance of a coarse bundle at 580 nm (see lens_flare.h: culling).
+// flux of a coarse bundle at 580 nm (see lens_flare.h: culling).
 struct LitGhost {
   FlarePath path;
   double level = 0;
@@ -43,12 +44,29 @@ std::vector<LitGhost> LitGhosts(const LensSystem& lens, const std::vector<Ghost>
     if (!regions[g]) return;
     BundleOptions coarse = options;
     coarse.grid = 8, coarse.region = &*regions[g];
-    level[g] = MeanIrradiance(GhostBundle(lens, ghosts[g], source, kRegionLambda, coarse));
+    level[g] = BundleFlux(GhostBundle(lens, ghosts[g], source, kRegionLambda, coarse));
   });
   std::vector<LitGhost> lit;
   for (size_t g = 0; g < ghosts.size(); ++g)
     if (level[g] > 0) lit.push_back({{ghosts[g], *regions[g]}, level[g]});
   return lit;
+}
+
+// The level at and below which ghosts are culled: the largest such that the ghosts at or below
+// it hold no more than `share` of the light of all (0 keeps every ghost with light; a ghost
+// without light is never traced).
+double CullLevel(const std::vector<std::vector<LitGhost>>& lit, double share) {
+  std::vector<double> levels;
+  double total = 0;
+  for (const auto& ghosts : lit)
+    for (const LitGhost& g : ghosts) levels.push_back(g.level), total += g.level;
+  std::sort(levels.begin(), levels.end());
+  double cut = 0, below = 0;
+  for (double level : levels) {
+    if (below + level > share * total) break;
+    below += level, cut = level;
+  }
+  return cut;
 }
 
 }  // namespace
@@ -95,23 +113,20 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
     options.stop_transmittance = [mask](double u, double v) { return double(mask->Transmittance(float(u), float(v))); };
   BundleOptions direct_options = options;
   direct_options.lossless = !camera.settings().transmission;
-  // Culling over all the lights at once: a ghost's level times its light's brightness
-  // against the brightest's, so that dim lights cost little.
+  // Culling over all the lights at once: each ghost's flux times its light's brightness; the
+  // dimmest ghosts, together less than `cull` of all the ghosts' light, are left out.
   std::vector<std::vector<LitGhost>> lit(sources.size());
-  double brightest = 0;
   if (settings.ghosts)
     for (size_t s = 0; s < sources.size(); ++s) {
       lit[s] = LitGhosts(lens, all, sources[s].source, options);
       out.ghosts_dark += int(all.size() - lit[s].size());
       const double brightness = sources[s].irradiance_scale * sources[s].visibility * sources[s].Emission(kRegionLambda);
-      for (LitGhost& g : lit[s]) {
-        g.level *= brightness;
-        brightest = std::max(brightest, g.level);
-      }
+      for (LitGhost& g : lit[s]) g.level *= brightness;
     }
+  const double kept_from = CullLevel(lit, settings.cull);
   for (size_t s = 0; s < sources.size(); ++s) {
     for (const LitGhost& g : lit[s]) {
-      if (g.level >= settings.cull * brightest && g.level > 0) {
+      if (g.level > kept_from) {
         paths[s].push_back(g.path);
         ++out.ghosts_traced;
       } else {
