@@ -448,17 +448,28 @@ void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, dou
     // corners' values over their mean, which the triangle's flux fixes), taken at the
     // centroid of the part of the triangle in a pixel (where a linear function has its mean).
     const double mean_e = (t.ea + t.eb + t.ec) / 3;
-    const bool uniform = t.ea == t.eb && t.eb == t.ec;
     const double det = (b.y - c.y) * (a.x - c.x) + (c.x - b.x) * (a.y - c.y);
     auto relative = [&](Vec2d p) {
       const double la = ((b.y - c.y) * (p.x - c.x) + (c.x - b.x) * (p.y - c.y)) / det;
       const double lb = ((c.y - a.y) * (p.x - c.x) + (a.x - c.x) * (p.y - c.y)) / det;
       return std::max(0.0, (la * t.ea + lb * t.eb + (1 - la - lb) * t.ec) / mean_e);
     };
+    // Its change per pixel: where the centroid of a partial pixel's part (within half a pixel
+    // of the pixel's centre each way) would change the value by less than kCentroidTolerance,
+    // the pixel's centre does (clipping the triangle to the pixel cost half the splat); and
+    // uniform where the triangle lies within 2 x 2 pixels (the variation inside one pixel's
+    // share of it is below what the pixels resolve: its neighbours carry the bundle's picture).
+    constexpr double kCentroidTolerance = 2e-3;
+    const double gx = ((t.ea - t.ec) * (b.y - c.y) + (t.eb - t.ec) * (c.y - a.y)) / (det * mean_e);
+    const double gy = ((t.ea - t.ec) * (c.x - b.x) + (t.eb - t.ec) * (a.x - c.x)) / (det * mean_e);
+    const double spread = (std::max({t.ea, t.eb, t.ec}) - std::min({t.ea, t.eb, t.ec})) / mean_e;
+    const bool uniform = spread < 1e-3 || (x1 - x0 <= 1 && y1 - y0 <= 1);
+    const bool centres = 0.5 * (std::abs(gx) + std::abs(gy)) < kCentroidTolerance;
     // The value of pixel (x, y) given the share of it the triangle covers.
     auto value = [&](int x, int y, double share) {
       if (uniform) return per_area * share;
-      const Vec2d centre = share >= 1 - 1e-9 ? Vec2d(x + 0.5, y + 0.5) : OverlapOf(a, b, c, x, y).centroid;
+      const Vec2d centre =
+          share >= 1 - 1e-9 || centres ? Vec2d(x + 0.5, y + 0.5) : OverlapOf(a, b, c, x, y).centroid;
       return per_area * share * relative(centre);
     };
     // Within the image's width: the exact coverage by accumulated edges, for the rows inside

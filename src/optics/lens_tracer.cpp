@@ -109,8 +109,17 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
   const double n1 = toward_film ? n_object_side : n_film_side, n2 = toward_film ? n_film_side : n_object_side;
   c.interface = n1 != n2;
   if (!c.interface) return c;
-  // The normal facing the incoming ray.
-  c.normal = SurfaceNormal(s, c.p);
+  // The normal facing the incoming ray: for a plane or a conic from the gradient of its
+  // implicit form c (x^2 + y^2) + (1 + k) c z^2 - 2 z = 0 at the point (no square root of
+  // the sag's slope), for an asphere from the slope.
+  const double curvature = s.Curvature();
+  if (s.HasAsphericTerms()) {
+    c.normal = SurfaceNormal(s, c.p);
+  } else {
+    const Vec3d g(-curvature * c.p.x, -curvature * c.p.y,
+                  1 - (1 + s.conic) * curvature * (c.p.z - lens.VertexZ(i)));
+    c.normal = g / Length(g);
+  }
   if (Dot(c.normal, ray.d) > 0) c.normal = -c.normal;
   c.eta = n1 / n2;
   c.cos_i = -Dot(c.normal, ray.d);
