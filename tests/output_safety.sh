@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Command-line tests of output safety: unwritable outputs and outputs that would replace one of
 # the scene's own files are refused before rendering (exit 2); Ctrl-C stops a render and writes
-# a whole, partial image (exit 130); a second Ctrl-C aborts at once.
+# a whole, partial image (exit 130); a second Ctrl-C aborts at once; Ctrl-C in the glare
+# pass stops it after the chunk in progress, with the paths traced standing for all.
 # Usage: output_safety.sh CASE OBJEKTIV SOURCE_DIR WORK_DIR IINFO
-#   CASE: unwritable | inputs | interrupt | interrupt-twice
+#   CASE: unwritable | inputs | interrupt | interrupt-twice | interrupt-glare
 set -uo pipefail
 case_name=$1 obj=$2 src=$3 work=$4 iinfo=$5
 cornell=$src/scenes/cornell-box/cornell-box.xml
@@ -124,6 +125,27 @@ interrupt-twice)
   wait_exit 50
   [ $rc = 130 ] || fail "exit $rc, expected 130"
   [ ! -e "$work/int.exr" ] || fail "an image was written after the second SIGINT"
+  no_temporaries "$work"
+  ;;
+interrupt-glare)
+  # The image is done in a moment; the glare pass (a lamp's ghosts by light tracing, 65536
+  # paths per pixel: 268 million) would take about a minute.
+  set -m
+  "$obj" render "$src/tests/data/glare-interrupt.xml" -v -o "$work/glare.exr" --stats-json "$work/glare.json" \
+    > "$work/out.txt" 2> "$work/err.txt" &
+  pid=$!
+  wait_for "light tracing: 268435456 paths" 1200 || fail "the glare pass did not start: $(cat "$work/err.txt")"
+  sleep 1
+  kill -INT $pid
+  wait_exit 300
+  cat "$work/out.txt" "$work/err.txt"
+  [ $rc = 130 ] || fail "exit $rc, expected 130"
+  grep -q "interrupted: ghosts and glare by light tracing from" "$work/err.txt" || fail "no warning on the glare pass"
+  asked=$(sed -n 's/.*"glare_paths_asked": \([0-9]*\).*/\1/p' "$work/glare.json")
+  traced=$(sed -n 's/.*"glare_paths": \([0-9]*\).*/\1/p' "$work/glare.json")
+  [ "$asked" = 268435456 ] || fail "glare_paths_asked '$asked'"
+  [ -n "$traced" ] && [ "$traced" -gt 0 ] && [ "$traced" -lt "$asked" ] || fail "glare_paths '$traced' of $asked"
+  "$obj" imgtool diff "$work/glare.exr" "$work/glare.exr" --threshold 0 > /dev/null || fail "the EXR does not read whole"
   no_temporaries "$work"
   ;;
 *) fail "unknown case $case_name" ;;

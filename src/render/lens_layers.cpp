@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 
+#include <spdlog/spdlog.h>
+
 #include "camera/realistic_camera.h"
 #include "render/diffraction_glare.h"
 #include "render/glare_light_tracer.h"
@@ -92,6 +94,7 @@ LensLayers ComposeLensLayers(const Scene& scene, const Camera& camera, const Fil
     GlareSettings g;
     g.paths = int64_t(e.glare_samples) * real->width() * real->height();
     g.seed = seed;
+    spdlog::debug("ghosts and glare by light tracing: {} paths", g.paths);
     const GlareImage glare = TraceGlare(scene, *real, crop, g);
     Add(out.ghosts, glare.xyz);
     out.glare_paths = glare.paths, out.glare_landed = glare.landed, out.glare_paths_asked = g.paths;
