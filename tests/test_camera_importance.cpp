@@ -1,7 +1,8 @@
-// The realistic camera from the light's side (Camera::SampleImportance): light traced from an
-// emitting rectangle through the front element and the lens to the film gives the image the
-// camera's own rays give of it (the same lens, the same weights: vignetting, transmittance,
-// the aperture mask), block by block within the two estimates' noise.
+// The cameras from the light's side (Camera::SampleImportance): light traced from an emitting
+// rectangle through the realistic camera's front element and lens (or the pinhole, or a thin
+// lens) to the film gives the image the camera's own rays give of it (the same lens, the same
+// weights: vignetting, transmittance, the aperture mask), block by block within the two
+// estimates' noise.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,14 +20,11 @@ namespace {
 // dgauss, off the axis and cut by the frame's edge.
 constexpr float kHalfW = 0.5f, kHalfH = 0.3f, kCx = 0.55f, kCy = 0.1f, kZ = -3.f;
 
-std::string Scene(const std::string& sensor_extra, int spp, int seed) {
+// `sensor`: the sensor's opening tag and its own properties (the frame, sampler and film follow).
+std::string Scene(const std::string& sensor, int spp, int seed) {
   return fmt::format(R"(<scene version="3.0.0">
   <integrator type="path"><integer name="max_depth" value="1"/></integrator>
-  <sensor type="realistic">
-    <string name="lens" value="dgauss.50mm"/>
-    <float name="fnumber" value="4"/>
-    <float name="focus_distance" value="3"/>
-    {}
+  {}
     <transform name="to_world"><lookat origin="0, 0, 0" target="0, 0, -1" up="0, 1, 0"/></transform>
     <sampler type="independent"><integer name="sample_count" value="{}"/><integer name="seed" value="{}"/></sampler>
     <film type="hdrfilm"><integer name="width" value="48"/><integer name="height" value="32"/><rfilter type="box"/></film>
@@ -36,7 +34,13 @@ std::string Scene(const std::string& sensor_extra, int spp, int seed) {
     <emitter type="area"><spectrum name="radiance" value="1"/></emitter>
   </shape>
 </scene>)",
-                     sensor_extra, spp, seed, kHalfW, kHalfH, kCx, kCy, kZ);
+                     sensor, spp, seed, kHalfW, kHalfH, kCx, kCy, kZ);
+}
+
+// A dgauss at f/4 focused on the rectangle.
+std::string Realistic(const std::string& extra) {
+  return R"(<sensor type="realistic"><string name="lens" value="dgauss.50mm"/><float name="fnumber" value="4"/>
+    <float name="focus_distance" value="3"/>)" + extra;
 }
 
 constexpr int kBlock = 8;  // blocks of 8 x 8 pixels: 6 x 4 of them
@@ -92,10 +96,10 @@ LightBlocks LightTraced(const std::string& xml, int spp) {
   return out;
 }
 
-void ExpectSameImage(const std::string& sensor_extra) {
+void ExpectSameImage(const std::string& sensor) {
   // The camera's image twice (two seeds): their difference measures its noise.
-  const std::vector<double> a = CameraBlocks(Scene(sensor_extra, 64, 1)), b = CameraBlocks(Scene(sensor_extra, 64, 2));
-  const LightBlocks light = LightTraced(Scene(sensor_extra, 1, 1), 160);
+  const std::vector<double> a = CameraBlocks(Scene(sensor, 64, 1)), b = CameraBlocks(Scene(sensor, 64, 2));
+  const LightBlocks light = LightTraced(Scene(sensor, 1, 1), 160);
   ASSERT_GT(light.reached, 1000);
   double diff2 = 0, mean2 = 0, total_camera = 0, total_light = 0, total_var = 0;
   for (int k = 0; k < 24; ++k) {
@@ -109,7 +113,7 @@ void ExpectSameImage(const std::string& sensor_extra) {
   for (int k = 0; k < 24; ++k) {
     const double camera = (a[k] + b[k]) / 2;
     const double se = std::sqrt(light.se[k] * light.se[k] + camera * camera * camera_rel * camera_rel);
-    EXPECT_NEAR(light.sum[k], camera, 4 * se + 1e-9) << "block " << k << " " << sensor_extra;
+    EXPECT_NEAR(light.sum[k], camera, 4 * se + 1e-9) << "block " << k << " " << sensor;
     lit += camera > 0;
     total_camera += camera;
     total_light += light.sum[k];
@@ -120,11 +124,22 @@ void ExpectSameImage(const std::string& sensor_extra) {
   EXPECT_LT(4 * std::sqrt(total_var), 0.03 * total_camera);  // a test that can tell a 3% error
 }
 
-TEST(CameraImportance, LightTracedImageMatchesTheCameraRays) { ExpectSameImage(""); }
+TEST(CameraImportance, LightTracedImageMatchesTheCameraRays) { ExpectSameImage(Realistic("")); }
 
 TEST(CameraImportance, FollowsExposureMaskAndOpticalVignetting) {
-  ExpectSameImage(R"(<float name="exposure_scale" value="2"/><string name="vignetting" value="aperture"/>
-    <integer name="blades" value="5"/><string name="coating" value="MgF2"/>)");
+  ExpectSameImage(Realistic(R"(<float name="exposure_scale" value="2"/><string name="vignetting" value="aperture"/>
+    <integer name="blades" value="5"/><string name="coating" value="MgF2"/>)"));
+}
+
+// The ideal cameras from the light's side: the pinhole (the rectangle cut by the frame's
+// edge at a field of 36 degrees), and a thin lens focused in front of it (blurred), round and
+// with five blades.
+TEST(CameraImportance, PinholeAndThinLensLightTracedMatchTheirCameraRays) {
+  ExpectSameImage(R"(<sensor type="perspective"><float name="fov" value="36"/>)");
+  ExpectSameImage(R"(<sensor type="thinlens"><float name="fov" value="36"/><float name="aperture_radius" value="0.08"/>
+    <float name="focus_distance" value="2"/>)");
+  ExpectSameImage(R"(<sensor type="thinlens"><float name="fov" value="36"/><float name="aperture_radius" value="0.08"/>
+    <float name="focus_distance" value="2"/><integer name="blades" value="5"/><float name="blade_rotation" value="20"/>)");
 }
 
 }  // namespace

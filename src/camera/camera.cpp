@@ -59,6 +59,39 @@ std::optional<CameraRay> PerspectiveCamera::GenerateRay(const CameraSample& s, S
   return cr;
 }
 
+std::optional<Vec2f> PerspectiveCamera::FilmPoint(const Vec3f& d) const {
+  if (!(d.z > 0)) return std::nullopt;
+  const float sx = d.x / d.z, sy = d.y / d.z;
+  const Vec2f p((1 - sx / tan_.x) * 0.5f * width_, (1 - sy / tan_.y) * 0.5f * height_);
+  if (!(p.x >= 0 && p.x < width_ && p.y >= 0 && p.y < height_)) return std::nullopt;
+  return p;
+}
+
+std::optional<CameraImportance> PerspectiveCamera::ImportanceThrough(const Vec3f& p, const Vec3f& p_lens,
+                                                                     Vec2f p_film) const {
+  // Camera rays start on the near plane and end on the far one.
+  if (!(p.z >= near_ && p.z <= far_)) return std::nullopt;
+  const Vec3f d = p - p_lens;
+  const float len = Length(d), cos_theta = d.z / len;
+  if (!(cos_theta > 0)) return std::nullopt;
+  CameraImportance out;
+  out.p_film = p_film;
+  out.p_lens = to_world_.Point(p_lens);
+  // The distance in the world (to_world may scale); the angles are the camera's.
+  const Vec3f world = to_world_.Point(p) - out.p_lens;
+  const float r2 = Dot(world, world);
+  const float film_area = 4 * tan_.x * tan_.y;
+  out.weight = SampledSpectrum(1 / (r2 * cos_theta * cos_theta * cos_theta * film_area));
+  return out;
+}
+
+std::optional<CameraImportance> PerspectiveCamera::SampleImportance(const Vec3f& p, Vec2f, SampledWavelengths&) const {
+  const Vec3f p_cam = to_world_.Inverse().Point(p);
+  const std::optional<Vec2f> film = FilmPoint(p_cam);
+  if (!film) return std::nullopt;
+  return ImportanceThrough(p_cam, Vec3f(0.f), *film);
+}
+
 ThinLensCamera::ThinLensCamera(const Transform& to_world, int width, int height, float fov_deg, FovAxis axis,
                                float near_clip, float far_clip, float aperture_radius, float focus_distance, int blades,
                                float blade_rotation_deg)
@@ -81,6 +114,21 @@ std::optional<CameraRay> ThinLensCamera::GenerateRay(const CameraSample& s, Samp
   cr.ray.d = dw / scale;
   cr.ray.tmax = (far_ - near_) / dir.z * scale;
   return cr;
+}
+
+std::optional<CameraImportance> ThinLensCamera::SampleImportance(const Vec3f& p, Vec2f u,
+                                                                 SampledWavelengths& lambda) const {
+  if (aperture_radius_ <= 0) return PerspectiveCamera::SampleImportance(p, u, lambda);
+  const Vec3f p_cam = to_world_.Inverse().Point(p);
+  const Vec2f lens = blades_ >= 3 ? SampleRegularPolygon(blades_, blade_rotation_, u) : SampleUniformDiskConcentric(u);
+  const Vec3f p_lens(lens.x * aperture_radius_, lens.y * aperture_radius_, 0);
+  // Where the ray from the lens point toward p meets the focus plane: the film point looks there.
+  const Vec3f d = p_cam - p_lens;
+  if (!(d.z > 0)) return std::nullopt;
+  const Vec3f p_focus = p_lens + d * (focus_distance_ / d.z);
+  const std::optional<Vec2f> film = FilmPoint(p_focus);
+  if (!film) return std::nullopt;
+  return ImportanceThrough(p_cam, p_lens, *film);
 }
 
 OrthographicCamera::OrthographicCamera(const Transform& to_world, int width, int height, float near_clip, float far_clip)

@@ -80,10 +80,21 @@ class PerspectiveCamera : public Camera {
                     float far_clip);
   std::optional<CameraRay> GenerateRay(const CameraSample& s, SampledWavelengths& lambda) const override;
   bool UsesLensSample() const override { return false; }
+  // The pinhole's importance (u unused): light from p through the pinhole lands where its ray
+  // crosses the film; weight 1 / (r^2 cos^3 theta A), r the distance, theta the ray's angle to
+  // the view axis, A the film's area on the plane at unit distance (the camera rays' weight is
+  // 1: the image is radiance).
+  std::optional<CameraImportance> SampleImportance(const Vec3f& p, Vec2f u, SampledWavelengths& lambda) const override;
 
  protected:
   // Direction in camera space through film point p (not normalised; z = 1).
   Vec3f CameraDirection(Vec2f p_film) const;
+  // The film point whose direction is d (camera space, d.z > 0), if it lies on the film.
+  std::optional<Vec2f> FilmPoint(const Vec3f& d) const;
+  // The importance of light from camera-space point p through camera-space lens point
+  // p_lens (z = 0) landing at film point p_film: the pinhole's weight with the ray from the
+  // lens point (a thin lens's rays from each of its points see the film as the pinhole does).
+  std::optional<CameraImportance> ImportanceThrough(const Vec3f& p, const Vec3f& p_lens, Vec2f p_film) const;
   Vec2f tan_;
   float near_, far_;
 };
@@ -96,6 +107,11 @@ class ThinLensCamera final : public PerspectiveCamera {
                  float far_clip, float aperture_radius, float focus_distance, int blades, float blade_rotation_deg);
   std::optional<CameraRay> GenerateRay(const CameraSample& s, SampledWavelengths& lambda) const override;
   bool UsesLensSample() const override { return aperture_radius_ > 0; }
+  // A lens point chosen uniformly over the aperture (by u); the film point whose rays through
+  // the lens meet on the focus plane where the ray from p through the lens point does; the
+  // pinhole's weight for the ray from the lens point (the aperture's area cancels against the
+  // lens point's density).
+  std::optional<CameraImportance> SampleImportance(const Vec3f& p, Vec2f u, SampledWavelengths& lambda) const override;
 
  private:
   float aperture_radius_, focus_distance_;
