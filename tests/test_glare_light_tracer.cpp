@@ -169,7 +169,11 @@ TEST(GlareLightTracer, GhostsKeepTheReflectionsWithTransmissionOff) {
 
 // A light whose light cannot enter the lens (the sun behind the camera, by far the most
 // powerful light) takes few of the paths once the learning paths have found so: the small lamp
-// in front keeps most of its landings, and its glare is unchanged within the noise.
+// in front keeps most of its landings, its glare is unchanged within the noise, and the noise
+// stays near the lamp's alone (measured 1.4 times; the quarter of the paths still chosen by
+// power is lost). While the learning paths, which chose the lamp once in hundreds with
+// hundreds of times the weight, were kept in the image, it was 2.6 times (5-26 times in a
+// reviewer's scenes); while the lamp's front guide learnt from those paths, 1.9 times.
 TEST(GlareLightTracer, LightsThatCannotReachTheFilmTakeFewPaths) {
   const std::string lamp = R"(<shape type="sphere"><point name="center" x="0.4" y="0.15" z="-3"/>
       <float name="radius" value="0.01"/><bsdf type="diffuse"><rgb name="reflectance" value="0"/></bsdf>
@@ -177,19 +181,45 @@ TEST(GlareLightTracer, LightsThatCannotReachTheFilmTakeFewPaths) {
   const std::string sun_behind = R"(<emitter type="directional"><vector name="direction" x="0" y="0" z="-1"/>
       <spectrum name="irradiance" value="10"/></emitter>
       <shape type="rectangle"><transform name="to_world"><scale x="5" y="5"/><translate z="-4"/></transform></shape>)";
-  auto trace = [](const std::string& content) {
+  auto trace = [](const std::string& content, uint64_t seed) {
     RenderSetup setup = LoadSceneFromString(GlareScene("", content), "glare.xml", {});
     GlareSettings g;
     g.paths = 1 << 19;
     g.max_reflections = 2;
+    g.seed = seed;
     return TraceGlare(*setup.scene, dynamic_cast<const RealisticCamera&>(*setup.camera), {0, 0, 48, 32}, g);
   };
-  const GlareImage alone = trace(lamp), with_sun = trace(lamp + sun_behind);
-  std::printf("lamp alone: %lld landed, total Y %.5g; with the sun behind: %lld landed, total Y %.5g\n",
-              (long long)alone.landed, BlocksOf(alone.xyz).total, (long long)with_sun.landed, BlocksOf(with_sun.xyz).total);
+  // Four seeds: the mean image, and the noise (the blocks' RMS standard deviation over seeds).
+  struct Runs {
+    double landed = 0, total = 0, noise = 0;
+  };
+  auto runs = [&](const std::string& content) {
+    constexpr int kSeeds = 4;
+    std::vector<Blocks> b;
+    Runs r;
+    for (int s = 0; s < kSeeds; ++s) {
+      const GlareImage g = trace(content, uint64_t(s + 1));
+      r.landed += double(g.landed) / kSeeds;
+      b.push_back(BlocksOf(g.xyz));
+      r.total += b.back().total / kSeeds;
+    }
+    double var = 0;
+    for (size_t k = 0; k < b[0].y.size(); ++k) {
+      double mean = 0, v = 0;
+      for (const Blocks& x : b) mean += x.y[k] / kSeeds;
+      for (const Blocks& x : b) v += (x.y[k] - mean) * (x.y[k] - mean) / (kSeeds - 1);
+      var += v / double(b[0].y.size());
+    }
+    r.noise = std::sqrt(var);
+    return r;
+  };
+  const Runs alone = runs(lamp), with_sun = runs(lamp + sun_behind);
+  std::printf("lamp alone: %.0f landed, total Y %.5g, noise %.3g; with the sun behind: %.0f landed, total Y %.5g, noise %.3g\n",
+              alone.landed, alone.total, alone.noise, with_sun.landed, with_sun.total, with_sun.noise);
   ASSERT_GT(alone.landed, 1000);
-  EXPECT_GT(double(with_sun.landed), 0.5 * double(alone.landed));
-  EXPECT_NEAR(BlocksOf(with_sun.xyz).total, BlocksOf(alone.xyz).total, 0.15 * BlocksOf(alone.xyz).total);
+  EXPECT_GT(with_sun.landed, 0.5 * alone.landed);
+  EXPECT_NEAR(with_sun.total, alone.total, 0.1 * alone.total);
+  EXPECT_LT(with_sun.noise, 1.6 * alone.noise);
 }
 
 }  // namespace

@@ -150,7 +150,7 @@ void AddLensLayers(const LensLayers& layers, const ColorSpace& cs, float exposur
     header.push_back({"objektiv:ghosts_traced", layers.ghosts_traced});
     header.push_back({"objektiv:ghosts_culled", layers.ghosts_culled});
     header.push_back({"objektiv:glare_paths", double(layers.glare_paths)});
-    spdlog::info("ghosts: {} bright point{}, {} ghosts traced, {} culled as too dim, {} reach no film; {:.2f} s",
+    spdlog::info("ghosts: {} bright point{}, {} ghosts traced, {} culled as too dim, {} let no light through; {:.2f} s",
                  layers.flare_sources, layers.flare_sources == 1 ? "" : "s", layers.ghosts_traced, layers.ghosts_culled,
                  layers.ghosts_dark, layers.ghost_seconds);
   }

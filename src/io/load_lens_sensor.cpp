@@ -119,7 +119,7 @@ LensEffects ReadLensEffects(const Properties& p, LensModel model) {
   LensEffects e;
   e.ghosts = p.Bool("ghosts", false);
   e.ghost_grid = int(p.IntIn("ghost_grid", 32, 4, 512));
-  e.ghost_cull = p.FloatIn("ghost_cull", 1e-3, 0, 1);
+  e.ghost_cull = p.FloatIn("ghost_cull", 1e-3, 0, 0.5);  // more would leave out most of the ghosts' light
   e.glare_samples = int(p.IntIn("glare_samples", 4, 0, 65536));
   e.wavelengths = int(p.IntIn("flare_wavelengths", 16, 1, 64));
   e.diffraction = p.Choice("diffraction", DiffractionScope::kOff, kDiffractionScopes);

@@ -408,6 +408,26 @@ void AccumulateEdge(Vec2d p, Vec2d q, int width, int rows, double* acc) {
 
 }  // namespace
 
+double FluxWithin(std::span<const FilmTriangle> triangles, Vec2d lo, Vec2d hi) {
+  const double w = hi.x - lo.x, h = hi.y - lo.y;
+  if (!(w > 0 && h > 0)) return 0;
+  double flux = 0;
+  for (const FilmTriangle& t : triangles) {
+    // In units of the rectangle, which is then the unit square: its share is the overlap's area
+    // over its own.
+    auto unit = [&](const Vec2d& p) { return Vec2d((p.x - lo.x) / w, (p.y - lo.y) / h); };
+    const Vec2d a = unit(t.a), b = unit(t.b), c = unit(t.c);
+    const double area = 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
+    if (area > 0) {
+      flux += t.flux * std::min(1.0, OverlapOf(a, b, c, 0, 0).area / area);
+    } else {  // a degenerate triangle (an edge cell's segment or point): where its middle is
+      const Vec2d m = (a + b + c) * (1.0 / 3);
+      if (m.x >= 0 && m.x <= 1 && m.y >= 0 && m.y <= 1) flux += t.flux;
+    }
+  }
+  return flux;
+}
+
 double FrontElementFlux(const LensSystem& lens, const PointSource& source) {
   const double s = lens.surface(0).semi_diameter, area = M_PI * s * s;
   if (source.at_infinity) return area * source.direction.z;

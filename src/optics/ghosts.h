@@ -103,6 +103,10 @@ std::vector<FilmTriangle> DirectBundle(const LensSystem& lens, const PointSource
 // irradiance, as the bundles' flux): what a ghost's share of the light is measured against.
 double FrontElementFlux(const LensSystem& lens, const PointSource& source);
 
+// The flux the triangles carry into the rectangle [lo, hi] of the film (each triangle's flux
+// times the share of its area inside; the irradiance taken uniform over each).
+double FluxWithin(std::span<const FilmTriangle> triangles, Vec2d lo, Vec2d hi);
+
 // Rasterises triangles into an image of irradiance: pixel (x, y) covers film x in [x0 + x w,
 // x0 + (x + 1) w), y likewise with h; each pixel gets the flux that lands on it over its area:
 // the triangle's irradiance integrated exactly over the part of it inside the pixel (the

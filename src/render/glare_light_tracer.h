@@ -14,11 +14,13 @@
 // densities x the walk's weight) splatted into the pixel it lands in, in the film's units
 // (pixel = exposure_scale (4 / pi) irradiance, camera/lens_camera.h). The number of paths is
 // the layer's own: it converges independently of the image's samples. The front element's
-// point and the light are guided: the first eighth of the paths learn, per light, through which
-// parts of the front element light lands, and how much of each light lands; the rest go there
-// more often (with their density in the weight, half of the front points uniform and a quarter
-// of the lights by power: unbiased, and no weight above 2 or 4). A light that cannot reach
-// the film (a sun behind the camera) so takes few paths. Measured on a small sun (front
+// point and the light are guided: the first eighth of the paths learn (the first half of them,
+// chosen by power, how much of each light lands; the second half, choosing lights by that, per
+// light through which parts of the front element its light lands) and are then left out of
+// the image (their choices by power can be poor); the rest go there more often (with
+// their density in the weight, half of the front points uniform and a quarter of the lights
+// by power: unbiased, and no weight above 2 or 4). A light that cannot reach the film (a sun
+// behind the camera) so takes few paths. Measured on a small sun (front
 // guide): at f/11 9x more paths land and the relative RMS error of a pixel falls from 0.99 to
 // 0.48 for the same paths; at f/4 from 0.68 to 0.49 (a tenth uniform did better at f/11,
 // 0.44, but no better than none at f/4).
@@ -49,8 +51,9 @@ struct GlareImage {
   int width = 0, height = 0;  // the crop window's
   std::vector<float> xyz;     // CIE XYZ per pixel, interleaved
   int64_t paths = 0, landed = 0;  // traced (fewer than asked if interrupted), and splatted on the crop window
-  // The median number of paths a pixel got where the image is brighter than 1% of its
-  // brightest pixel (Y): its relative noise there is roughly 1 / sqrt of it. 0 where nothing landed.
+  // The median number of paths a pixel got where the image is brighter than 1% of a bright
+  // pixel (Y; the 99th percentile of the pixels with light): its relative noise there is
+  // roughly 1 / sqrt of it. 0 where nothing landed.
   double median_landings = 0;
   double seconds = 0;
 };

@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <optional>
@@ -15,13 +16,6 @@ namespace {
 
 constexpr double kFlareLambdaMin = 380, kFlareLambdaMax = 780, kRegionLambda = 580;
 
-// The flux a bundle carries to the film.
-double BundleFlux(const std::vector<FilmTriangle>& bundle) {
-  double flux = 0;
-  for (const FilmTriangle& t : bundle) flux += t.flux;
-  return flux;
-}
-
 // A path to trace for one source: a ghost or the direct image, with the region its light
 // gets through (found once, at 580 nm, for all wavelengths).
 struct FlarePath {
@@ -29,44 +23,68 @@ struct FlarePath {
   BundleRegion region;
 };
 
-// Every ghost of `source` whose light reaches the film, with its region and its level: the
-// flux of a coarse bundle at 580 nm (see lens_flare.h: culling).
+// Every ghost of `source` whose light gets through the lens, with its region and its levels:
+// the flux of a coarse bundle (grid 8) that lands on the film rectangle [lo, hi], at each of
+// kCullLambdas (a coating reflects least in the green, more toward blue and red: one
+// wavelength would misjudge coated ghosts).
+constexpr std::array<double, 3> kCullLambdas = {450, 550, 650};
 struct LitGhost {
   FlarePath path;
-  double level = 0;
+  std::array<double, 3> level{};
 };
 std::vector<LitGhost> LitGhosts(const LensSystem& lens, const std::vector<Ghost>& ghosts, const PointSource& source,
-                                const BundleOptions& options) {
+                                const BundleOptions& options, Vec2d lo, Vec2d hi) {
   std::vector<std::optional<BundleRegion>> regions(ghosts.size());
-  std::vector<double> level(ghosts.size(), 0);
+  std::vector<std::array<double, 3>> level(ghosts.size());
   tbb::parallel_for(size_t(0), ghosts.size(), [&](size_t g) {
     regions[g] = GhostRegion(lens, ghosts[g], source, kRegionLambda);
     if (!regions[g]) return;
     BundleOptions coarse = options;
     coarse.grid = 8, coarse.region = &*regions[g];
-    level[g] = BundleFlux(GhostBundle(lens, ghosts[g], source, kRegionLambda, coarse));
+    for (size_t b = 0; b < kCullLambdas.size(); ++b)
+      level[g][b] = FluxWithin(GhostBundle(lens, ghosts[g], source, kCullLambdas[b], coarse), lo, hi);
   });
   std::vector<LitGhost> lit;
   for (size_t g = 0; g < ghosts.size(); ++g)
-    if (level[g] > 0) lit.push_back({{ghosts[g], *regions[g]}, level[g]});
+    if (regions[g]) lit.push_back({{ghosts[g], *regions[g]}, level[g]});
   return lit;
 }
 
-// The level at and below which ghosts are culled: the largest such that the ghosts at or below
-// it hold no more than `share` of the light of all (0 keeps every ghost with light; a ghost
-// without light is never traced).
-double CullLevel(const std::vector<std::vector<LitGhost>>& lit, double share) {
-  std::vector<double> levels;
-  double total = 0;
+// Which ghosts to cull: the dimmest (by their largest share of any wavelength's light on the
+// film), as many as leave out together at most `share` of the ghosts' light on the film at
+// every one of kCullLambdas. Ghosts without light on the film are culled.
+std::vector<std::vector<bool>> Culled(const std::vector<std::vector<LitGhost>>& lit, double share) {
+  std::array<double, 3> total{};
   for (const auto& ghosts : lit)
-    for (const LitGhost& g : ghosts) levels.push_back(g.level), total += g.level;
-  std::sort(levels.begin(), levels.end());
-  double cut = 0, below = 0;
-  for (double level : levels) {
-    if (below + level > share * total) break;
-    below += level, cut = level;
+    for (const LitGhost& g : ghosts)
+      for (size_t b = 0; b < total.size(); ++b) total[b] += g.level[b];
+  struct Entry {
+    size_t source, ghost;
+    double key;
+  };
+  std::vector<Entry> order;
+  std::vector<std::vector<bool>> culled(lit.size());
+  for (size_t s = 0; s < lit.size(); ++s) culled[s].assign(lit[s].size(), false);
+  if (!(share > 0)) return culled;  // every ghost traced
+  for (size_t s = 0; s < lit.size(); ++s) {
+    for (size_t g = 0; g < lit[s].size(); ++g) {
+      double key = 0;
+      for (size_t b = 0; b < total.size(); ++b)
+        if (total[b] > 0) key = std::max(key, lit[s][g].level[b] / total[b]);
+      order.push_back({s, g, key});
+    }
   }
-  return cut;
+  std::sort(order.begin(), order.end(), [](const Entry& a, const Entry& b) { return a.key < b.key; });
+  std::array<double, 3> dropped{};
+  for (const Entry& e : order) {
+    const LitGhost& g = lit[e.source][e.ghost];
+    bool fits = true;
+    for (size_t b = 0; b < total.size(); ++b) fits &= dropped[b] + g.level[b] <= share * total[b];
+    if (!fits) break;
+    for (size_t b = 0; b < total.size(); ++b) dropped[b] += g.level[b];
+    culled[e.source][e.ghost] = true;
+  }
+  return culled;
 }
 
 }  // namespace
@@ -113,21 +131,27 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
     options.stop_transmittance = [mask](double u, double v) { return double(mask->Transmittance(float(u), float(v))); };
   BundleOptions direct_options = options;
   direct_options.lossless = !camera.settings().transmission;
-  // Culling over all the lights at once: each ghost's flux times its light's brightness; the
-  // dimmest ghosts, together less than `cull` of all the ghosts' light, are left out.
+  // Culling over all the lights at once: each ghost's light on the film
+  // times its light's brightness; the dimmest, together at most `cull` of all the ghosts'
+  // light there, are left out.
   std::vector<std::vector<LitGhost>> lit(sources.size());
+  // The whole film, whatever the crop (a crop's ghosts are the full render's there).
+  const Vec2d film_a = origin, film_b(origin.x + camera.width() * pixel.x, origin.y + camera.height() * pixel.y);
+  const Vec2d film_lo(std::min(film_a.x, film_b.x), std::min(film_a.y, film_b.y)),
+      film_hi(std::max(film_a.x, film_b.x), std::max(film_a.y, film_b.y));
   if (settings.ghosts)
     for (size_t s = 0; s < sources.size(); ++s) {
-      lit[s] = LitGhosts(lens, all, sources[s].source, options);
+      lit[s] = LitGhosts(lens, all, sources[s].source, options, film_lo, film_hi);
       out.ghosts_dark += int(all.size() - lit[s].size());
-      const double brightness = sources[s].irradiance_scale * sources[s].visibility * sources[s].Emission(kRegionLambda);
-      for (LitGhost& g : lit[s]) g.level *= brightness;
+      for (LitGhost& g : lit[s])
+        for (size_t b = 0; b < kCullLambdas.size(); ++b)
+          g.level[b] *= sources[s].irradiance_scale * sources[s].visibility * sources[s].Emission(kCullLambdas[b]);
     }
-  const double kept_from = CullLevel(lit, settings.cull);
+  const std::vector<std::vector<bool>> culled = Culled(lit, settings.cull);
   for (size_t s = 0; s < sources.size(); ++s) {
-    for (const LitGhost& g : lit[s]) {
-      if (g.level > kept_from) {
-        paths[s].push_back(g.path);
+    for (size_t g = 0; g < lit[s].size(); ++g) {
+      if (!culled[s][g]) {
+        paths[s].push_back(lit[s][g].path);
         ++out.ghosts_traced;
       } else {
         ++out.ghosts_culled;

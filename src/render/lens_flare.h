@@ -6,11 +6,14 @@
 // each weighted by the light's emission and the CIE matching functions; deterministic (no
 // noise: what is left is the grid's faceting and the wavelength steps).
 //
-// Culling: each ghost is first traced coarsely at 580 nm for its flux (times its light's
-// brightness); the dimmest ghosts of all the lights, together at most `cull` of all the
-// ghosts' light, are left out. (Culling by a ghost's mean irradiance against the brightest
-// ghost's, as before, dropped the wide faint ghosts that make the veil: 35-43% of the ghost
-// light at 1e-3 in a night street, since the brightest ghost is small and focused.)
+// Culling: each ghost is first traced coarsely (grid 8) at 450, 550 and 650 nm for the flux
+// that lands on the film (the whole film, whatever the crop), times its light's brightness
+// there; the dimmest ghosts of all the lights (by their largest share at any of the three), as
+// many as leave out together at most `cull` of the ghosts' light on the film at each of the
+// three, are left out. (Culling by a ghost's mean irradiance against the brightest ghost's, as before, dropped
+// the wide faint ghosts that make the veil: 35-43% of the ghost light at 1e-3 in a night
+// street, since the brightest ghost is small and focused; the flux over the whole film plane,
+// or at 580 nm only, left out more than the share on the film, or of a coated lens's blue.)
 //
 // The aperture mask's grey levels weight every bundle where it crosses the stop; with the
 // camera's transmission off, the lights' own images leave out the lens's losses as the camera
