@@ -239,13 +239,14 @@ GlareImage TraceGlare(const Scene& scene, const RealisticCamera& camera, const C
     }
     // Each path's value was divided by the paths asked for: the paths kept are rescaled to
     // stand for all (each is an estimate of the whole on its own). Once guided paths were
-    // traced after learning from landings, the learning paths are left out: chosen by power, a
-    // small lamp beside a sun behind the camera got one path in 500, each 500 times the
-    // weight, and those fireflies made the image 5-26 times noisier than without the sun.
-    // Otherwise (nothing landed while learning: the rest chose as it did; or interrupted
-    // while learning) every path counts.
+    // traced, the learning paths are left out: chosen by power, a small lamp beside a sun
+    // behind the camera got one path in 500, each 500 times the weight, and those fireflies
+    // made the image 5-26 times noisier than without the sun. (Always, not only where
+    // something landed while learning: kept only where nothing did, they would add zeros
+    // chosen for being zeros, a bias.) Interrupted while learning, the learning paths are all
+    // there is.
     out.paths = first;
-    const bool guided = first > learn && std::any_of(light_landed.begin(), light_landed.end(), [](double v) { return v > 0; });
+    const bool guided = first > learn;
     const int64_t kept = guided ? first - learn : first;
     if (!guided)
       for (size_t i = 0; i < sum.size(); ++i) sum[i] += learning_sum[i];
