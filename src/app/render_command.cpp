@@ -164,7 +164,8 @@ void AddLensLayers(const LensLayers& layers, const ColorSpace& cs, float exposur
   else if (layers.glare_paths > 0)
     spdlog::info("ghosts and glare by light tracing (the part of the ghosts layer beside the bright points' bundles, "
                  "which have no noise): {} paths, {} landed; a pixel of it brighter than 1% of its bright pixels "
-                 "(the 99th percentile) got {:g} of them (median: relative noise about {:.0f}%; raise glare_samples for less); {:.2f} s",
+                 "(the 99th percentile) got {:g} of them (median: relative noise about {:.0f}%; raise glare_samples "
+                 "for less); {:.2f} s",
                  layers.glare_paths, layers.glare_landed, layers.glare_median_landings,
                  layers.glare_median_landings > 0 ? 100 / std::sqrt(layers.glare_median_landings) : 100.0,
                  layers.glare_seconds);

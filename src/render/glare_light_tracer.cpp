@@ -63,8 +63,8 @@ class FrontGuide {
   bool guided_ = false;
 };
 
-// The lights are guided the same way: the learning paths choose them by power and record how
-// much of their light lands; the rest choose them in proportion to a mixture of that record
+// The lights are guided the same way: the first half of the learning paths choose them by
+// power and record how much of their light lands; the later paths choose them in proportion to a mixture of that record
 // (kLearnedLightShare) and the power (the rest: every light keeps a chance, weights stay
 // below 1 / (1 - kLearnedLightShare)). A light whose light cannot reach the film (behind the
 // camera, behind a wall) then takes a quarter of its power share instead of all of it.
@@ -184,10 +184,8 @@ GlareImage TraceGlare(const Scene& scene, const RealisticCamera& camera, const C
   GlareImage out;
   out.width = crop.Width(), out.height = crop.Height();
   const size_t pixels = size_t(out.width) * out.height;
-  // The learning paths' image and the guided paths' apart (below: the learning paths' choices
-  // by power can be poor, and their rare paths carry large weights).
-  std::vector<double> sum(3 * pixels, 0.0), learning_sum(3 * pixels, 0.0);
-  std::vector<uint32_t> landings(pixels, 0), learning_landings(pixels, 0);
+  std::vector<double> sum(3 * pixels, 0.0);
+  std::vector<uint32_t> landings(pixels, 0);
   if (settings.paths > 0 && !scene.lights().empty()) {
     const GlarePaths paths(scene, camera, crop, settings);
     constexpr int64_t kChunk = 1 << 16;
@@ -211,15 +209,18 @@ GlareImage TraceGlare(const Scene& scene, const RealisticCamera& camera, const C
       const bool learning = first < learn;
       const int64_t end = first < learn_lights ? learn_lights : learning ? learn : settings.paths;
       const int64_t count = std::min(kChunk, end - first);
+      // The first guided chunk: the learning paths are left out of the image (below).
+      if (first == learn) {
+        std::fill(sum.begin(), sum.end(), 0.0);
+        std::fill(landings.begin(), landings.end(), 0u);
+      }
       tbb::parallel_for(int64_t(0), count, [&](int64_t k) { landed[k] = paths.Trace(first + k, guide); });
-      std::vector<double>& into = learning ? learning_sum : sum;
-      std::vector<uint32_t>& counts = learning ? learning_landings : landings;
       for (int64_t k = 0; k < count; ++k) {
         const Landing& l = landed[k];
         if (l.pixel == std::numeric_limits<uint32_t>::max()) continue;
         ++out.landed;
-        ++counts[l.pixel];
-        for (int c = 0; c < 3; ++c) into[3 * size_t(l.pixel) + c] += l.xyz[c];
+        ++landings[l.pixel];
+        for (int c = 0; c < 3; ++c) sum[3 * size_t(l.pixel) + c] += l.xyz[c];
         if (learning) {
           // Where on the front element a light's light lands, whatever its chance of being
           // chosen (that changes between the halves).
@@ -246,12 +247,7 @@ GlareImage TraceGlare(const Scene& scene, const RealisticCamera& camera, const C
     // chosen for being zeros, a bias.) Interrupted while learning, the learning paths are all
     // there is.
     out.paths = first;
-    const bool guided = first > learn;
-    const int64_t kept = guided ? first - learn : first;
-    if (!guided)
-      for (size_t i = 0; i < sum.size(); ++i) sum[i] += learning_sum[i];
-    if (!guided)
-      for (size_t i = 0; i < pixels; ++i) landings[i] += learning_landings[i];
+    const int64_t kept = first > learn ? first - learn : first;
     if (kept > 0 && kept < settings.paths)
       for (double& v : sum) v *= double(settings.paths) / double(kept);
   }

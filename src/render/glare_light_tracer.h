@@ -8,8 +8,9 @@
 //
 // Each path: a point of the front element (optics/front_element.h), a light chosen and sampled
 // from that point (Light::SampleLi: the point's solid angle), the shadow ray toward it, one
-// wavelength (visible-importance sampled), the walk through the lens with reflections encouraged (probability at least 1 / the number of interfaces, which sends
-// about one walk in two into reflections on the way through), and, if it lands on the film
+// wavelength (visible-importance sampled), the walk through the lens with reflections
+// encouraged (probability at least 1 / the number of interfaces, which sends about one walk
+// in two into reflections on the way through), and, if it lands on the film
 // with the reflections asked for, its flux (radiance x projected area of the front element /
 // densities x the walk's weight) splatted into the pixel it lands in, in the film's units
 // (pixel = exposure_scale (4 / pi) irradiance, camera/lens_camera.h). The number of paths is

@@ -49,9 +49,8 @@ uint64_t LensEffectsBytes(const Camera& camera, const CropWindow& crop, int thre
   const uint64_t pixels = uint64_t(crop.Width()) * crop.Height();
   // Layers and the sum (XYZ floats), the emitted light (doubles), each thread's two flare images.
   uint64_t bytes = pixels * 12 * 5 + pixels * 24 + uint64_t(std::max(threads, 1)) * pixels * 24;
-  // The light-traced glare: its sums (doubles) and counts, the learning paths' apart, and a
-  // chunk of paths' landings.
-  if (real->effects().ghosts && real->effects().glare_samples > 0) bytes += pixels * 56 + (uint64_t(2) << 20);
+  // The light-traced glare: its sums (doubles), counts and a chunk of paths' landings.
+  if (real->effects().ghosts && real->effects().glare_samples > 0) bytes += pixels * 28 + (uint64_t(1) << 20);
   if (real->effects().diffraction != DiffractionScope::kOff) {
     // The fine pattern (at most 4096^2: input, transform, pattern) and the padded image's FFTs.
     const uint64_t fine = uint64_t(4096) * 4096;
