@@ -79,6 +79,7 @@ done
 seed mesh_obj scenes/*/*.obj fuzz/seeds/mesh_obj/*
 seed mesh_ply scenes/*/*.ply fuzz/seeds/mesh_ply/* fuzz/scene_assets/*.ply
 seed image scenes/*/*.png scenes/*/*.exr fuzz/seeds/image/* fuzz/scene_assets/*.png
+seed render_part fuzz/seeds/render_part/*
 shopt -u nullglob
 
 # --- fuzzing ----------------------------------------------------------------------------

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Objektiv needs to build, test and benchmark; with
 # --sanitizers also clang, its sanitizer and libFuzzer runtimes and llvm-symbolizer (for the
-# sanitizer build, the fuzz harnesses and readable reports).
+# sanitizer build, the fuzz harnesses and readable reports); with --cluster Slurm and munge
+# (for the test that renders on a one-node Slurm cluster: scripts/slurm-check.sh).
 # Idempotent: when every package is present it prints nothing and does nothing.
 set -euo pipefail
 
@@ -13,6 +14,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
 )
 [[ ${1:-} == --sanitizers ]] && packages+=(clang libclang-rt-14-dev llvm)
+[[ ${1:-} == --cluster ]] && packages+=(slurm-wlm munge)
 
 missing=()
 for p in "${packages[@]}"; do

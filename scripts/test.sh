@@ -15,6 +15,7 @@ stage() {  # stage NAME COMMAND...: runs it and prints its wall-clock and CPU ti
 }
 
 stage "Release build" scripts/build.sh
+[[ $(id -u) == 0 ]] && scripts/setup.sh --cluster  # for the test on a one-node Slurm cluster (root only)
 stage "tests" ctest --test-dir build --output-on-failure -j "$jobs"
 
 if [[ ${CI:-} != true && ${OBJEKTIV_SANITIZERS:-0} != 1 ]]; then

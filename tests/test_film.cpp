@@ -59,8 +59,8 @@ class SplatIntegrator final : public Integrator {
       : Integrator(scene), splat_(std::move(splat)), repeat_(repeat) {}
   void RenderBlock(BlockContext& ctx) const override {
     Sampler sampler = ctx.sampler();
-    ctx.ForEachPixel([&](Vec2i pixel) {
-      for (int s = ctx.block().sample_begin; s < ctx.block().sample_end; ++s) {
+    ctx.ForEachPixel([&](Vec2i pixel, SampleRange samples) {
+      for (int s = samples.begin; s < samples.end; ++s) {
         sampler.StartPixelSample(pixel, s);
         Splat sp = splat_(pixel, s, sampler);
         for (int i = 0; i < repeat_; ++i) ctx.AddSplat(sp.p, sp.L, sp.lambda);

@@ -11,5 +11,6 @@ namespace objektiv {
 std::function<int()> AddRenderCommand(CLI::App& app);
 std::function<int()> AddImgtoolCommand(CLI::App& app);
 std::function<int()> AddLensCommand(CLI::App& app);
+std::function<int()> AddMergeCommand(CLI::App& app);
 
 }  // namespace objektiv

@@ -1,5 +1,6 @@
 // `objektiv imgtool diff A B`: image comparison metrics, as pbrt's imgtool diff.
 #include <cmath>
+#include <cstring>
 
 #include "app/commands.h"
 #include "base/error.h"
@@ -11,7 +12,28 @@ namespace {
 struct DiffArgs {
   std::string a, b, metric = "rmse";
   double threshold = -1;
+  bool exact = false;
 };
+
+// --exact: the same channels, and every value of every channel the same bits.
+int ExactDiff(const DiffArgs& args, const Image& a, const Image& b) {
+  if (a.channels != b.channels) {
+    std::printf("the channels differ: %zu against %zu\n", a.channels.size(), b.channels.size());
+    return 1;
+  }
+  size_t differ = 0, first = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i)
+    if (std::memcmp(&a.pixels[i], &b.pixels[i], sizeof(float)) != 0 && differ++ == 0) first = i;
+  if (differ == 0) {
+    std::printf("identical: %zu channels of %dx%d pixels, bit for bit\n", a.channels.size(), a.width, a.height);
+    return 0;
+  }
+  const size_t nc = a.channels.size(), px = first / nc;
+  std::printf("%zu values differ; the first: pixel (%zu, %zu) channel %s, %.9g in %s against %.9g\n", differ,
+              px % size_t(a.width), px / size_t(a.width), a.channels[first % nc].c_str(), a.pixels[first],
+              args.a.c_str(), b.pixels[first]);
+  return 1;
+}
 
 int RunDiff(const DiffArgs& args) {
   Image a = ReadImageAny(args.a), b = ReadImageAny(args.b);
@@ -20,6 +42,7 @@ int RunDiff(const DiffArgs& args) {
                  b.width, b.height);
     return 2;
   }
+  if (args.exact) return ExactDiff(args, a, b);
   // Compare the colour channels both have (RGB, or one grey channel).
   int nc = std::min({a.NumChannels(), b.NumChannels(), 3});
   double se = 0, rel = 0, ae = 0;
@@ -64,6 +87,9 @@ std::function<int()> AddImgtoolCommand(CLI::App& app) {
   diff->add_option("--metric", args->metric, "Metric compared with the threshold: rmse, relmse or mae")
       ->check(CLI::IsMember({"rmse", "relmse", "mae"}))
       ->needs(threshold);
+  diff->add_flag("--exact", args->exact,
+                 "Compare every channel bit for bit instead (exit 1 unless the channels and all values are the same)")
+      ->excludes(threshold);
   return [args] { return RunDiff(*args); };
 }
 

@@ -9,10 +9,11 @@ int main(int argc, char** argv) {
   using namespace objektiv;
   CLI::App app{"Objektiv: a spectral renderer whose camera is a real lens"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "objektiv 0.1.0");
+  app.set_version_flag("--version", "objektiv " OBJEKTIV_VERSION);
   auto render = AddRenderCommand(app);
   auto imgtool = AddImgtoolCommand(app);
   auto lens = AddLensCommand(app);
+  auto merge = AddMergeCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -30,6 +31,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("render")) return render();
     if (app.got_subcommand("imgtool")) return imgtool();
     if (app.got_subcommand("lens")) return lens();
+    if (app.got_subcommand("merge")) return merge();
   } catch (const CLI::ValidationError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;

@@ -1,38 +1,39 @@
-// `objektiv render SCENE.xml`: renders a scene to a linear EXR and a tone-mapped PNG.
+// `objektiv render SCENE.xml`: renders a scene to a linear EXR and a tone-mapped PNG, or a part
+// of a render (a sample range, a crop) to merge later; checkpoints, resuming, time and noise
+// budgets (render/progressive_render.h).
 #include <filesystem>
 #include <limits>
 #include <map>
 #include <thread>
 
 #include <fmt/format.h>
-#include <tbb/global_control.h>
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
+#include "app/render_finish.h"
 #include "base/error.h"
-#include "base/input_files.h"
 #include "base/interrupt.h"
 #include "base/log.h"
 #include "base/output_file.h"
-#include "io/image_io.h"
-#include "io/scene_loader.h"
-#include "render/aov.h"
-#include "render/lens_layers.h"
-#include "render/renderer.h"
+#include "io/render_part.h"
+#include "render/progressive_render.h"
 
 namespace objektiv {
 namespace {
 
 struct RenderArgs {
-  std::string scene, output, stats_json, crop;
+  std::string scene, output, stats_json, crop, spp_range;
   int spp = 0, threads = 0;
   int64_t seed = -1;
   double max_memory_gib = 16;
   std::vector<std::string> defines;
   bool quiet = false, verbose = false;
+  bool part = false, resume = false;
+  double checkpoint = 0, time_limit = 0, noise_target = 0;
 };
 
-void WriteStatsJson(const std::string& path, const RenderStats& s, int threads, const LensLayers& layers) {
+void WriteStatsJson(const std::string& path, const RenderStats& s, int threads, const LensLayers& layers,
+                    const ProgressiveResult& r) {
   nlohmann::ordered_json j = {{"seconds", s.seconds},
                               {"spp", s.spp},
                               {"width", s.width},
@@ -48,7 +49,10 @@ void WriteStatsJson(const std::string& path, const RenderStats& s, int threads, 
                               {"camera_pass_rate", s.CameraPassRate() ? nlohmann::json(*s.CameraPassRate()) : nlohmann::json(nullptr)},
                               {"partial", s.Partial()},
                               {"pixels", s.pixels},
-                              {"pixels_completed", s.pixels_completed}};
+                              {"pixels_completed", s.pixels_completed},
+                              {"render_end", RenderEndName(r.end)},
+                              {"rendering_seconds_in_all", r.elapsed}};
+  if (r.noise >= 0) j["noise"] = r.noise;
   if (!layers.ghosts.empty()) {
     j["ghost_seconds"] = layers.ghost_seconds;
     j["ghosts_traced"] = layers.ghosts_traced;
@@ -62,36 +66,6 @@ void WriteStatsJson(const std::string& path, const RenderStats& s, int threads, 
   WriteTextFileAtomically(path, j.dump(2) + "\n");
 }
 
-// An output file and what it is, for messages.
-struct Output {
-  std::string what, path;
-};
-
-// Bad outputs are bad command-line values (exit status 2), found before the long work.
-// Before the scene is loaded: every output can be written (its directory exists; it is not
-// created, so that a mistyped path fails instead of growing directories) and no two are one file.
-void CheckOutputsWritable(const std::vector<Output>& outputs) {
-  namespace fs = std::filesystem;
-  for (size_t i = 0; i < outputs.size(); ++i) {
-    try {
-      CheckOutputFile(outputs[i].path);
-    } catch (const InputError& e) {
-      throw CLI::ValidationError(fmt::format("{} cannot be written: {}", outputs[i].what, e.what()));
-    }
-    for (size_t j = 0; j < i; ++j)
-      if (fs::weakly_canonical(outputs[i].path) == fs::weakly_canonical(outputs[j].path))
-        throw CLI::ValidationError(fmt::format("{} {} is also {}", outputs[i].what, outputs[i].path, outputs[j].what));
-  }
-}
-
-// After the scene is loaded: no output replaces a file the scene read.
-void CheckOutputsAreNotInputs(const std::vector<Output>& outputs) {
-  for (const Output& o : outputs)
-    if (std::optional<std::string> input = InputFileAt(o.path))
-      throw CLI::ValidationError(
-          fmt::format("{} {} would overwrite {}, a file the scene reads; choose another name", o.what, o.path, *input));
-}
-
 CropWindow ParseCrop(const std::string& text, int width, int height) {
   int v[4];
   if (std::sscanf(text.c_str(), "%d,%d,%d,%d", &v[0], &v[1], &v[2], &v[3]) != 4)
@@ -101,117 +75,22 @@ CropWindow ParseCrop(const std::string& text, int width, int height) {
   return {v[0], v[1], v[2], v[3]};
 }
 
-// The film, once the memory of the render is known to fit the budget: nearly all of it per
-// pixel of the crop window, the film's accumulators, then the linear and the tone-mapped
-// images and the 8-bit PNG made from them, and what the lens effects need (`extra_bytes`).
-Film MakeFilm(const FilmSettings& f, double budget_gib, uint64_t extra_bytes) {
-  const uint64_t bytes = Film::AccumulatorBytes(f.crop) + uint64_t(f.crop.Width()) * f.crop.Height() * (2 * 3 * sizeof(float) + 3) + extra_bytes;
-  const double gib = double(bytes) / double(1 << 30);
-  if (gib > budget_gib)
-    throw ErrorAt(f.loc, "rendering {}x{} pixels needs {:.3g} GiB, more than the memory budget of {:g} GiB (see --max-memory)",
-                  f.crop.Width(), f.crop.Height(), gib, budget_gib);
-  try {
-    return Film(f.width, f.height, f.crop, f.filter);
-  } catch (const std::bad_alloc&) {
-    throw ErrorAt(f.loc, "not enough memory for the {}x{} film ({:.3g} GiB)", f.crop.Width(), f.crop.Height(), gib);
-  }
+// "A:B" with 0 <= A < B <= spp.
+std::pair<int, int> ParseSppRange(const std::string& text, int spp) {
+  int a = 0, b = 0;
+  char end = 0;
+  if (std::sscanf(text.c_str(), "%d:%d%c", &a, &b, &end) != 2)
+    throw CLI::ValidationError("--spp-range", fmt::format("expects A:B (sample indices A to B-1), got '{}'", text));
+  if (a < 0 || a >= b || b > spp)
+    throw CLI::ValidationError("--spp-range", fmt::format("{} is not a range within the render's {} samples per pixel "
+                                                          "(0 <= A < B <= {})", text, spp, spp));
+  return {a, b};
 }
 
-// The lens's layers (render/lens_layers.h) beside the picture's R, G, B: primary.R, .G, .B,
-// ghosts.*, diffraction.* (EXR layers), where the effects are on; what their passes did in
-// the header and the log.
-void AddLensLayers(const LensLayers& layers, const ColorSpace& cs, float exposure, Image& image,
-                   std::vector<ImageAttribute>& header) {
-  if (layers.ghosts.empty() && layers.diffraction.empty()) return;
-  std::vector<std::pair<std::string, const std::vector<float>*>> extra = {{"primary", &layers.primary}};
-  if (!layers.ghosts.empty()) extra.push_back({"ghosts", &layers.ghosts});
-  if (!layers.diffraction.empty()) extra.push_back({"diffraction", &layers.diffraction});
-  const int base = image.NumChannels();
-  Image out(image.width, image.height, image.channels);
-  for (const auto& [name, xyz] : extra)
-    for (const char* c : {"R", "G", "B"}) out.channels.push_back(name + "." + c);
-  out.pixels.assign(size_t(out.width) * out.height * out.channels.size(), 0.f);
-  const size_t stride = out.channels.size();
-  for (size_t i = 0; i < size_t(out.width) * out.height; ++i)
-    for (int c = 0; c < base; ++c) out.pixels[i * stride + c] = image.pixels[i * base + c];
-  for (size_t l = 0; l < extra.size(); ++l) {
-    const Image rgb = XyzToImage(*extra[l].second, layers.width, layers.height, cs, exposure);
-    for (size_t i = 0; i < size_t(out.width) * out.height; ++i)
-      for (int c = 0; c < 3; ++c) out.pixels[i * stride + base + 3 * l + c] = rgb.pixels[i * 3 + c];
-  }
-  image = std::move(out);
-  header.push_back({"objektiv:flare_sources", layers.flare_sources});
-  if (!layers.ghosts.empty() && layers.other_lights > 0 && layers.glare_paths == 0)
-    spdlog::warn("ghosts: {} area or environment light{} of the scene make{} no ghosts with glare_samples 0 (only point, "
-                 "spot and directional lights do, {} here)",
-                 layers.other_lights, layers.other_lights == 1 ? "" : "s", layers.other_lights == 1 ? "s" : "",
-                 layers.flare_sources);
-  if (!layers.ghosts.empty()) {
-    header.push_back({"objektiv:ghosts_traced", layers.ghosts_traced});
-    header.push_back({"objektiv:ghosts_culled", layers.ghosts_culled});
-    header.push_back({"objektiv:glare_paths", double(layers.glare_paths)});
-    spdlog::info("ghosts: {} bright point{}, {} ghosts traced, {} culled as too dim, {} let no light through; {:.2f} s",
-                 layers.flare_sources, layers.flare_sources == 1 ? "" : "s", layers.ghosts_traced, layers.ghosts_culled,
-                 layers.ghosts_dark, layers.ghost_seconds);
-  }
-  if (layers.glare_paths < layers.glare_paths_asked)
-    spdlog::warn("interrupted: ghosts and glare by light tracing from {} of the {} paths asked for (noisier)",
-                 layers.glare_paths, layers.glare_paths_asked);
-  if (layers.glare_paths > 0 && layers.glare_landed == 0)
-    spdlog::info("ghosts and glare by light tracing: {} paths, none landed with two or more reflections (nothing "
-                 "to add); {:.2f} s",
-                 layers.glare_paths, layers.glare_seconds);
-  else if (layers.glare_paths > 0)
-    spdlog::info("ghosts and glare by light tracing (the part of the ghosts layer beside the bright points' bundles, "
-                 "which have no noise): {} paths, {} landed; a pixel of it brighter than 1% of its bright pixels "
-                 "(the 99th percentile) got {:g} of them (median: relative noise about {:.0f}%; raise glare_samples "
-                 "for less); {:.2f} s",
-                 layers.glare_paths, layers.glare_landed, layers.glare_median_landings,
-                 layers.glare_median_landings > 0 ? 100 / std::sqrt(layers.glare_median_landings) : 100.0,
-                 layers.glare_seconds);
-  if (!layers.diffraction.empty()) {
-    header.push_back({"objektiv:diffraction_fnumber", layers.fnumber});
-    header.push_back({"objektiv:diffraction_radius", layers.diffraction_radius});
-    spdlog::info("diffraction at working f/{:.3g}: kernel reaching {} pixels, {:.2f} s", layers.fnumber,
-                 layers.diffraction_radius, layers.diffraction_seconds);
-  }
-}
-
-// The AOVs (render/aov.h) as channels of their own names after the others; albedos from the
-// film's XYZ into the colour space's RGB.
-void AddAovChannels(const AovIntegrator& integrator, const Film& film, const ColorSpace& cs, Image& image) {
-  std::vector<std::string> names;
-  std::vector<size_t> albedos;  // first channel of each
-  for (const Aov& a : integrator.aovs()) {
-    if (a.type == AovType::kAlbedo) albedos.push_back(names.size());
-    for (const std::string& n : a.ChannelNames()) names.push_back(n);
-  }
-  std::vector<float> values = film.Aovs();
-  for (size_t i = 0; i + names.size() <= values.size(); i += names.size())
-    for (size_t a : albedos) {
-      const Vec3f rgb = cs.ToRGB(Vec3f(values[i + a], values[i + a + 1], values[i + a + 2]));
-      values[i + a] = rgb.x, values[i + a + 1] = rgb.y, values[i + a + 2] = rgb.z;
-    }
-  const size_t base = image.channels.size(), n = names.size(), pixels = size_t(image.width) * image.height;
-  Image out(image.width, image.height, image.channels);
-  for (const std::string& name : names) out.channels.push_back(name);
-  out.pixels.assign(pixels * out.channels.size(), 0.f);
-  for (size_t i = 0; i < pixels; ++i) {
-    for (size_t c = 0; c < base; ++c) out.pixels[i * (base + n) + c] = image.pixels[i * base + c];
-    for (size_t c = 0; c < n; ++c) out.pixels[i * (base + n) + base + c] = values[i * n + c];
-  }
-  image = std::move(out);
-}
-
-// The lens passes' times after the render's, for the summary line: " + bright points and
-// ghosts 3.40 s + diffraction 1.15 s".
-std::string LensPassTimes(const LensLayers& layers) {
-  std::string text;
-  if (!layers.ghosts.empty() || !layers.diffraction.empty())
-    text += fmt::format(" + bright points{} {:.2f} s", layers.ghosts.empty() ? "" : " and ghosts", layers.ghost_seconds);
-  if (layers.glare_paths > 0) text += fmt::format(" + glare {:.2f} s", layers.glare_seconds);
-  if (!layers.diffraction.empty()) text += fmt::format(" + diffraction {:.2f} s", layers.diffraction_seconds);
-  return text;
+// EXR counts beyond 32 bits are written as doubles (EXR has no 64-bit integers).
+ImageAttribute::Value Count(uint64_t n) {
+  if (n <= uint64_t(std::numeric_limits<int>::max())) return int(n);
+  return double(n);
 }
 
 int RunRender(const RenderArgs& a) {
@@ -229,86 +108,139 @@ int RunRender(const RenderArgs& a) {
     }
   }
   namespace fs = std::filesystem;
+  const bool part = a.part || !a.spp_range.empty();
+  if (part && (a.time_limit > 0 || a.noise_target > 0))
+    throw CLI::ValidationError("--time-limit and --noise-target end whole renders; a part (--part, --spp-range) takes "
+                               "all the samples of its range, so that the parts add up");
   fs::path exr = a.output.empty() ? fs::path(fs::path(a.scene).stem().string() + ".exr") : fs::path(a.output);
   if (exr.extension().empty()) exr += ".exr";
   if (exr.extension() != ".exr") {
     std::fprintf(stderr, "error: -o must name an .exr file (the PNG is written beside it)\n");
     return 2;
   }
-  fs::path png = fs::path(exr).replace_extension(".png");
-  std::vector<Output> outputs = {{"the EXR", exr.string()}, {"the PNG written beside the EXR", png.string()}};
+  const fs::path png = fs::path(exr).replace_extension(".png");
+  const fs::path checkpoint = fs::path(exr).replace_extension(".checkpoint.exr");
+  std::vector<Output> outputs = {{part ? "the render part" : "the EXR", exr.string()}};
+  if (!part) outputs.push_back({"the PNG written beside the EXR", png.string()});
+  if (a.checkpoint > 0 || a.resume) outputs.push_back({"the checkpoint", checkpoint.string()});
   if (!a.stats_json.empty()) outputs.push_back({"--stats-json", a.stats_json});
   CheckOutputsWritable(outputs);
   RenderSetup setup = LoadScene(a.scene, defines, GlassCatalog::Default());
+  if (a.spp > 0) setup.sampler.spp = a.spp;
+  if (a.seed >= 0) setup.sampler.seed = uint64_t(a.seed);
+  RenderPartInfo info = DescribeRender(a.scene, defines, setup);
   CheckOutputsAreNotInputs(outputs);
   FilmSettings& fs_ = setup.film;
   if (!a.crop.empty()) {
-    try {
-      fs_.crop = ParseCrop(a.crop, fs_.width, fs_.height);
-    } catch (const CLI::ValidationError& e) {
-      std::fprintf(stderr, "error: %s\n", e.what());
-      return 2;
-    }
+    fs_.crop = ParseCrop(a.crop, fs_.width, fs_.height);
+    if (part && !info.render_crop.Contains(fs_.crop))
+      throw CLI::ValidationError("--crop", fmt::format("a part's pixels must lie inside the scene's crop window {},{},{},{}",
+                                                       info.render_crop.x0, info.render_crop.y0, info.render_crop.x1,
+                                                       info.render_crop.y1));
   }
-  if (a.spp > 0) setup.sampler.spp = a.spp;
-  if (a.seed >= 0) setup.sampler.seed = uint64_t(a.seed);
+  const auto [spp_begin, spp_end] =
+      a.spp_range.empty() ? std::pair<int, int>(0, setup.sampler.spp) : ParseSppRange(a.spp_range, setup.sampler.spp);
+  info.crop = fs_.crop;
+  info.spp_begin = spp_begin, info.spp_end = spp_end;
   std::unique_ptr<Sampler> sampler = MakeSampler(setup.sampler);
-  int threads = a.threads > 0 ? a.threads : int(std::thread::hardware_concurrency());
-  const auto* aov_integrator = dynamic_cast<const AovIntegrator*>(setup.integrator.get());
-  // The AOVs: double sums, then float channels in the image (twice: the image is copied).
-  const uint64_t aov_bytes =
-      aov_integrator ? uint64_t(fs_.crop.Width()) * fs_.crop.Height() * aov_integrator->AovChannels() * (8 + 2 * 4) : 0;
-  Film film = MakeFilm(fs_, a.max_memory_gib, LensEffectsBytes(*setup.camera, fs_.crop, threads) + aov_bytes);
-  PrepareFilmForLensEffects(*setup.camera, film);
-  if (aov_integrator) film.KeepAovs(aov_integrator->AovChannels());
-  RenderOptions opts;
-  opts.spp_begin = 0;
-  opts.spp_end = sampler->spp();
-  opts.threads = a.threads;
-  opts.progress = !a.quiet && InteractiveTerminal();
+  const int threads = a.threads > 0 ? a.threads : int(std::thread::hardware_concurrency());
+  Film film = MakeRenderFilm(setup, a.max_memory_gib, threads);
+  film.StartSamplesAt(spp_begin);
 
+  double elapsed_before = 0;
+  if (a.resume && fs::exists(checkpoint)) {
+    RenderPart saved = ReadRenderPart(checkpoint.string());
+    std::string m = info.Mismatch(saved.info);
+    if (m.empty() && !(saved.info.crop == info.crop))
+      m = fmt::format("its pixels are {},{},{},{}", saved.info.crop.x0, saved.info.crop.y0, saved.info.crop.x1,
+                      saved.info.crop.y1);
+    if (m.empty() && (saved.info.spp_begin != spp_begin || saved.info.spp_end != spp_end))
+      m = fmt::format("its samples are {}:{}", saved.info.spp_begin, saved.info.spp_end);
+    if (!m.empty())
+      throw InputError(fmt::format("{}: a checkpoint of another render ({}); remove it to start afresh",
+                                   checkpoint.string(), m));
+    try {
+      film.AddAccumulators(saved.acc);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(fmt::format("{}: {}", checkpoint.string(), e.what()));
+    }
+    elapsed_before = saved.info.seconds;
+    spdlog::info("resuming from {}: {} of {} pixels had all their samples, {:.1f} s rendered before", checkpoint.string(),
+                 saved.info.pixels_completed, uint64_t(fs_.crop.Width()) * fs_.crop.Height(), elapsed_before);
+  } else if (a.resume) {
+    spdlog::info("no checkpoint {} yet: starting from the first sample", checkpoint.string());
+  }
+  // The film as a part or a checkpoint: its own image and its sums.
+  auto write_part = [&](const std::string& path, bool is_checkpoint, double seconds) {
+    RenderPartInfo i = info;
+    i.checkpoint = is_checkpoint;
+    i.seconds = seconds;
+    for (int y = fs_.crop.y0; y < fs_.crop.y1; ++y)
+      for (int x = fs_.crop.x0; x < fs_.crop.x1; ++x) i.pixels_completed += film.NextSample(Vec2i(x, y)) >= spp_end;
+    WriteRenderPart(path, film.ToImage(*fs_.color_space, fs_.exposure), film.Accumulators(), i);
+  };
+
+  ProgressiveOptions po;
+  po.render.spp_begin = spp_begin;
+  po.render.spp_end = spp_end;
+  po.render.threads = a.threads;
+  po.render.progress = !a.quiet && InteractiveTerminal();
+  po.elapsed_before = elapsed_before;
+  po.time_limit_seconds = a.time_limit;
+  po.noise_target = a.noise_target;
+  if (a.checkpoint > 0) {
+    po.checkpoint_seconds = a.checkpoint;
+    po.checkpoint = [&](double seconds) {
+      write_part(checkpoint.string(), true, seconds);
+      spdlog::debug("checkpoint written: {}", checkpoint.string());
+    };
+  }
   // From here on Ctrl-C (or SIGTERM) stops the render and the pixels done so far are written.
   InstallInterruptHandlers();
-  opts.stop = &InterruptRequested();
-  spdlog::info("rendering {}x{} pixels at {} spp on {} threads", fs_.crop.Width(), fs_.crop.Height(), opts.spp_end,
-               threads);
-  RenderStats stats = Render(*setup.camera, *setup.integrator, *sampler, film, opts);
+  po.interrupt = &InterruptRequested();
+  spdlog::info("rendering {}x{} pixels, samples {}:{} of {}, on {} threads{}", fs_.crop.Width(), fs_.crop.Height(),
+               spp_begin, spp_end, setup.sampler.spp, threads, part ? " (a part)" : "");
+  const ProgressiveResult result = RenderProgressive(*setup.camera, *setup.integrator, *sampler, film, po);
+  const RenderStats& stats = result.stats;
+  const bool interrupted = result.end == RenderEnd::kInterrupted;
 
-  // A partial image holds the pixels that got all their samples; the others are zero. EXR has
-  // no 64-bit integers: counts beyond 32 bits are written as doubles.
-  auto count = [](uint64_t n) -> ImageAttribute::Value {
-    if (n <= uint64_t(std::numeric_limits<int>::max())) return int(n);
-    return double(n);
-  };
-  std::vector<ImageAttribute> header = {{"objektiv:partial", int(stats.Partial())},
-                                        {"objektiv:pixels", count(stats.pixels)},
-                                        {"objektiv:pixels_completed", count(stats.pixels_completed)}};
   LensLayers layers;
-  {
-    std::unique_ptr<tbb::global_control> limit;  // the passes after the render keep to --threads too
-    if (a.threads > 0) limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, a.threads);
-    layers = ComposeLensLayers(*setup.scene, *setup.camera, film, setup.sampler.seed);
+  if (part) {
+    write_part(exr.string(), false, result.elapsed);
+    if (LensEffectsBytes(*setup.camera, fs_.crop, 1) > 0)
+      spdlog::info("the lens's ghosts, glare and diffraction are passes over the whole image: `objektiv merge` adds them");
+  } else {
+    std::vector<ImageAttribute> header = {{"objektiv:partial", int(interrupted)},
+                                          {"objektiv:pixels", Count(stats.pixels)},
+                                          {"objektiv:pixels_completed", Count(stats.pixels_completed)},
+                                          {"objektiv:render_end", std::string(RenderEndName(result.end))},
+                                          {"objektiv:samples_per_pixel", film.samples_per_pixel()},
+                                          {"objektiv:seconds", result.elapsed}};
+    if (a.time_limit > 0) header.push_back({"objektiv:time_limit", a.time_limit});
+    if (a.noise_target > 0) header.push_back({"objektiv:noise_target", a.noise_target});
+    if (result.noise >= 0) header.push_back({"objektiv:noise", result.noise});
+    layers = WriteRenderImages(setup, film, a.threads, exr.string(), png.string(), header);
   }
-  Image linear = XyzToImage(layers.Sum(), layers.width, layers.height, *fs_.color_space, fs_.exposure);
-  AddLensLayers(layers, *fs_.color_space, fs_.exposure, linear, header);
-  if (aov_integrator) AddAovChannels(*aov_integrator, film, *setup.film.color_space, linear);
-  WriteExr(exr.string(), linear, header);
-  WritePng(png.string(), ApplyToneMap(linear, fs_.tonemap));
-  if (!a.stats_json.empty()) WriteStatsJson(a.stats_json, stats, threads, layers);
+  if (!interrupted && fs::exists(checkpoint)) fs::remove(checkpoint);
+  if (!a.stats_json.empty()) WriteStatsJson(a.stats_json, stats, threads, layers, result);
   if (!a.quiet)
-    std::printf("%s: %dx%d, %d spp, %.2f s%s, %.3g samples/s, %.2f Mrays/s, %s, NaN %llu, Inf %llu -> %s, %s%s\n",
-                a.scene.c_str(), stats.width, stats.height, stats.spp, stats.seconds, LensPassTimes(layers).c_str(),
-                stats.SamplesPerSecond(),
-                stats.MraysPerSecond(),
+    std::printf("%s: %dx%d, %.4g spp, %.2f s%s, %.3g samples/s, %.2f Mrays/s, %s, NaN %llu, Inf %llu -> %s%s%s\n",
+                a.scene.c_str(), stats.width, stats.height, film.samples_per_pixel(), stats.seconds,
+                LensPassTimes(layers).c_str(), stats.SamplesPerSecond(), stats.MraysPerSecond(),
                 stats.CameraPassRate() ? fmt::format("camera pass rate {:.1f}%", 100 * *stats.CameraPassRate()).c_str()
                                        : "no camera ray traced",
-                (unsigned long long)stats.nan_count,
-                (unsigned long long)stats.inf_count, exr.string().c_str(), png.string().c_str(),
-                stats.Partial() ? " (partial)" : "");
-  if (stats.Partial())
-    spdlog::warn("interrupted: the image is partial, {} of {} pixels rendered (the others are black); {} is marked "
-                 "objektiv:partial = 1",
-                 stats.pixels_completed, stats.pixels, exr.string());
+                (unsigned long long)stats.nan_count, (unsigned long long)stats.inf_count, exr.string().c_str(),
+                part ? "" : (", " + png.string()).c_str(), interrupted ? " (partial)" : "");
+  if (result.end == RenderEnd::kTimeLimit || result.end == RenderEnd::kNoiseTarget)
+    spdlog::info("stopped at the {} after {:.1f} s: {:.4g} samples per pixel of {}{}", RenderEndName(result.end),
+                 result.elapsed, film.samples_per_pixel(), spp_end - spp_begin,
+                 result.noise >= 0 ? fmt::format(", noise {:.3g} (95% of the pixels' relative error below)", result.noise)
+                                   : std::string());
+  if (interrupted)
+    spdlog::warn("interrupted: the image is partial, {} of {} pixels have all their samples; {} is marked "
+                 "objektiv:partial = 1{}",
+                 stats.pixels_completed, stats.pixels, exr.string(),
+                 a.checkpoint > 0 ? fmt::format("; --resume goes on from {}", checkpoint.string()) : std::string());
   if (stats.nan_count || stats.inf_count)
     spdlog::warn("{} NaN and {} Inf radiance samples were dropped", stats.nan_count, stats.inf_count);
   if (stats.skipped_rays)
@@ -331,6 +263,18 @@ std::function<int()> AddRenderCommand(CLI::App& app) {
   cmd->add_option("--stats-json", args->stats_json, "Write render statistics as JSON to this file");
   cmd->add_option("--max-memory", args->max_memory_gib, "Memory budget for the film and the images written, GiB (default 16)")
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--spp-range", args->spp_range,
+                  "Render sample indices A to B-1 of every pixel (A:B) as a part to merge (`objektiv merge`)");
+  cmd->add_flag("--part", args->part, "Write a part to merge (`objektiv merge`) instead of the image: with --crop, a region");
+  cmd->add_option("--checkpoint", args->checkpoint,
+                  "Every so many seconds (and on Ctrl-C), save the render so far to OUTPUT.checkpoint.exr")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--resume", args->resume, "Go on from OUTPUT.checkpoint.exr if it exists (else start afresh)");
+  cmd->add_option("--time-limit", args->time_limit, "Stop rendering after so many seconds (in all, across resumes)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--noise-target", args->noise_target,
+                  "Stop once 95% of the pixels have a relative error below this (e.g. 0.02), or at the spp")
+      ->check(CLI::Range(1e-6, 1.0));
   CLI::Option* quiet = cmd->add_flag("-q,--quiet", args->quiet, "No progress bar, no summary, warnings only");
   cmd->add_flag("-v,--verbose", args->verbose, "Debug logging")->excludes(quiet);
   return [args] { return RunRender(*args); };

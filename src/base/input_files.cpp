@@ -1,8 +1,14 @@
 #include "base/input_files.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <mutex>
+
+#include <fmt/format.h>
+
+#include "base/error.h"
 
 namespace objektiv {
 
@@ -44,6 +50,39 @@ std::optional<std::string> InputFileAt(const std::string& path) {
   for (const auto& [input, given] : Log().files)
     if (fs::equivalent(key, input, ec)) return given;
   return std::nullopt;
+}
+
+std::vector<std::string> InputFiles() {
+  std::lock_guard lock(Log().mutex);
+  std::vector<std::string> out;
+  for (const auto& [canonical, given] : Log().files) out.push_back(canonical.string());
+  return out;
+}
+
+namespace {
+constexpr uint64_t kFnvOffset = 0xcbf29ce484222325ull, kFnvPrime = 0x100000001b3ull;
+
+uint64_t Fnv1a(const char* data, size_t n, uint64_t h) {
+  for (size_t i = 0; i < n; ++i) h = (h ^ static_cast<unsigned char>(data[i])) * kFnvPrime;
+  return h;
+}
+}  // namespace
+
+uint64_t InputFilesContentHash() {
+  std::vector<uint64_t> hashes;
+  std::vector<char> buffer(1 << 16);
+  for (const std::string& path : InputFiles()) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(fmt::format("{}: cannot be read again (to hash the scene's files)", path));
+    uint64_t h = kFnvOffset;
+    while (in) {
+      in.read(buffer.data(), std::streamsize(buffer.size()));
+      h = Fnv1a(buffer.data(), size_t(in.gcount()), h);
+    }
+    hashes.push_back(h);
+  }
+  std::sort(hashes.begin(), hashes.end());
+  return Fnv1a(reinterpret_cast<const char*>(hashes.data()), hashes.size() * sizeof(uint64_t), kFnvOffset);
 }
 
 }  // namespace objektiv

@@ -2,8 +2,10 @@
 // catalogs), by canonical path with symlinks followed, so that no output replaces one of them:
 // every reader of user files records what it opens here, and the output writer asks.
 #pragma once
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace objektiv {
 
@@ -12,5 +14,12 @@ void RecordInputFile(const std::string& path);
 // The recorded input (its path as the reader was given it) that a file written at `path`
 // would replace: the same canonical path, or the same file reached through another name.
 std::optional<std::string> InputFileAt(const std::string& path);
+// Every recorded input, by canonical path (sorted).
+std::vector<std::string> InputFiles();
+// A 64-bit hash of the contents of every recorded input, independent of their paths and of the
+// order they were read in (FNV-1a per file, the files' hashes sorted and hashed again): the
+// same scene with the same files on another machine, or after a copy, hashes the same.
+// Throws InputError naming a file that can no longer be read.
+uint64_t InputFilesContentHash();
 
 }  // namespace objektiv

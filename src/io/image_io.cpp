@@ -149,9 +149,16 @@ void Write(const std::string& path, const Image& image, OIIO::TypeDesc format, c
   OIIO::ImageSpec spec(image.width, image.height, image.NumChannels(), format);
   spec.channelnames = image.channels;
   if (compression) spec.attribute("compression", compression);
-  for (const ImageAttribute& a : attributes)
-    std::visit([&](auto v) { spec.attribute(a.name, OIIO::TypeDesc(OIIO::BaseTypeFromC<decltype(v)>::value), &v); },
-               a.value);
+  for (const ImageAttribute& a : attributes) {
+    if (const std::string* text = std::get_if<std::string>(&a.value)) {
+      spec.attribute(a.name, *text);
+    } else if (const int* i = std::get_if<int>(&a.value)) {
+      spec.attribute(a.name, *i);
+    } else {
+      const double d = std::get<double>(a.value);
+      spec.attribute(a.name, OIIO::TypeDesc::DOUBLE, &d);
+    }
+  }
   WriteFileAtomically(path, [&](const std::string& temp) {
     if (!out->open(temp, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data()) || !out->close())
       throw InputError(fmt::format("{}: cannot write image: {}", path, out->geterror()));

@@ -26,7 +26,7 @@ Image ReadImageAny(const std::string& path);
 
 // A header attribute of an EXR file, e.g. {"objektiv:partial", 1}.
 struct ImageAttribute {
-  using Value = std::variant<int, double>;
+  using Value = std::variant<int, double, std::string>;
   std::string name;
   Value value;
 };

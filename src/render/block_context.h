@@ -14,6 +14,7 @@
 // - AddSplat: a contribution at any film position (a light path reaching the sensor), from any
 //   block at any time (atomic adds; see Film::AddSplat for what is guaranteed).
 #pragma once
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
@@ -33,14 +34,22 @@ struct RenderCounters {
   RayCounts rays;
   CameraRayCount camera;
   uint64_t nan = 0, inf = 0;  // radiance samples and splats dropped
-  uint64_t pixels = 0;        // pixels that got all the samples of their block
+  uint64_t pixels = 0;        // pixels that got the samples of their block
+  uint64_t samples = 0;       // and how many
 };
 
 // A tile of pixels (half-open bounds on the full film, inside the crop window) and the sample
-// indices [sample_begin, sample_end) to take for each of its pixels.
+// indices [sample_begin, sample_end) to take for each of its pixels: those it does not have yet
+// (a pixel of a render stopped and resumed may have them all; see BlockContext::ForEachPixel).
 struct PixelBlock {
   Vec2i p0, p1;
   int sample_begin = 0, sample_end = 0;
+};
+
+// The sample indices [begin, end) a pixel takes in its block.
+struct SampleRange {
+  int begin = 0, end = 0;
+  int size() const { return end - begin; }
 };
 
 class BlockContext {
@@ -56,16 +65,24 @@ class BlockContext {
   // The film's reconstruction filter: camera samples are placed by Filter::Sample.
   const Filter& filter() const { return film_.filter(); }
 
-  // The pixel loop of every integrator: fn(pixel) for the block's pixels in scanline order,
-  // each taking all of the block's samples. Once the render is stopped (Ctrl-C) no pixel is
-  // started any more; the pixels that ran to the end are counted (the partial image's).
+  // The pixel loop of every integrator: fn(pixel, samples) for the block's pixels in scanline
+  // order, `samples` the block's sample indices that the pixel does not have yet (the film
+  // counts each pixel's samples: a resumed render skips what it has), to be taken in full.
+  // Once the render is stopped (Ctrl-C, a checkpoint, a time limit) no pixel is started any
+  // more; a pixel's samples are counted once its fn returns, so a stopped film holds whole
+  // pixels only and goes on from there.
   template <class PixelFn>
   void ForEachPixel(PixelFn&& fn) {
     for (int y = block_.p0.y; y < block_.p1.y; ++y)
       for (int x = block_.p0.x; x < block_.p1.x; ++x) {
         if (Stopped()) return;
-        fn(Vec2i(x, y));
+        const Vec2i pixel(x, y);
+        const SampleRange samples{std::max(block_.sample_begin, film_.NextSample(pixel)), block_.sample_end};
+        if (samples.size() <= 0) continue;
+        fn(pixel, samples);
+        film_.AddSampleCount(pixel, samples.size());
         ++counters_.pixels;
+        counters_.samples += uint64_t(samples.size());
       }
   }
   bool Stopped() const { return stop_ && stop_->load(std::memory_order_relaxed); }

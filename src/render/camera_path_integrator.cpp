@@ -37,16 +37,15 @@ SampledSpectrum CameraPathIntegrator::DirectEmission(const Ray& ray, const std::
 }
 
 void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
-  const PixelBlock& block = ctx.block();
   const Camera& camera = ctx.camera();
   const bool lens_sample = camera.UsesLensSample();
   const bool keep_emitted = ctx.KeepsEmitted();
   const int aov_channels = ctx.AovChannels();
   std::vector<float> aov(size_t(std::max(aov_channels, 0)));
   CameraBatch b(ctx.sampler());
-  ctx.ForEachPixel([&](Vec2i pixel) {
-    for (int s0 = block.sample_begin; s0 < block.sample_end; s0 += kCameraBatch) {
-      const int n = std::min(kCameraBatch, block.sample_end - s0);
+  ctx.ForEachPixel([&](Vec2i pixel, SampleRange samples) {
+    for (int s0 = samples.begin; s0 < samples.end; s0 += kCameraBatch) {
+      const int n = std::min(kCameraBatch, samples.end - s0);
       for (int k = 0; k < n; ++k) {
         Sampler& sk = b.samplers[k];
         sk.StartPixelSample(pixel, s0 + k);

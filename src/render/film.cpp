@@ -1,17 +1,23 @@
 #include "render/film.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
 
 #include "base/cie.h"
 
 namespace objektiv {
 
+namespace {
+constexpr size_t kSplatLocks = 1024;  // pixel i is under lock i % kSplatLocks
+}  // namespace
+
 Film::Film(int width, int height, CropWindow crop, std::shared_ptr<const Filter> filter)
     : width_(width), height_(height), crop_(crop), filter_(std::move(filter)),
       inv_filter_integral_(1 / filter_->Integral()), pixels_(size_t(crop.Width()) * crop.Height()),
-      splat_xyz_(3 * pixels_.size(), 0.0) {}
+      splat_xyz_(3 * pixels_.size()), splat_locks_(new std::mutex[kSplatLocks]), counts_(pixels_.size(), 0) {}
 
 Vec3f SampledToXYZ(const SampledSpectrum& L, const SampledWavelengths& lambda) {
   Vec3f xyz(0.f);
@@ -26,8 +32,9 @@ Vec3f SampledToXYZ(const SampledSpectrum& L, const SampledWavelengths& lambda) {
 void Film::AddSample(Vec2i pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float weight) {
   Vec3f xyz = SampledToXYZ(L, lambda);
   Pixel& px = pixels_[Index(pixel)];
-  for (int c = 0; c < 3; ++c) px.xyz[c] += double(weight) * xyz[c];
-  px.weight += weight;
+  for (int c = 0; c < 3; ++c) px.xyz[c].Add(double(weight) * xyz[c]);
+  px.weight.Add(weight);
+  px.yy.Add(double(weight) * (double(xyz[1]) * xyz[1]));  // a float squared is exact in double
 }
 
 void Film::AddSplat(Vec2f p_film, const SampledSpectrum& L, const SampledWavelengths& lambda) {
@@ -47,27 +54,103 @@ void Film::AddSplat(Vec2f p_film, const SampledSpectrum& L, const SampledWavelen
     for (int x = x0; x <= x1; ++x) {
       float w = filter_->Evaluate(Vec2f(p_film.x - (x + 0.5f), p_film.y - (y + 0.5f))) * inv_filter_integral_;
       if (w == 0) continue;
-      double* sum = &splat_xyz_[3 * Index(Vec2i(x, y))];
-      for (int c = 0; c < 3; ++c) std::atomic_ref<double>(sum[c]).fetch_add(double(w) * xyz[c], std::memory_order_relaxed);
+      const size_t i = Index(Vec2i(x, y));
+      ExactSum* sum = &splat_xyz_[3 * i];
+      std::lock_guard lock(splat_locks_[i % kSplatLocks]);
+      for (int c = 0; c < 3; ++c) sum[c].Add(double(w) * xyz[c]);
     }
 }
 
 void Film::AddEmitted(Vec2i pixel, const SampledSpectrum& Le, const SampledWavelengths& lambda, float weight) {
   if (emitted_xyz_.empty()) return;
   const Vec3f xyz = SampledToXYZ(Le, lambda);
-  double* sum = &emitted_xyz_[3 * Index(pixel)];
-  for (int c = 0; c < 3; ++c) sum[c] += double(weight) * xyz[c];
+  ExactSum* sum = &emitted_xyz_[3 * Index(pixel)];
+  for (int c = 0; c < 3; ++c) sum[c].Add(double(weight) * xyz[c]);
+}
+
+double Film::samples_per_pixel() const {
+  uint64_t total = 0;
+  for (uint32_t n : counts_) total += n;
+  if (counts_.empty()) return 0;
+  // Whole numbers stay whole (a film whose pixels all have n samples divides its splats by n
+  // exactly as n itself).
+  if (total % counts_.size() == 0) return double(total / counts_.size());
+  return double(total) / double(counts_.size());
+}
+
+Film::LuminanceMoments Film::Moments(size_t i) const {
+  const Pixel& px = pixels_[i];
+  const double w = px.weight.Value();
+  if (w == 0) return {counts_[i], 0, 0};
+  const double mean = px.xyz[1].Value() / w;
+  return {counts_[i], mean, std::max(0.0, px.yy.Value() / w - mean * mean)};
+}
+
+// The planes in their order: the pixel's sums, then the optional ones, then the splats.
+FilmAccumulators Film::Accumulators() const {
+  FilmAccumulators a;
+  a.crop = crop_;
+  a.first_sample = first_sample_;
+  a.counts = counts_;
+  a.names = {"X", "Y", "Z", "W", "YY"};
+  if (keeps_emitted()) a.names.insert(a.names.end(), {"emitted.X", "emitted.Y", "emitted.Z"});
+  for (int c = 0; c < aov_channels_; ++c) a.names.push_back(fmt::format("aov.{}", c));
+  if (aov_channels_ > 0) a.names.push_back("aov.W");
+  a.names.insert(a.names.end(), {"splat.X", "splat.Y", "splat.Z"});
+  const size_t n = a.names.size();
+  a.sums.resize(n * pixels_.size());
+  for (size_t i = 0; i < pixels_.size(); ++i) {
+    ExactSum* out = &a.sums[n * i];
+    const Pixel& px = pixels_[i];
+    *out++ = px.xyz[0], *out++ = px.xyz[1], *out++ = px.xyz[2], *out++ = px.weight, *out++ = px.yy;
+    if (keeps_emitted())
+      for (int c = 0; c < 3; ++c) *out++ = emitted_xyz_[3 * i + c];
+    for (int c = 0; c < aov_channels_; ++c) *out++ = aov_sums_[size_t(aov_channels_) * i + c];
+    if (aov_channels_ > 0) *out++ = aov_weights_[i];
+    for (int c = 0; c < 3; ++c) *out++ = splat_xyz_[3 * i + c];
+  }
+  return a;
+}
+
+void Film::AddAccumulators(const FilmAccumulators& a) {
+  const std::vector<std::string> names = Accumulators().names;  // (small films only pay for the copy)
+  if (a.names != names)
+    throw std::invalid_argument(fmt::format("its planes ({}) are not this render's ({})", fmt::join(a.names, ", "),
+                                            fmt::join(names, ", ")));
+  if (!crop_.Contains(a.crop))
+    throw std::invalid_argument(fmt::format("its crop {},{},{},{} is not inside this render's {},{},{},{}", a.crop.x0,
+                                            a.crop.y0, a.crop.x1, a.crop.y1, crop_.x0, crop_.y0, crop_.x1, crop_.y1));
+  const size_t n = names.size(), pixels = size_t(a.crop.Width()) * a.crop.Height();
+  if (a.sums.size() != n * pixels || a.counts.size() != pixels)
+    throw std::invalid_argument("its planes do not have one value per pixel of its crop");
+  for (int y = a.crop.y0; y < a.crop.y1; ++y)
+    for (int x = a.crop.x0; x < a.crop.x1; ++x) {
+      const size_t j = size_t(y - a.crop.y0) * a.crop.Width() + (x - a.crop.x0), i = Index(Vec2i(x, y));
+      const ExactSum* in = &a.sums[n * j];
+      Pixel& px = pixels_[i];
+      for (int c = 0; c < 3; ++c) px.xyz[c].Add(*in++);
+      px.weight.Add(*in++);
+      px.yy.Add(*in++);
+      if (keeps_emitted())
+        for (int c = 0; c < 3; ++c) emitted_xyz_[3 * i + c].Add(*in++);
+      for (int c = 0; c < aov_channels_; ++c) aov_sums_[size_t(aov_channels_) * i + c].Add(*in++);
+      if (aov_channels_ > 0) aov_weights_[i].Add(*in++);
+      for (int c = 0; c < 3; ++c) splat_xyz_[3 * i + c].Add(*in++);
+      counts_[i] += a.counts[j];
+    }
 }
 
 std::vector<float> Film::Xyz() const {
   std::vector<float> out(3 * pixels_.size());
+  const double spp = samples_per_pixel();
   for (size_t i = 0; i < pixels_.size(); ++i) {
     const Pixel& px = pixels_[i];
-    const double* splat = &splat_xyz_[3 * i];
+    const ExactSum* splat = &splat_xyz_[3 * i];
+    const double weight = px.weight.Value();
     for (int c = 0; c < 3; ++c) {
-      double v = px.weight != 0 ? px.xyz[c] / px.weight : 0;
+      double v = weight != 0 ? px.xyz[c].Value() / weight : 0;
       // (Only where splats landed: adding zero would turn a -0 into +0.)
-      if (splat[c] != 0 && samples_per_pixel_ > 0) v += splat[c] / double(samples_per_pixel_);
+      if (!splat[c].IsZero() && spp > 0) v += splat[c].Value() / spp;
       out[3 * i + c] = float(v);
     }
   }
@@ -79,7 +162,8 @@ std::vector<float> Film::EmittedXyz() const {
   if (emitted_xyz_.empty()) return out;
   for (size_t i = 0; i < pixels_.size(); ++i)
     for (int c = 0; c < 3; ++c)
-      if (pixels_[i].weight != 0) out[3 * i + c] = float(emitted_xyz_[3 * i + c] / pixels_[i].weight);
+      if (pixels_[i].weight.Value() != 0)
+        out[3 * i + c] = float(emitted_xyz_[3 * i + c].Value() / pixels_[i].weight.Value());
   return out;
 }
 
@@ -88,8 +172,8 @@ std::vector<float> Film::Aovs() const {
   std::vector<float> out(n * pixels_.size(), 0.f);
   if (n == 0) return out;
   for (size_t i = 0; i < pixels_.size(); ++i)
-    if (aov_weights_[i] != 0)
-      for (size_t c = 0; c < n; ++c) out[i * n + c] = float(aov_sums_[i * n + c] / aov_weights_[i]);
+    if (const double w = aov_weights_[i].Value(); w != 0)
+      for (size_t c = 0; c < n; ++c) out[i * n + c] = float(aov_sums_[i * n + c].Value() / w);
   return out;
 }
 

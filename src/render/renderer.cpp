@@ -4,7 +4,9 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <chrono>
+#include <optional>
 
 #include "base/progress.h"
 
@@ -16,14 +18,19 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
   const int ts = options.tile_size;
   const int tiles_x = (crop.Width() + ts - 1) / ts, tiles_y = (crop.Height() + ts - 1) / ts;
   const int spp = options.spp_end - options.spp_begin;
+  int64_t pixel_samples_left = 0;  // the work: samples the pixels do not have yet
+  for (int y = crop.y0; y < crop.y1; ++y)
+    for (int x = crop.x0; x < crop.x1; ++x)
+      pixel_samples_left += std::max(0, options.spp_end - std::max(options.spp_begin, film.NextSample(Vec2i(x, y))));
 
   std::unique_ptr<tbb::global_control> limit;
   if (options.threads > 0)
     limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, options.threads);
 
   tbb::enumerable_thread_specific<RenderCounters> counters;
-  film.AddSamplesPerPixel(spp);
-  Progress progress("Rendering", int64_t(tiles_x) * tiles_y, options.progress);
+  std::optional<Progress> own_progress;
+  Progress* progress = options.progress_bar;
+  if (!progress) progress = &own_progress.emplace("Rendering", pixel_samples_left, options.progress);
   auto start = std::chrono::steady_clock::now();
   const uint64_t skipped_before = integrator.scene().SkippedRays();
 
@@ -33,11 +40,13 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
     block.p1 = Vec2i(std::min(block.p0.x + ts, crop.x1), std::min(block.p0.y + ts, crop.y1));
     block.sample_begin = options.spp_begin;
     block.sample_end = options.spp_end;
-    BlockContext ctx(block, camera, sampler, film, counters.local(), options.stop);
+    RenderCounters& c = counters.local();
+    const uint64_t before = c.samples;
+    BlockContext ctx(block, camera, sampler, film, c, options.stop);
     integrator.RenderBlock(ctx);
-    if (!ctx.Stopped()) progress.Update(1);
+    progress->Update(int64_t(c.samples - before));
   });
-  progress.Done();
+  if (own_progress) own_progress->Done();
 
   RenderStats stats;
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -46,15 +55,16 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
   stats.height = crop.Height();
   stats.pixels = uint64_t(crop.Width()) * crop.Height();
   stats.skipped_rays = integrator.scene().SkippedRays() - skipped_before;
+  for (int y = crop.y0; y < crop.y1; ++y)
+    for (int x = crop.x0; x < crop.x1; ++x) stats.pixels_completed += film.NextSample(Vec2i(x, y)) >= options.spp_end;
   for (const RenderCounters& c : counters) {
-    stats.pixels_completed += c.pixels;
+    stats.samples += c.samples;
     stats.rays += c.rays.closest + c.rays.shadow;
     stats.camera_rays_traced += c.camera.traced;
     stats.camera_rays_passed += c.camera.passed;
     stats.nan_count += c.nan;
     stats.inf_count += c.inf;
   }
-  stats.samples = uint64_t(spp) * stats.pixels_completed;
   return stats;
 }
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "base/progress.h"
 #include "camera/camera.h"
 #include "render/film.h"
 #include "render/integrator.h"
@@ -19,7 +20,7 @@ struct RenderStats {
   uint64_t samples = 0, rays = 0;
   uint64_t camera_rays_traced = 0, camera_rays_passed = 0;  // through a lens (see CameraRayCount)
   uint64_t nan_count = 0, inf_count = 0;
-  // Pixels of the crop window, and those that got all their samples (fewer when stopped).
+  // Pixels of the crop window, and those that have all their samples (fewer when stopped).
   uint64_t pixels = 0, pixels_completed = 0;
   bool Partial() const { return pixels_completed < pixels; }
   uint64_t skipped_rays = 0;  // rays Embree could not take (see Scene::SkippedRays)
@@ -35,12 +36,16 @@ struct RenderStats {
 };
 
 struct RenderOptions {
-  int spp_begin = 0, spp_end = 0;  // sample index range [begin, end)
-  int threads = 0;                 // 0: all cores
+  // Sample index range [begin, end): each pixel takes those of its indices it does not have
+  // yet (Film::NextSample on), so that rendering a range again after a stop goes on where it
+  // stopped, and ranges rendered one after another add up.
+  int spp_begin = 0, spp_end = 0;
+  int threads = 0;  // 0: all cores
   bool progress = false;
+  Progress* progress_bar = nullptr;  // updated with the pixel samples taken, if given (else one of its own)
   int tile_size = 16;
   // When this turns true, no pixel is started any more: each thread finishes the pixel it is on
-  // (all its samples), the others keep no samples at all (zero on the film).
+  // (all its samples); the pixels not started keep what they had.
   const std::atomic<bool>* stop = nullptr;
 };
 
