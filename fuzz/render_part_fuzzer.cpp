@@ -26,6 +26,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     } catch (const std::invalid_argument&) {
       return;
     }
+    AddRenderPart(path, film);  // the strip by strip reader, as merge uses it
     film.Xyz();
     film.samples_per_pixel();
   });

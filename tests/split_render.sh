@@ -2,7 +2,7 @@
 # Command-line tests of split renders (render --spp-range / --part, merge), checkpoints and
 # resuming, and the time budget.
 # Usage: split_render.sh CASE OBJEKTIV SOURCE_DIR WORK_DIR IINFO
-#   CASE: merge | merge-errors | kill-resume | budgets
+#   CASE: merge | merge-errors | kill-resume | budgets | bad-values | interrupt-lens-passes
 set -uo pipefail
 case_name=$1 obj=$2 src=$3 work=$4 iinfo=$5
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
@@ -53,7 +53,7 @@ merge-errors)
   "$obj" render "$cornell" "${d[@]}" -q --spp-range 4:8 -o b3.exr || fail "part b3"
   "$obj" render "$cornell" -D res=24 --spp 8 -D max_depth=3 -q --spp-range 3:8 -o other.exr || fail "part other"
   "$obj" render "$cornell" "${d[@]}" -q -o plain.exr || fail "plain render"
-  expect 1 "samples 3:8 of pixel (0, 0) are in none of the parts" "$obj" merge a.exr -o m.exr
+  expect 1 "samples 3:8 of pixel (0, 0) are in none of the parts (it has samples 0:3 from a.exr)" "$obj" merge a.exr -o m.exr
   expect 1 "both hold samples of pixel (0, 0)" "$obj" merge a.exr b.exr b2.exr -o m.exr
   expect 1 "samples 3:4 of pixel (0, 0) are in none of the parts" "$obj" merge a.exr b3.exr -o m.exr
   expect 1 "parts of different renders: -D values" "$obj" merge a.exr other.exr -o m.exr
@@ -91,6 +91,11 @@ kill-resume)
   cornell=$src/scenes/cornell-box/cornell-box.xml
   d=(-D res=96 --spp 512 --threads 2)
   "$obj" render "$cornell" "${d[@]}" -q -o reference.exr || fail "the reference render"
+  # A temporary of a killed process (its pid no longer runs) and one of a live process.
+  host=$(hostname | tr -- '-/' '__')
+  sleep 0 & dead=$!
+  wait $dead
+  touch ".out.checkpoint.exr.$host-$dead-0.tmp" ".out.checkpoint.exr.$host-$$-0.tmp"
   kills=0
   for round in 1 2 3 4 5 6; do
     "$obj" render "$cornell" "${d[@]}" --checkpoint 0.1 --resume -o out.exr > "log$round.txt" 2>&1 &
@@ -109,6 +114,11 @@ kill-resume)
     grep -q resuming last.txt || fail "the last run did not resume: $(cat last.txt)"
   fi
   [ ! -e out.checkpoint.exr ] || fail "the checkpoint was left behind"
+  # Temporaries of checkpoints killed while being written are removed by the next run; a live
+  # process's are not.
+  [ -e ".out.checkpoint.exr.$host-$$-0.tmp" ] || fail "a live process's temporary was removed"
+  rm ".out.checkpoint.exr.$host-$$-0.tmp"
+  ! ls -A | grep -q '\.tmp$' || fail "temporary files left: $(ls -A)"
   echo "killed $kills times"
   same out.exr reference.exr
   ;;
@@ -124,6 +134,55 @@ budgets)
   grep -q "stopped at the noise target" log.txt || fail "no word of the noise target: $(cat log.txt)"
   "$iinfo" -v noisy.exr > header.txt || fail "iinfo"
   grep -q 'objektiv:render_end: "noise target"' header.txt || fail "header: $(cat header.txt)"
+  # A limit shorter than the first pass: every pixel still gets a sample.
+  "$obj" render "$cornell" -D res=64 --spp 64 --time-limit 0.001 -o short.exr > log.txt 2>&1 || fail "short limit"
+  "$iinfo" -v short.exr > header.txt || fail "iinfo"
+  grep -q 'objektiv:samples_per_pixel: 1$' header.txt || fail "not one sample per pixel: $(cat header.txt)"
+  ;;
+bad-values)
+  cornell=$src/scenes/cornell-box/cornell-box.xml
+  d=(-D res=8 --spp 4 -q)
+  for v in nan inf -1 0 1e400 abc; do
+    expect 2 "--time-limit" "$obj" render "$cornell" "${d[@]}" --time-limit "$v" -o x.exr
+    expect 2 "--checkpoint" "$obj" render "$cornell" "${d[@]}" --checkpoint "$v" -o x.exr
+    expect 2 "--noise-target" "$obj" render "$cornell" "${d[@]}" --noise-target "$v" -o x.exr
+  done
+  expect 2 "--noise-target" "$obj" render "$cornell" "${d[@]}" --noise-target 1.5 -o x.exr
+  for v in "" " 0:4" "0:+4" "0:4 " "0:4:8" "1:1" "3:2" "0:5" "-1:3"; do
+    expect 2 "--spp-range" "$obj" render "$cornell" "${d[@]}" --spp-range "$v" -o x.exr
+  done
+  for v in "" "0,0,4,4,junk" "0,0,4" " 0,0,4,4" "-1,0,4,4" "0,0,9,4"; do
+    expect 2 "--crop" "$obj" render "$cornell" "${d[@]}" --crop "$v" -o x.exr
+  done
+  for v in -1 18446744073709551616 1.5 ""; do
+    expect 2 "--seed" "$obj" render "$cornell" "${d[@]}" --seed "$v" -o x.exr
+  done
+  [ ! -e x.exr ] || fail "a bad value rendered"
+  # The largest seed is kept whole.
+  "$obj" render "$cornell" "${d[@]}" --seed 18446744073709551615 --spp-range 0:4 -o big-seed.exr || fail "largest seed"
+  "$iinfo" -v big-seed.exr | grep -q 'objektiv:seed: "18446744073709551615"' || fail "seed: $("$iinfo" -v big-seed.exr)"
+  expect 2 "--scene" "$obj" merge big-seed.exr --scene nowhere.xml -o m.exr
+  ;;
+interrupt-lens-passes)
+  # Ctrl-C in the lens's passes, after every sample: the checkpoint (written before them) stays,
+  # the image is marked partial, and --resume finishes without sampling again.
+  scene=$src/tests/data/glare-interrupt.xml
+  set -m
+  "$obj" render "$scene" -v --checkpoint 100 -o lens.exr > out.txt 2> err.txt &
+  pid=$!
+  for _ in $(seq 1200); do grep -q "ghosts and glare by light tracing" err.txt && break; sleep 0.1; done
+  grep -q "ghosts and glare by light tracing" err.txt || fail "the glare pass did not start: $(cat err.txt)"
+  kill -INT $pid
+  wait $pid
+  rc=$?
+  [ "$rc" = 130 ] || fail "exit $rc, expected 130: $(cat err.txt)"
+  [ -e lens.checkpoint.exr ] || fail "no checkpoint kept: $(ls; cat err.txt)"
+  grep -q "interrupted in the lens's passes" err.txt || fail "no word of it: $(cat err.txt)"
+  "$iinfo" -v lens.exr > header.txt || fail "iinfo"
+  grep -q 'objektiv:partial: 1' header.txt || fail "not marked partial: $(cat header.txt)"
+  grep -q 'objektiv:render_end: "interrupted"' header.txt || fail "render_end: $(cat header.txt)"
+  "$obj" render "$scene" -D glare=1 --resume -o lens.exr > out.txt 2> err.txt && fail "resumed with other values"
+  grep -q "a checkpoint of another render" err.txt || fail "$(cat err.txt)"
   ;;
 *) fail "no case $case_name" ;;
 esac

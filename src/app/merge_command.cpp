@@ -44,7 +44,7 @@ int RunMerge(const MergeArgs& a) {
   CheckPartsMakeOneRender(a.parts, infos);
   const RenderPartInfo& first = infos[0];
   const std::string scene = a.scene.empty() ? first.scene : a.scene;
-  if (!fs::exists(scene))
+  if (a.scene.empty() && !fs::exists(scene))
     throw InputError(fmt::format("{}: the scene of the parts (as {} names it) is not there; give its path with --scene",
                                  scene, a.parts[0]));
   const std::map<std::string, std::string> defines = DefinesFromJson(first.defines, a.parts[0]);
@@ -54,7 +54,8 @@ int RunMerge(const MergeArgs& a) {
   const RenderPartInfo here = DescribeRender(scene, defines, setup);
   if (here.scene_hash != first.scene_hash)
     throw InputError(fmt::format("{}: its files are not those the parts were rendered from (contents hash {} against {} "
-                                 "in {})", scene, here.scene_hash, first.scene_hash, a.parts[0]));
+                                 "in {}); changed: {}", scene, here.scene_hash, first.scene_hash, a.parts[0],
+                                 here.ChangedInputs(first)));
   if (const std::string m = here.Mismatch(first); !m.empty())
     throw InputError(fmt::format("{}: the scene loads otherwise than for the parts: {}", scene, m));
   for (const std::string& p : a.parts) RecordInputFile(p);  // (after the hash: the scene's files only)
@@ -62,14 +63,7 @@ int RunMerge(const MergeArgs& a) {
 
   setup.film.crop = first.render_crop;
   Film film = MakeRenderFilm(setup, a.max_memory_gib, a.threads);
-  for (const std::string& p : a.parts) {
-    const RenderPart part = ReadRenderPart(p);
-    try {
-      film.AddAccumulators(part.acc);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(fmt::format("{}: {}", p, e.what()));
-    }
-  }
+  for (const std::string& p : a.parts) AddRenderPart(p, film);
   const CropWindow& crop = setup.film.crop;
   const int pixels = crop.Width() * crop.Height();
   double seconds = 0;
@@ -99,7 +93,7 @@ std::function<int()> AddMergeCommand(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args->output, "The merged EXR (the PNG goes beside it)")->required();
-  cmd->add_option("--scene", args->scene, "The scene, where it is not at the path the parts name");
+  cmd->add_option("--scene", args->scene, "The scene, where it is not at the path the parts name")->check(CLI::ExistingFile);
   cmd->add_option("--threads", args->threads, "Worker threads for the lens's passes (default: all cores)")
       ->check(CLI::Range(1, 4096));
   cmd->add_option("--max-memory", args->max_memory_gib, "Memory budget for the film and the images written, GiB (default 16)")

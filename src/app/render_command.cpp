@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "app/cli_values.h"
 #include "app/commands.h"
 #include "app/render_finish.h"
 #include "base/error.h"
@@ -22,9 +23,9 @@ namespace objektiv {
 namespace {
 
 struct RenderArgs {
-  std::string scene, output, stats_json, crop, spp_range;
+  std::string scene, output, stats_json, crop, spp_range, seed;
+  bool crop_given = false, spp_range_given = false;
   int spp = 0, threads = 0;
-  int64_t seed = -1;
   double max_memory_gib = 16;
   std::vector<std::string> defines;
   bool quiet = false, verbose = false;
@@ -67,21 +68,20 @@ void WriteStatsJson(const std::string& path, const RenderStats& s, int threads, 
 }
 
 CropWindow ParseCrop(const std::string& text, int width, int height) {
-  int v[4];
-  if (std::sscanf(text.c_str(), "%d,%d,%d,%d", &v[0], &v[1], &v[2], &v[3]) != 4)
-    throw CLI::ValidationError("--crop", "expects x0,y0,x1,y1 (pixels, half-open)");
-  if (v[0] < 0 || v[1] < 0 || v[2] > width || v[3] > height || v[0] >= v[2] || v[1] >= v[3])
+  const std::optional<std::vector<int>> v = ParseCounts(text, ',', 4);
+  if (!v) throw CLI::ValidationError("--crop", fmt::format("expects x0,y0,x1,y1 (pixels, half-open), got '{}'", text));
+  const int x0 = (*v)[0], y0 = (*v)[1], x1 = (*v)[2], y1 = (*v)[3];
+  if (x1 > width || y1 > height || x0 >= x1 || y0 >= y1)
     throw CLI::ValidationError("--crop", fmt::format("{} is not inside the {}x{} film with x0 < x1, y0 < y1", text, width, height));
-  return {v[0], v[1], v[2], v[3]};
+  return {x0, y0, x1, y1};
 }
 
 // "A:B" with 0 <= A < B <= spp.
 std::pair<int, int> ParseSppRange(const std::string& text, int spp) {
-  int a = 0, b = 0;
-  char end = 0;
-  if (std::sscanf(text.c_str(), "%d:%d%c", &a, &b, &end) != 2)
-    throw CLI::ValidationError("--spp-range", fmt::format("expects A:B (sample indices A to B-1), got '{}'", text));
-  if (a < 0 || a >= b || b > spp)
+  const std::optional<std::vector<int>> v = ParseCounts(text, ':', 2);
+  if (!v) throw CLI::ValidationError("--spp-range", fmt::format("expects A:B (sample indices A to B-1), got '{}'", text));
+  const int a = (*v)[0], b = (*v)[1];
+  if (a >= b || b > spp)
     throw CLI::ValidationError("--spp-range", fmt::format("{} is not a range within the render's {} samples per pixel "
                                                           "(0 <= A < B <= {})", text, spp, spp));
   return {a, b};
@@ -108,7 +108,7 @@ int RunRender(const RenderArgs& a) {
     }
   }
   namespace fs = std::filesystem;
-  const bool part = a.part || !a.spp_range.empty();
+  const bool part = a.part || a.spp_range_given;
   if (part && (a.time_limit > 0 || a.noise_target > 0))
     throw CLI::ValidationError("--time-limit and --noise-target end whole renders; a part (--part, --spp-range) takes "
                                "all the samples of its range, so that the parts add up");
@@ -127,19 +127,20 @@ int RunRender(const RenderArgs& a) {
   CheckOutputsWritable(outputs);
   RenderSetup setup = LoadScene(a.scene, defines, GlassCatalog::Default());
   if (a.spp > 0) setup.sampler.spp = a.spp;
-  if (a.seed >= 0) setup.sampler.seed = uint64_t(a.seed);
+  if (!a.seed.empty()) setup.sampler.seed = *ParseUint64(a.seed);  // (checked by its option)
   RenderPartInfo info = DescribeRender(a.scene, defines, setup);
   CheckOutputsAreNotInputs(outputs);
   FilmSettings& fs_ = setup.film;
-  if (!a.crop.empty()) {
+  if (a.crop_given) {
     fs_.crop = ParseCrop(a.crop, fs_.width, fs_.height);
     if (part && !info.render_crop.Contains(fs_.crop))
       throw CLI::ValidationError("--crop", fmt::format("a part's pixels must lie inside the scene's crop window {},{},{},{}",
                                                        info.render_crop.x0, info.render_crop.y0, info.render_crop.x1,
                                                        info.render_crop.y1));
   }
-  const auto [spp_begin, spp_end] =
-      a.spp_range.empty() ? std::pair<int, int>(0, setup.sampler.spp) : ParseSppRange(a.spp_range, setup.sampler.spp);
+  const std::pair<int, int> range =
+      a.spp_range_given ? ParseSppRange(a.spp_range, setup.sampler.spp) : std::pair<int, int>(0, setup.sampler.spp);
+  const int spp_begin = range.first, spp_end = range.second;  // (lambdas below capture them: no structured binding)
   info.crop = fs_.crop;
   info.spp_begin = spp_begin, info.spp_end = spp_end;
   std::unique_ptr<Sampler> sampler = MakeSampler(setup.sampler);
@@ -148,25 +149,22 @@ int RunRender(const RenderArgs& a) {
   film.StartSamplesAt(spp_begin);
 
   double elapsed_before = 0;
+  if (a.checkpoint > 0 || a.resume) RemoveStaleTemporaries(checkpoint.string());
   if (a.resume && fs::exists(checkpoint)) {
-    RenderPart saved = ReadRenderPart(checkpoint.string());
-    std::string m = info.Mismatch(saved.info);
-    if (m.empty() && !(saved.info.crop == info.crop))
-      m = fmt::format("its pixels are {},{},{},{}", saved.info.crop.x0, saved.info.crop.y0, saved.info.crop.x1,
-                      saved.info.crop.y1);
-    if (m.empty() && (saved.info.spp_begin != spp_begin || saved.info.spp_end != spp_end))
-      m = fmt::format("its samples are {}:{}", saved.info.spp_begin, saved.info.spp_end);
+    const RenderPartInfo saved = ReadRenderPartInfo(checkpoint.string());
+    std::string m = info.Mismatch(saved);
+    if (m.empty() && !(saved.crop == info.crop))
+      m = fmt::format("its pixels are {},{},{},{}", saved.crop.x0, saved.crop.y0, saved.crop.x1, saved.crop.y1);
+    if (m.empty() && (saved.spp_begin != spp_begin || saved.spp_end != spp_end))
+      m = fmt::format("its samples are {}:{}", saved.spp_begin, saved.spp_end);
     if (!m.empty())
-      throw InputError(fmt::format("{}: a checkpoint of another render ({}); remove it to start afresh",
-                                   checkpoint.string(), m));
-    try {
-      film.AddAccumulators(saved.acc);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(fmt::format("{}: {}", checkpoint.string(), e.what()));
-    }
-    elapsed_before = saved.info.seconds;
+      throw InputError(fmt::format("{}: a checkpoint of another render ({}{}); remove it to start afresh",
+                                   checkpoint.string(), m,
+                                   saved.scene_hash != info.scene_hash ? "; changed: " + info.ChangedInputs(saved) : ""));
+    AddRenderPart(checkpoint.string(), film);
+    elapsed_before = saved.seconds;
     spdlog::info("resuming from {}: {} of {} pixels had all their samples, {:.1f} s rendered before", checkpoint.string(),
-                 saved.info.pixels_completed, uint64_t(fs_.crop.Width()) * fs_.crop.Height(), elapsed_before);
+                 saved.pixels_completed, uint64_t(fs_.crop.Width()) * fs_.crop.Height(), elapsed_before);
   } else if (a.resume) {
     spdlog::info("no checkpoint {} yet: starting from the first sample", checkpoint.string());
   }
@@ -177,7 +175,7 @@ int RunRender(const RenderArgs& a) {
     i.seconds = seconds;
     for (int y = fs_.crop.y0; y < fs_.crop.y1; ++y)
       for (int x = fs_.crop.x0; x < fs_.crop.x1; ++x) i.pixels_completed += film.NextSample(Vec2i(x, y)) >= spp_end;
-    WriteRenderPart(path, film.ToImage(*fs_.color_space, fs_.exposure), film.Accumulators(), i);
+    WriteRenderPart(path, film.ToImage(*fs_.color_space, fs_.exposure), film, i);
   };
 
   ProgressiveOptions po;
@@ -210,6 +208,9 @@ int RunRender(const RenderArgs& a) {
     if (LensEffectsBytes(*setup.camera, fs_.crop, 1) > 0)
       spdlog::info("the lens's ghosts, glare and diffraction are passes over the whole image: `objektiv merge` adds them");
   } else {
+    // The lens's passes may take long: the samples are saved first, so that Ctrl-C there loses none.
+    if (!interrupted && a.checkpoint > 0 && LensEffectsBytes(*setup.camera, fs_.crop, 1) > 0)
+      write_part(checkpoint.string(), true, result.elapsed);
     std::vector<ImageAttribute> header = {{"objektiv:partial", int(interrupted)},
                                           {"objektiv:pixels", Count(stats.pixels)},
                                           {"objektiv:pixels_completed", Count(stats.pixels_completed)},
@@ -221,7 +222,9 @@ int RunRender(const RenderArgs& a) {
     if (result.noise >= 0) header.push_back({"objektiv:noise", result.noise});
     layers = WriteRenderImages(setup, film, a.threads, exr.string(), png.string(), header);
   }
-  if (!interrupted && fs::exists(checkpoint)) fs::remove(checkpoint);
+  // Ctrl-C during the lens's passes leaves the samples whole but the image not: partial too.
+  const bool stopped = interrupted || InterruptSignal() != 0;
+  if (!stopped && fs::exists(checkpoint)) fs::remove(checkpoint);
   if (!a.stats_json.empty()) WriteStatsJson(a.stats_json, stats, threads, layers, result);
   if (!a.quiet)
     std::printf("%s: %dx%d, %.4g spp, %.2f s%s, %.3g samples/s, %.2f Mrays/s, %s, NaN %llu, Inf %llu -> %s%s%s\n",
@@ -230,17 +233,22 @@ int RunRender(const RenderArgs& a) {
                 stats.CameraPassRate() ? fmt::format("camera pass rate {:.1f}%", 100 * *stats.CameraPassRate()).c_str()
                                        : "no camera ray traced",
                 (unsigned long long)stats.nan_count, (unsigned long long)stats.inf_count, exr.string().c_str(),
-                part ? "" : (", " + png.string()).c_str(), interrupted ? " (partial)" : "");
+                part ? "" : (", " + png.string()).c_str(), stopped ? " (partial)" : "");
   if (result.end == RenderEnd::kTimeLimit || result.end == RenderEnd::kNoiseTarget)
     spdlog::info("stopped at the {} after {:.1f} s: {:.4g} samples per pixel of {}{}", RenderEndName(result.end),
                  result.elapsed, film.samples_per_pixel(), spp_end - spp_begin,
                  result.noise >= 0 ? fmt::format(", noise {:.3g} (95% of the pixels' relative error below)", result.noise)
                                    : std::string());
-  if (interrupted)
+  const std::string resume = a.checkpoint > 0 ? fmt::format("; --resume goes on from {}", checkpoint.string()) : "";
+  if (interrupted && part)
+    spdlog::warn("interrupted: the part is unfinished, {} of {} pixels have all their samples (objektiv:partial = 1 in "
+                 "{}; merge refuses it){}", stats.pixels_completed, stats.pixels, exr.string(), resume);
+  else if (interrupted)
     spdlog::warn("interrupted: the image is partial, {} of {} pixels have all their samples; {} is marked "
-                 "objektiv:partial = 1{}",
-                 stats.pixels_completed, stats.pixels, exr.string(),
-                 a.checkpoint > 0 ? fmt::format("; --resume goes on from {}", checkpoint.string()) : std::string());
+                 "objektiv:partial = 1{}", stats.pixels_completed, stats.pixels, exr.string(), resume);
+  else if (stopped && !part)
+    spdlog::warn("interrupted in the lens's passes: every sample is in, the lens's layers are not whole; {} is marked "
+                 "objektiv:partial = 1{}", exr.string(), resume);
   if (stats.nan_count || stats.inf_count)
     spdlog::warn("{} NaN and {} Inf radiance samples were dropped", stats.nan_count, stats.inf_count);
   if (stats.skipped_rays)
@@ -257,27 +265,35 @@ std::function<int()> AddRenderCommand(CLI::App& app) {
   cmd->add_option("-o,--output", args->output, "Output EXR path (default: SCENE-NAME.exr); the PNG goes beside it");
   cmd->add_option("--spp", args->spp, "Samples per pixel (overrides the scene's sampler)")->check(CLI::Range(1, 1 << 24));
   cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 4096));
-  cmd->add_option("--seed", args->seed, "Sampler seed (overrides the scene's)")->check(CLI::NonNegativeNumber);
-  cmd->add_option("--crop", args->crop, "Render only pixels x0,y0,x1,y1 (half-open) of the film");
+  cmd->add_option("--seed", args->seed, "Sampler seed, 0 to 2^64-1 (overrides the scene's)")
+      ->check(CLI::Validator(
+          [](std::string& t) { return ParseUint64(t) ? std::string() : "'" + t + "' is not a whole number 0 to 2^64-1"; },
+          "0..2^64-1"));
+  CLI::Option* crop = cmd->add_option("--crop", args->crop, "Render only pixels x0,y0,x1,y1 (half-open) of the film");
   cmd->add_option("-D,--define", args->defines, "Set a scene parameter: -D name=value (overrides <default>)");
   cmd->add_option("--stats-json", args->stats_json, "Write render statistics as JSON to this file");
   cmd->add_option("--max-memory", args->max_memory_gib, "Memory budget for the film and the images written, GiB (default 16)")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--spp-range", args->spp_range,
-                  "Render sample indices A to B-1 of every pixel (A:B) as a part to merge (`objektiv merge`)");
+      ->check(FinitePositive());
+  CLI::Option* range = cmd->add_option("--spp-range", args->spp_range,
+                                       "Render sample indices A to B-1 of every pixel (A:B) as a part to merge (`objektiv merge`)");
   cmd->add_flag("--part", args->part, "Write a part to merge (`objektiv merge`) instead of the image: with --crop, a region");
   cmd->add_option("--checkpoint", args->checkpoint,
                   "Every so many seconds (and on Ctrl-C), save the render so far to OUTPUT.checkpoint.exr")
-      ->check(CLI::PositiveNumber);
+      ->check(FinitePositive());
   cmd->add_flag("--resume", args->resume, "Go on from OUTPUT.checkpoint.exr if it exists (else start afresh)");
-  cmd->add_option("--time-limit", args->time_limit, "Stop rendering after so many seconds (in all, across resumes)")
-      ->check(CLI::PositiveNumber);
+  cmd->add_option("--time-limit", args->time_limit,
+                  "Stop rendering after so many seconds (in all, across resumes; every pixel gets at least one sample)")
+      ->check(FinitePositive());
   cmd->add_option("--noise-target", args->noise_target,
                   "Stop once 95% of the pixels have a relative error below this (e.g. 0.02), or at the spp")
-      ->check(CLI::Range(1e-6, 1.0));
+      ->check(FinitePositive(1.0));
   CLI::Option* quiet = cmd->add_flag("-q,--quiet", args->quiet, "No progress bar, no summary, warnings only");
   cmd->add_flag("-v,--verbose", args->verbose, "Debug logging")->excludes(quiet);
-  return [args] { return RunRender(*args); };
+  return [args, crop, range] {
+    args->crop_given = crop->count() > 0;
+    args->spp_range_given = range->count() > 0;
+    return RunRender(*args);
+  };
 }
 
 }  // namespace objektiv

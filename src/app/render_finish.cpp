@@ -9,6 +9,7 @@
 
 #include "base/error.h"
 #include "base/input_files.h"
+#include "base/interrupt.h"
 #include "base/output_file.h"
 #include "io/tonemap.h"
 #include "render/aov.h"
@@ -139,7 +140,7 @@ void CheckOutputsAreNotInputs(const std::vector<Output>& outputs, const char* re
   for (const Output& o : outputs)
     if (std::optional<std::string> input = InputFileAt(o.path))
       throw CLI::ValidationError(
-          fmt::format("{} {} would overwrite {}, a file {} reads; choose another name", o.what, o.path, *input, read_by));
+          fmt::format("{} ({}) would overwrite {}, a file {} reads; choose another name", o.what, o.path, *input, read_by));
 }
 
 Film MakeRenderFilm(const RenderSetup& setup, double budget_gib, int threads) {
@@ -162,6 +163,12 @@ LensLayers WriteRenderImages(const RenderSetup& setup, const Film& film, int thr
     std::unique_ptr<tbb::global_control> limit;  // the passes after the render keep to --threads too
     if (threads > 0) limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
     layers = ComposeLensLayers(*setup.scene, *setup.camera, film, setup.sampler.seed);
+  }
+  if (InterruptRequested()) {  // Ctrl-C in the lens's passes: their layers are not whole
+    for (ImageAttribute& h : header) {
+      if (h.name == "objektiv:partial") h.value = 1;
+      if (h.name == "objektiv:render_end") h.value = std::string("interrupted");
+    }
   }
   Image linear = XyzToImage(layers.Sum(), layers.width, layers.height, *fs.color_space, fs.exposure);
   AddLensLayers(layers, *fs.color_space, fs.exposure, linear, header);
@@ -189,7 +196,14 @@ RenderPartInfo DescribeRender(const std::string& scene, const std::map<std::stri
   i.version = OBJEKTIV_VERSION;
   std::error_code ec;
   i.scene = std::filesystem::absolute(scene, ec).lexically_normal().string();
-  i.scene_hash = fmt::format("{:016x}", InputFilesContentHash());
+  const auto files = InputFilesContentHashes();
+  i.scene_hash = fmt::format("{:016x}", CombinedContentHash(files));
+  const std::filesystem::path folder = std::filesystem::path(i.scene).parent_path();
+  for (const auto& [path, hash] : files) {
+    const std::filesystem::path relative = std::filesystem::path(path).lexically_relative(folder);
+    const bool inside = !relative.empty() && *relative.begin() != "..";
+    i.inputs += fmt::format("{:016x} {}\n", hash, inside ? relative.string() : path);
+  }
   i.defines = nlohmann::json(defines).dump();
   i.spp = setup.sampler.spp;
   i.seed = setup.sampler.seed;

@@ -35,7 +35,8 @@ Film MakeRenderFilm(const RenderSetup& setup, double budget_gib, int threads);
 
 // Composes the lens's layers over the film (render/lens_layers.h) on at most `threads` threads
 // (0: all), and writes the linear EXR (the picture, the layers, the AOVs; `header` and what the
-// passes did) and the tone-mapped PNG, both atomically. Returns the layers, for statistics.
+// passes did) and the tone-mapped PNG, both atomically. Ctrl-C during the passes (they stop
+// early) marks the image objektiv:partial = 1, render_end "interrupted". Returns the layers.
 LensLayers WriteRenderImages(const RenderSetup& setup, const Film& film, int threads, const std::string& exr,
                              const std::string& png, std::vector<ImageAttribute> header);
 

@@ -68,8 +68,8 @@ uint64_t Fnv1a(const char* data, size_t n, uint64_t h) {
 }
 }  // namespace
 
-uint64_t InputFilesContentHash() {
-  std::vector<uint64_t> hashes;
+std::vector<std::pair<std::string, uint64_t>> InputFilesContentHashes() {
+  std::vector<std::pair<std::string, uint64_t>> out;
   std::vector<char> buffer(1 << 16);
   for (const std::string& path : InputFiles()) {
     std::ifstream in(path, std::ios::binary);
@@ -79,8 +79,16 @@ uint64_t InputFilesContentHash() {
       in.read(buffer.data(), std::streamsize(buffer.size()));
       h = Fnv1a(buffer.data(), size_t(in.gcount()), h);
     }
-    hashes.push_back(h);
+    out.emplace_back(path, h);
   }
+  return out;
+}
+
+uint64_t InputFilesContentHash() { return CombinedContentHash(InputFilesContentHashes()); }
+
+uint64_t CombinedContentHash(const std::vector<std::pair<std::string, uint64_t>>& files) {
+  std::vector<uint64_t> hashes;
+  for (const auto& [path, h] : files) hashes.push_back(h);
   std::sort(hashes.begin(), hashes.end());
   return Fnv1a(reinterpret_cast<const char*>(hashes.data()), hashes.size() * sizeof(uint64_t), kFnvOffset);
 }

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace objektiv {
@@ -21,5 +22,9 @@ std::vector<std::string> InputFiles();
 // same scene with the same files on another machine, or after a copy, hashes the same.
 // Throws InputError naming a file that can no longer be read.
 uint64_t InputFilesContentHash();
+// Each recorded input's content hash (FNV-1a), by canonical path (sorted by path), and the
+// hash of such a list as InputFilesContentHash makes it.
+std::vector<std::pair<std::string, uint64_t>> InputFilesContentHashes();
+uint64_t CombinedContentHash(const std::vector<std::pair<std::string, uint64_t>>& files);
 
 }  // namespace objektiv

@@ -1,11 +1,13 @@
 #include "base/output_file.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -34,12 +36,25 @@ fs::path DirectoryOf(const fs::path& target) {
   return target.has_parent_path() ? target.parent_path() : fs::path(".");
 }
 
+// This machine's name (temporaries on a shared folder say whose they are).
+const std::string& HostName() {
+  static const std::string name = [] {
+    char buf[256] = {};
+    if (gethostname(buf, sizeof buf - 1) != 0 || !buf[0]) return std::string("host");
+    std::string n(buf);
+    for (char& c : n)
+      if (c == '/' || c == '-') c = '_';
+    return n;
+  }();
+  return name;
+}
+
 // A new, empty file beside `target` (O_EXCL: never an existing one), open for writing.
 std::pair<fs::path, int> MakeTemporary(const std::string& path, const fs::path& target) {
   static std::atomic<unsigned> counter{0};
   for (;;) {
-    fs::path temp = DirectoryOf(target) /
-                    fmt::format(".{}.{}-{}.tmp", target.filename().string(), getpid(), counter.fetch_add(1));
+    fs::path temp = DirectoryOf(target) / fmt::format(".{}.{}-{}-{}.tmp", target.filename().string(), HostName(),
+                                                      getpid(), counter.fetch_add(1));
     int fd = open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd >= 0) return {temp, fd};
     if (errno != EEXIST)
@@ -116,6 +131,20 @@ void WriteTextFileAtomically(const std::string& path, std::string_view text) {
 
 void RemovePendingTemporaryFile() {
   if (pending.load()) unlink(pending_path);
+}
+
+void RemoveStaleTemporaries(const std::string& path) {
+  const fs::path target = Target(path);
+  const std::string prefix = "." + target.filename().string() + "." + HostName() + "-";
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(DirectoryOf(target), ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.size() <= prefix.size() + 4 || name.compare(0, prefix.size(), prefix) != 0 ||
+        name.compare(name.size() - 4, 4, ".tmp") != 0)
+      continue;
+    const long pid = std::strtol(name.c_str() + prefix.size(), nullptr, 10);
+    if (pid > 0 && pid != getpid() && kill(pid_t(pid), 0) != 0 && errno == ESRCH) fs::remove(e.path(), ec);
+  }
 }
 
 }  // namespace objektiv

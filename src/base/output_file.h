@@ -26,6 +26,10 @@ void CheckOutputFile(const std::string& path);
 void WriteFileAtomically(const std::string& path, const std::function<void(const std::string& temp)>& fill);
 void WriteTextFileAtomically(const std::string& path, std::string_view text);
 
+// Removes the temporaries of `path` left by processes of this machine that no longer run
+// (killed while writing it, e.g. a render's checkpoint). Others' are left alone.
+void RemoveStaleTemporaries(const std::string& path);
+
 // For a signal handler that ends the process: removes the temporary file being written, if
 // any. Async-signal-safe.
 void RemovePendingTemporaryFile();

@@ -22,6 +22,8 @@ struct RenderPartInfo {
   std::string version;      // of objektiv
   std::string scene;        // the scene file's absolute path (merge loads it from there)
   std::string scene_hash;   // 16 hex digits: the contents of every file the scene read (base/input_files.h)
+  std::string inputs;       // those files, a line each: 16 hex digits of its contents' hash, its name
+                            // (relative to the scene's folder where inside it), to say which changed
   std::string defines;      // the -D values, as a JSON object
   int spp = 0;              // the render's samples per pixel
   uint64_t seed = 0;        // the sampler's
@@ -37,11 +39,13 @@ struct RenderPartInfo {
   bool Complete() const { return pixels_completed == uint64_t(crop.Width()) * crop.Height(); }
   // "" if `o` is a part of the same render, else which setting differs, with both values.
   std::string Mismatch(const RenderPartInfo& o) const;
+  // Which of the scene's files differ between this and `o` (changed, or read by one only).
+  std::string ChangedInputs(const RenderPartInfo& o) const;
 };
 
-// Writes atomically (base/output_file.h). Throws InputError naming `path`.
-void WriteRenderPart(const std::string& path, const Image& rgb, const FilmAccumulators& acc,
-                     const RenderPartInfo& info);
+// Writes what `film` holds (its crop window; `rgb` its image to show) atomically
+// (base/output_file.h), a strip of rows at a time. Throws InputError naming `path`.
+void WriteRenderPart(const std::string& path, const Image& rgb, const Film& film, const RenderPartInfo& info);
 
 // The header only (cheap: to check parts before reading any pixels). Throws InputError
 // "PATH: ..." for a file that is not a render part of this version's format.
@@ -53,5 +57,9 @@ struct RenderPart {
 };
 // Header and accumulators; the plane names come from the file. Throws InputError "PATH: ...".
 RenderPart ReadRenderPart(const std::string& path);
+// Adds a part's sums to `film` a strip of rows at a time (no copy of the whole part in memory):
+// InputError "PATH: ..." for a bad file, or one whose planes or pixels are not the film's.
+// Returns its header.
+RenderPartInfo AddRenderPart(const std::string& path, Film& film);
 
 }  // namespace objektiv

@@ -11,6 +11,14 @@ namespace objektiv {
 namespace {
 std::string Text(const CropWindow& c) { return fmt::format("{},{},{},{}", c.x0, c.y0, c.x1, c.y1); }
 
+// " (it has samples A:B from FILE, ...)" for the parts that hold a pixel, or "".
+std::string Holders(const std::vector<std::string>& paths, const std::vector<RenderPartInfo>& parts,
+                    const std::vector<size_t>& members) {
+  std::vector<std::string> held;
+  for (size_t m : members) held.push_back(fmt::format("{}:{} from {}", parts[m].spp_begin, parts[m].spp_end, paths[m]));
+  return held.empty() ? "" : fmt::format(" (it has samples {})", fmt::join(held, ", "));
+}
+
 }  // namespace
 
 void CheckPartsMakeOneRender(const std::vector<std::string>& paths, const std::vector<RenderPartInfo>& parts) {
@@ -54,11 +62,13 @@ void CheckPartsMakeOneRender(const std::vector<std::string>& paths, const std::v
                                        Text(q.crop), paths[members[m]], p.spp_begin, p.spp_end, Text(p.crop), x, y));
         }
         if (p.spp_begin > next)
-          throw InputError(fmt::format("samples {}:{} of pixel ({}, {}) are in none of the parts", next, p.spp_begin, x, y));
+          throw InputError(fmt::format("samples {}:{} of pixel ({}, {}) are in none of the parts{}", next, p.spp_begin, x, y,
+                                       Holders(paths, parts, members)));
         next = p.spp_end;
       }
       if (next < first.spp)
-        throw InputError(fmt::format("samples {}:{} of pixel ({}, {}) are in none of the parts", next, first.spp, x, y));
+        throw InputError(fmt::format("samples {}:{} of pixel ({}, {}) are in none of the parts{}", next, first.spp, x, y,
+                                     Holders(paths, parts, members)));
     }
 }
 

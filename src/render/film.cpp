@@ -81,39 +81,49 @@ double Film::samples_per_pixel() const {
 Film::LuminanceMoments Film::Moments(size_t i) const {
   const Pixel& px = pixels_[i];
   const double w = px.weight.Value();
-  if (w == 0) return {counts_[i], 0, 0};
+  if (w == 0) return {0, 0, 0};  // no camera sample weighs in (splats only): nothing to estimate from
   const double mean = px.xyz[1].Value() / w;
   return {counts_[i], mean, std::max(0.0, px.yy.Value() / w - mean * mean)};
 }
 
 // The planes in their order: the pixel's sums, then the optional ones, then the splats.
-FilmAccumulators Film::Accumulators() const {
+std::vector<std::string> Film::PlaneNames() const {
+  std::vector<std::string> names = {"X", "Y", "Z", "W", "YY"};
+  if (keeps_emitted()) names.insert(names.end(), {"emitted.X", "emitted.Y", "emitted.Z"});
+  for (int c = 0; c < aov_channels_; ++c) names.push_back(fmt::format("aov.{}", c));
+  if (aov_channels_ > 0) names.push_back("aov.W");
+  names.insert(names.end(), {"splat.X", "splat.Y", "splat.Z"});
+  return names;
+}
+
+FilmAccumulators Film::Accumulators() const { return Accumulators(crop_); }
+
+FilmAccumulators Film::Accumulators(const CropWindow& window) const {
+  if (!crop_.Contains(window)) throw std::invalid_argument("Film::Accumulators: a window outside the crop");
   FilmAccumulators a;
-  a.crop = crop_;
+  a.crop = window;
   a.first_sample = first_sample_;
-  a.counts = counts_;
-  a.names = {"X", "Y", "Z", "W", "YY"};
-  if (keeps_emitted()) a.names.insert(a.names.end(), {"emitted.X", "emitted.Y", "emitted.Z"});
-  for (int c = 0; c < aov_channels_; ++c) a.names.push_back(fmt::format("aov.{}", c));
-  if (aov_channels_ > 0) a.names.push_back("aov.W");
-  a.names.insert(a.names.end(), {"splat.X", "splat.Y", "splat.Z"});
+  a.names = PlaneNames();
   const size_t n = a.names.size();
-  a.sums.resize(n * pixels_.size());
-  for (size_t i = 0; i < pixels_.size(); ++i) {
-    ExactSum* out = &a.sums[n * i];
-    const Pixel& px = pixels_[i];
-    *out++ = px.xyz[0], *out++ = px.xyz[1], *out++ = px.xyz[2], *out++ = px.weight, *out++ = px.yy;
-    if (keeps_emitted())
-      for (int c = 0; c < 3; ++c) *out++ = emitted_xyz_[3 * i + c];
-    for (int c = 0; c < aov_channels_; ++c) *out++ = aov_sums_[size_t(aov_channels_) * i + c];
-    if (aov_channels_ > 0) *out++ = aov_weights_[i];
-    for (int c = 0; c < 3; ++c) *out++ = splat_xyz_[3 * i + c];
-  }
+  a.sums.reserve(n * size_t(window.Width()) * window.Height());
+  a.counts.reserve(size_t(window.Width()) * window.Height());
+  for (int y = window.y0; y < window.y1; ++y)
+    for (int x = window.x0; x < window.x1; ++x) {
+      const size_t i = Index(Vec2i(x, y));
+      const Pixel& px = pixels_[i];
+      a.counts.push_back(counts_[i]);
+      a.sums.insert(a.sums.end(), {px.xyz[0], px.xyz[1], px.xyz[2], px.weight, px.yy});
+      if (keeps_emitted()) a.sums.insert(a.sums.end(), emitted_xyz_.data() + 3 * i, emitted_xyz_.data() + 3 * i + 3);
+      const ExactSum* aov = aov_sums_.data() + size_t(aov_channels_) * i;
+      a.sums.insert(a.sums.end(), aov, aov + aov_channels_);
+      if (aov_channels_ > 0) a.sums.push_back(aov_weights_[i]);
+      a.sums.insert(a.sums.end(), splat_xyz_.data() + 3 * i, splat_xyz_.data() + 3 * i + 3);
+    }
   return a;
 }
 
 void Film::AddAccumulators(const FilmAccumulators& a) {
-  const std::vector<std::string> names = Accumulators().names;  // (small films only pay for the copy)
+  const std::vector<std::string> names = PlaneNames();
   if (a.names != names)
     throw std::invalid_argument(fmt::format("its planes ({}) are not this render's ({})", fmt::join(a.names, ", "),
                                             fmt::join(names, ", ")));

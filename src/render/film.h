@@ -96,7 +96,8 @@ class Film {
   void StartSamplesAt(int index) { first_sample_ = index; }
   int first_sample() const { return first_sample_; }
   // Per pixel of the crop window: sample count, mean luminance and the variance of a sample's
-  // luminance (for the noise estimate).
+  // luminance (for the noise estimate); count 0 where no camera sample weighs in (a film of
+  // splats only says nothing of its noise).
   struct LuminanceMoments {
     uint32_t count;
     double mean, variance;
@@ -108,6 +109,9 @@ class Film {
   // a crop inside this film's crop: its pixels add to those). Throws std::invalid_argument
   // naming what does not match.
   FilmAccumulators Accumulators() const;
+  // Those of a window of the crop (a strip at a time, for files).
+  FilmAccumulators Accumulators(const CropWindow& window) const;
+  std::vector<std::string> PlaneNames() const;
   void AddAccumulators(const FilmAccumulators& a);
   // Linear RGB in the given colour space, scaled by 2^exposure; crop-window sized: the
   // filtered camera samples plus the splats.

@@ -5,7 +5,8 @@
 // from the film's sums of w*Y and w*Y^2), floor = 1% of the image's mean luminance, so that
 // near-black pixels, whose noise does not show, do not count as noisy. The image's figure is
 // the 95th percentile of e over its pixels: 95% of the pixels are at least that good. Pixels
-// with fewer than 2 samples count as infinitely noisy (no variance yet).
+// with fewer than 2 camera samples count as infinitely noisy (no variance yet; so does every
+// pixel of a film that only light paths splat into: such a render runs to its samples).
 #pragma once
 #include "render/film.h"
 

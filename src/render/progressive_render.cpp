@@ -86,7 +86,11 @@ ProgressiveResult RenderProgressive(const Camera& camera, const Integrator& inte
   const auto period = std::chrono::duration<double>(options.checkpoint_seconds);
   std::atomic<Clock::time_point> next_checkpoint{start + std::chrono::duration_cast<Clock::duration>(period)};
   auto checkpoint_due = [&] { return options.checkpoint_seconds > 0 && Clock::now() >= next_checkpoint.load(); };
-  auto time_up = [&] { return options.time_limit_seconds > 0 && elapsed() >= options.time_limit_seconds; };
+  // Every pixel gets its first pass whatever the limit (a black image is no picture).
+  std::atomic<bool> first_pass_done{false};
+  auto time_up = [&] {
+    return options.time_limit_seconds > 0 && first_pass_done && elapsed() >= options.time_limit_seconds;
+  };
 
   int64_t left = 0;
   for (int y = crop.y0; y < crop.y1; ++y)
@@ -125,6 +129,7 @@ ProgressiveResult RenderProgressive(const Camera& camera, const Integrator& inte
       }
     }
     if (ended) break;
+    first_pass_done = true;
     if (options.noise_target > 0 && pass_end < ro.spp_end) {
       out.noise = RelativeNoise(film);
       if (out.noise <= options.noise_target) {

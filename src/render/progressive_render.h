@@ -24,7 +24,7 @@ struct ProgressiveOptions {
   const std::atomic<bool>* interrupt = nullptr;  // Ctrl-C: stop now (with a checkpoint, if any)
   double checkpoint_seconds = 0;  // 0: none; else pause every so often and call checkpoint
   std::function<void(double elapsed_seconds)> checkpoint;
-  double time_limit_seconds = 0;  // 0: none; counted from elapsed_before on
+  double time_limit_seconds = 0;  // 0: none; counted from elapsed_before on, once the first pass is done
   double noise_target = 0;        // 0: none; see render/noise_estimate.h
   double elapsed_before = 0;      // rendering seconds of the runs this one resumes
 };
