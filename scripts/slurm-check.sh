@@ -7,12 +7,14 @@
 #
 #   sudo scripts/slurm-check.sh [--parts N] [--spp S] [--res R] [--objektiv PATH] [--keep]
 #
-# Needs root (the daemons run as root; without it, exits 77: skipped), installs Debian's
-# slurm-wlm and munge if missing (scripts/setup.sh --cluster), and builds objektiv if needed
-# (scripts/build.sh; or --objektiv names the binary). The test suite runs it (cluster_slurm). Everything else lives in a fresh directory
-# under /tmp (config, keys, sockets, logs, spool, images), removed at the end unless --keep.
-# The daemons listen on ports 16817 and 16818 of localhost. Prints PASS and exits 0 when the
-# merged image equals the one-process render.
+# Needs root (the daemons run as root) and the cgroup filesystem (slurmd wants it); without
+# either it exits 77: skipped (as in a chroot without /sys). Installs Debian's slurm-wlm and
+# munge if missing (scripts/setup.sh --cluster) and builds objektiv if needed (scripts/build.sh;
+# or --objektiv names the binary). Everything else lives in a fresh directory under /tmp
+# (config, keys, sockets, logs, spool, images), removed at the end unless --keep; daemons left
+# by an earlier run that was killed are stopped first. The daemons listen on ports 16817 and
+# 16818 of localhost. Prints PASS and exits 0 when the merged image equals the one-process
+# render. The test suite runs it (cluster_slurm).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -24,15 +26,20 @@ while [[ $# -gt 0 ]]; do
     --res) res=$2; shift 2 ;;
     --objektiv) objektiv=$(realpath "$2"); shift 2 ;;
     --keep) keep=1; shift ;;
-    -h|--help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "slurm-check: unknown option $1" >&2; exit 2 ;;
   esac
 done
 (( parts >= 1 && spp >= parts )) || { echo "slurm-check: need 1 <= --parts <= --spp" >&2; exit 2; }
 [[ $(id -u) == 0 ]] || { echo "slurm-check: skipped: run as root (the Slurm daemons and munge run as root here)" >&2; exit 77; }
+# slurmd (22.05) needs the cgroup filesystem even with proctrack/linuxproc and task/none; a
+# chroot without /sys (as scripts run in a bare root) has none.
+[[ -e /sys/fs/cgroup/cgroup.controllers || -d /sys/fs/cgroup/cpuset ]] ||
+  { echo "slurm-check: skipped: no cgroup filesystem at /sys/fs/cgroup (a chroot without /sys?): slurmd cannot run" >&2; exit 77; }
 scripts/setup.sh --cluster
 [[ -x $objektiv ]] || scripts/build.sh
 
+pkill -f '/tmp/objektiv-slurm\.[A-Za-z0-9]+/' 2> /dev/null && sleep 1  # an earlier run's daemons, killed with it
 work=$(mktemp -d /tmp/objektiv-slurm.XXXXXX)
 chmod 755 "$work"
 pids=()
@@ -92,11 +99,17 @@ NodeName=localhost NodeHostname=$(hostname) CPUs=$cpus RealMemory=$memory State=
 PartitionName=render Nodes=localhost Default=YES MaxTime=INFINITE State=UP
 CONF
 slurmctld -D -f "$SLURM_CONF" > "$work/log/slurmctld.out" 2>&1 &
-pids+=($!)
+ctld=$!
+pids+=($ctld)
 slurmd -D -f "$SLURM_CONF" -N localhost > "$work/log/slurmd.out" 2>&1 &
-pids+=($!)
-for _ in $(seq 60); do sinfo -h -o %T 2> /dev/null | grep -qE '^idle' && break; sleep 1; done
-sinfo -h -o %T | grep -qE '^idle' || fail "the node did not come up: $(sinfo 2>&1)"
+slurmd=$!
+pids+=($slurmd)
+for _ in $(seq 60); do
+  kill -0 $ctld 2> /dev/null && kill -0 $slurmd 2> /dev/null || fail "a Slurm daemon ended"
+  timeout 5 sinfo -h -o %T 2> /dev/null | grep -qE '^idle' && break
+  sleep 1
+done
+timeout 5 sinfo -h -o %T | grep -qE '^idle' || fail "the node did not come up: $(timeout 5 sinfo 2>&1)"
 echo "slurm-check: cluster up: $(sinfo -h -o '%P %D nodes %c CPUs %T')"
 
 # --- the render: a job array of sample ranges, then a merge that waits for it -------------
@@ -108,11 +121,13 @@ array=$(sbatch --parsable --array=0-$((parts - 1)) --chdir="$work/out" --output=
 merge=$(sbatch --parsable --dependency=afterok:"$array" --chdir="$work/out" --output="$work/log/merge.log" \
   --export=ALL,OBJEKTIV="$objektiv",PARTS="$parts" "$root/deploy/slurm/merge.sbatch")
 echo "slurm-check: job array $array ($parts parts of $spp samples per pixel), merge job $merge after it"
-for _ in $(seq 900); do
-  [[ -z $(squeue -h -j "$array,$merge" 2> /dev/null) ]] && break
+for _ in $(seq 600); do
+  kill -0 $ctld 2> /dev/null && kill -0 $slurmd 2> /dev/null || fail "a Slurm daemon ended"
+  [[ -z $(timeout 5 squeue -h -j "$array,$merge" 2> /dev/null) ]] && break
   sleep 1
 done
-[[ -z $(squeue -h -j "$array,$merge" 2> /dev/null) ]] && [[ -s $work/out/merged.exr ]] || fail "the jobs did not finish: $(squeue 2>&1)"
+[[ -z $(timeout 5 squeue -h -j "$array,$merge" 2> /dev/null) ]] && [[ -s $work/out/merged.exr ]] ||
+  fail "the jobs did not finish: $(timeout 5 squeue 2>&1)"
 cat "$work/log/merge.log"
 
 # --- the same render in one process --------------------------------------------------------
