@@ -173,8 +173,7 @@ int RunRender(const RenderArgs& a) {
     RenderPartInfo i = info;
     i.checkpoint = is_checkpoint;
     i.seconds = seconds;
-    for (int y = fs_.crop.y0; y < fs_.crop.y1; ++y)
-      for (int x = fs_.crop.x0; x < fs_.crop.x1; ++x) i.pixels_completed += film.NextSample(Vec2i(x, y)) >= spp_end;
+    i.pixels_completed = film.PixelsWithSamplesTo(spp_end);
     WriteRenderPart(path, film.ToImage(*fs_.color_space, fs_.exposure), film, i);
   };
 

@@ -130,7 +130,6 @@ void WriteRenderPart(const std::string& path, const Image& rgb, const Film& film
     }
     if (!out->close()) throw InputError(fmt::format("{}: cannot write render part: {}", path, out->geterror()));
   });
-  (void)h;
 }
 
 namespace {

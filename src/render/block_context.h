@@ -34,8 +34,7 @@ struct RenderCounters {
   RayCounts rays;
   CameraRayCount camera;
   uint64_t nan = 0, inf = 0;  // radiance samples and splats dropped
-  uint64_t pixels = 0;        // pixels that got the samples of their block
-  uint64_t samples = 0;       // and how many
+  uint64_t samples = 0;       // pixel samples taken
 };
 
 // A tile of pixels (half-open bounds on the full film, inside the crop window) and the sample
@@ -81,7 +80,6 @@ class BlockContext {
         if (samples.size() <= 0) continue;
         fn(pixel, samples);
         film_.AddSampleCount(pixel, samples.size());
-        ++counters_.pixels;
         counters_.samples += uint64_t(samples.size());
       }
   }

@@ -78,6 +78,18 @@ double Film::samples_per_pixel() const {
   return double(total) / double(counts_.size());
 }
 
+int64_t Film::SamplesLeft(int begin, int end) const {
+  int64_t left = 0;
+  for (uint32_t n : counts_) left += std::max(0, end - std::max(begin, first_sample_ + int(n)));
+  return left;
+}
+
+uint64_t Film::PixelsWithSamplesTo(int end) const {
+  uint64_t done = 0;
+  for (uint32_t n : counts_) done += first_sample_ + int(n) >= end;
+  return done;
+}
+
 Film::LuminanceMoments Film::Moments(size_t i) const {
   const Pixel& px = pixels_[i];
   const double w = px.weight.Value();

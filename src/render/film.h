@@ -94,6 +94,10 @@ class Film {
   int NextSample(Vec2i pixel) const { return first_sample_ + int(counts_[Index(pixel)]); }
   void AddSampleCount(Vec2i pixel, int n) { counts_[Index(pixel)] += uint32_t(n); }
   void StartSamplesAt(int index) { first_sample_ = index; }
+  // Over the crop window: the samples of [begin, end) the pixels do not have yet, and the pixels
+  // that have every sample up to `end`.
+  int64_t SamplesLeft(int begin, int end) const;
+  uint64_t PixelsWithSamplesTo(int end) const;
   int first_sample() const { return first_sample_; }
   // Per pixel of the crop window: sample count, mean luminance and the variance of a sample's
   // luminance (for the noise estimate); count 0 where no camera sample weighs in (a film of

@@ -92,11 +92,7 @@ ProgressiveResult RenderProgressive(const Camera& camera, const Integrator& inte
     return options.time_limit_seconds > 0 && first_pass_done && elapsed() >= options.time_limit_seconds;
   };
 
-  int64_t left = 0;
-  for (int y = crop.y0; y < crop.y1; ++y)
-    for (int x = crop.x0; x < crop.x1; ++x)
-      left += std::max(0, ro.spp_end - std::max(ro.spp_begin, film.NextSample(Vec2i(x, y))));
-  Progress progress("Rendering", left, ro.progress);
+  Progress progress("Rendering", film.SamplesLeft(ro.spp_begin, ro.spp_end), ro.progress);
 
   ProgressiveResult out;
   std::atomic<bool> stop{false};
@@ -145,8 +141,7 @@ ProgressiveResult RenderProgressive(const Camera& camera, const Integrator& inte
   out.stats.spp = ro.spp_end - ro.spp_begin;
   out.stats.width = crop.Width(), out.stats.height = crop.Height();
   out.stats.pixels = uint64_t(crop.Width()) * crop.Height();
-  for (int y = crop.y0; y < crop.y1; ++y)
-    for (int x = crop.x0; x < crop.x1; ++x) out.stats.pixels_completed += film.NextSample(Vec2i(x, y)) >= ro.spp_end;
+  out.stats.pixels_completed = film.PixelsWithSamplesTo(ro.spp_end);
   if (out.end == RenderEnd::kInterrupted && options.checkpoint) {
     options.checkpoint(out.elapsed);
     ++out.checkpoints;

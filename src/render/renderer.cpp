@@ -18,10 +18,7 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
   const int ts = options.tile_size;
   const int tiles_x = (crop.Width() + ts - 1) / ts, tiles_y = (crop.Height() + ts - 1) / ts;
   const int spp = options.spp_end - options.spp_begin;
-  int64_t pixel_samples_left = 0;  // the work: samples the pixels do not have yet
-  for (int y = crop.y0; y < crop.y1; ++y)
-    for (int x = crop.x0; x < crop.x1; ++x)
-      pixel_samples_left += std::max(0, options.spp_end - std::max(options.spp_begin, film.NextSample(Vec2i(x, y))));
+  const int64_t pixel_samples_left = film.SamplesLeft(options.spp_begin, options.spp_end);  // the work
 
   std::unique_ptr<tbb::global_control> limit;
   if (options.threads > 0)
@@ -55,8 +52,7 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
   stats.height = crop.Height();
   stats.pixels = uint64_t(crop.Width()) * crop.Height();
   stats.skipped_rays = integrator.scene().SkippedRays() - skipped_before;
-  for (int y = crop.y0; y < crop.y1; ++y)
-    for (int x = crop.x0; x < crop.x1; ++x) stats.pixels_completed += film.NextSample(Vec2i(x, y)) >= options.spp_end;
+  stats.pixels_completed = film.PixelsWithSamplesTo(options.spp_end);
   for (const RenderCounters& c : counters) {
     stats.samples += c.samples;
     stats.rays += c.rays.closest + c.rays.shadow;
