@@ -2,7 +2,8 @@
 # Renders the realistic-camera pictures in the README (docs/images/lens-*.png) from the
 # scenes in scenes/ (a few minutes on 2 cores). Needs a build (make) and oiiotool
 # (openimageio-tools) to put panels side by side. `readme-images.sh flare` renders only the
-# ghost and starburst pictures (docs/images/flare-*.png).
+# ghost and starburst pictures (docs/images/flare-*.png), `readme-images.sh caustics` the
+# light-traced caustics (docs/images/caustics-*.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/objektiv
@@ -35,9 +36,22 @@ flare() {
   oiiotool "$tmp/star-0.png" "$tmp/star-5.png" "$tmp/star-6.png" "$tmp/star-8.png" "$tmp/star-9.png" \
     --mosaic:pad=4 1x5 -o "$out/flare-starbursts.png"
 }
+caustics() {
+  # The glass balls by camera paths alone, and with light-traced caustics; the prism's spectrum.
+  render scenes/caustics/glass-sphere.xml -D caustics=false -D spp=256 -D width=480 -D height=300 -o "$tmp/balls-path.exr"
+  render scenes/caustics/glass-sphere.xml -D spp=256 -D width=480 -D height=300 -o "$tmp/balls-caustics.exr"
+  oiiotool "$tmp/balls-path.png" "$tmp/balls-caustics.png" --mosaic:pad=4 2x1 -o "$out/caustics-glass-balls.png"
+  render scenes/prism/spectrum.xml -D spp=256 -D width=480 -D height=300 -o "$tmp/spectrum.exr"
+  cp "$tmp/spectrum.png" "$out/caustics-prism-spectrum.png"
+}
 if [ "${1:-}" = flare ]; then
   flare
   echo "wrote $out/flare-*.png"
+  exit 0
+fi
+if [ "${1:-}" = caustics ]; then
+  caustics
+  echo "wrote $out/caustics-*.png"
   exit 0
 fi
 

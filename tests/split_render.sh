@@ -138,6 +138,17 @@ budgets)
   "$obj" render "$cornell" -D res=64 --spp 64 --time-limit 0.001 -o short.exr > log.txt 2>&1 || fail "short limit"
   "$iinfo" -v short.exr > header.txt || fail "iinfo"
   grep -q 'objektiv:samples_per_pixel: 1$' header.txt || fail "not one sample per pixel: $(cat header.txt)"
+  # Light paths' noise is not in the camera samples the noise target reads: refused.
+  cat > light.xml <<'XML'
+<scene version="3.0.0">
+  <integrator type="ptracer"/>
+  <sensor type="perspective"><film type="hdrfilm"><integer name="width" value="8"/><integer name="height" value="8"/></film></sensor>
+  <shape type="sphere"><point name="center" x="0" y="0" z="3"/></shape>
+  <emitter type="point"><point name="position" x="0" y="2" z="0"/></emitter>
+</scene>
+XML
+  expect 1 "--noise-target measures the noise of camera samples" "$obj" render light.xml --noise-target 0.1 -o light.exr
+  "$obj" render light.xml --time-limit 5 -q -o light.exr || fail "a light-traced render with a time limit"
   ;;
 bad-values)
   cornell=$src/scenes/cornell-box/cornell-box.xml

@@ -127,6 +127,12 @@ int RunRender(const RenderArgs& a) {
   CheckOutputsWritable(outputs);
   RenderSetup setup = LoadScene(a.scene, defines, GlassCatalog::Default());
   if (a.spp > 0) setup.sampler.spp = a.spp;
+  // The noise estimate reads the camera samples' spread; light paths add theirs as splats,
+  // which it cannot see (it would call a light-traced image clean after its first pass).
+  if (a.noise_target > 0 && setup.integrator->TracesLightToCamera())
+    throw InputError(fmt::format("{}: --noise-target measures the noise of camera samples, and this integrator's light "
+                                 "paths add light it cannot measure; use --time-limit or samples per pixel",
+                                 a.scene));
   if (!a.seed.empty()) setup.sampler.seed = *ParseUint64(a.seed);  // (checked by its option)
   RenderPartInfo info = DescribeRender(a.scene, defines, setup);
   CheckOutputsAreNotInputs(outputs);

@@ -60,6 +60,8 @@ class Camera {
                                                            SampledWavelengths& /*lambda*/) const {
     return std::nullopt;
   }
+  // Whether SampleImportance can find this camera at all (light tracing needs it).
+  virtual bool HasImportance() const { return false; }
   int width() const { return width_; }
   int height() const { return height_; }
 
@@ -85,6 +87,7 @@ class PerspectiveCamera : public Camera {
   // the view axis, A the film's area on the plane at unit distance (the camera rays' weight is
   // 1: the image is radiance).
   std::optional<CameraImportance> SampleImportance(const Vec3f& p, Vec2f u, SampledWavelengths& lambda) const override;
+  bool HasImportance() const override { return true; }
 
  protected:
   // Direction in camera space through film point p (not normalised; z = 1).

@@ -23,6 +23,7 @@ class RealisticCamera final : public LensCamera {
   // carry the hero alone), with the lens's transmittance and the aperture mask. Follows
   // `vignetting` full and optical; with natural and none the rims still clip.
   std::optional<CameraImportance> SampleImportance(const Vec3f& p, Vec2f u, SampledWavelengths& lambda) const override;
+  bool HasImportance() const override { return true; }
   const PupilBounds& bounds() const { return bounds_; }
   // The lens as set up (stop, focus, coatings): what the flare passes trace.
   const LensSystem& lens() const { return lens_; }

@@ -1,10 +1,21 @@
 // The <integrator> plugins: each makes an Integrator from its properties.
 #include "io/loader_context.h"
 #include "render/aov.h"
+#include "render/light_tracer.h"
 
 namespace objektiv {
 
 namespace {
+
+// max_depth and rr_depth as Mitsuba's path tracers take them (segments of the whole path).
+struct PathDepths {
+  int max_depth, rr_depth;
+};
+PathDepths ParsePathDepths(const Properties& p) {
+  const int max_depth = int(p.IntIn("max_depth", -1, -1, 1 << 20));
+  if (max_depth == 0) throw ErrorAt(p.LocOf("max_depth"), "max_depth must be -1 (unbounded) or at least 1");
+  return {max_depth, int(p.IntIn("rr_depth", 5, 1, 1 << 20))};
+}
 
 // Mitsuba's `aov`: the AOVs (render/aov.h) beside the image of the nested integrator (the path
 // tracer when none is nested).
@@ -33,11 +44,10 @@ const IntegratorRegistry& IntegratorPlugins() {
       "integrator", {},
       {
           {"path",
-           {{"max_depth", PropType::kInteger}, {"rr_depth", PropType::kInteger}},
+           {{"max_depth", PropType::kInteger}, {"rr_depth", PropType::kInteger}, {"caustics", PropType::kBoolean}},
            [](const Properties& p, const Scene& scene) -> std::unique_ptr<Integrator> {
-             int max_depth = int(p.IntIn("max_depth", -1, -1, 1 << 20));
-             if (max_depth == 0) throw ErrorAt(p.LocOf("max_depth"), "max_depth must be -1 (unbounded) or at least 1");
-             return std::make_unique<PathIntegrator>(scene, max_depth, int(p.IntIn("rr_depth", 5, 1, 1 << 20)));
+             const PathDepths d = ParsePathDepths(p);
+             return std::make_unique<PathIntegrator>(scene, d.max_depth, d.rr_depth, p.Bool("caustics", false));
            }},
           {"direct",
            {{"shading_samples", PropType::kInteger},
@@ -47,6 +57,12 @@ const IntegratorRegistry& IntegratorPlugins() {
              int shading = int(p.IntIn("shading_samples", 1, 0, 1 << 16));
              return std::make_unique<DirectIntegrator>(scene, int(p.IntIn("emitter_samples", shading, 0, 1 << 16)),
                                                        int(p.IntIn("bsdf_samples", shading, 0, 1 << 16)));
+           }},
+          {"ptracer",
+           {{"max_depth", PropType::kInteger}, {"rr_depth", PropType::kInteger}},
+           [](const Properties& p, const Scene& scene) -> std::unique_ptr<Integrator> {
+             const PathDepths d = ParsePathDepths(p);
+             return std::make_unique<LightTracerIntegrator>(scene, d.max_depth, d.rr_depth);
            }},
           {"aov", {{"aovs", PropType::kString}, {"integrator", PropType::kObject}}, MakeAovIntegrator},
       });

@@ -85,6 +85,9 @@ RenderSetup Build(const SceneDocument& doc, const GlassCatalog& glasses) {
   BuildSensor(*sensor, glasses, setup);
   setup.scene->Commit();
   setup.integrator = BuildIntegrator(integrator, *setup.scene);
+  if (setup.integrator->TracesLightToCamera() && !setup.camera->HasImportance())
+    throw ErrorAt(integrator->loc, "integrator '{}' traces light to the camera, and light cannot find a {} sensor "
+                  "(perspective, thinlens and realistic lenses can be reached)", integrator->type, sensor->type);
   if (setup.scene->lights().empty()) spdlog::warn("{}: the scene has no emitters; the image will be black", root.loc.file);
   return setup;
 }

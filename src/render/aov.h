@@ -48,6 +48,8 @@ class AovIntegrator final : public CameraPathIntegrator {
                      Sampler& sampler, BlockContext& ctx) const override {
     return inner_->Li(ray, first_hit, lambda, sampler, ctx);
   }
+  void TraceLightPaths(Sampler& sampler, BlockContext& ctx) const override { inner_->TraceLightPaths(sampler, ctx); }
+  bool TracesLightToCamera() const override { return inner_->TracesLightToCamera(); }
   int AovChannels() const override;
   void EvaluateAovs(const Ray& ray, const std::optional<SurfaceInteraction>& hit, const SampledWavelengths& lambda,
                     uint64_t seed, float* out) const override;

@@ -84,6 +84,8 @@ class BlockContext {
       }
   }
   bool Stopped() const { return stop_ && stop_->load(std::memory_order_relaxed); }
+  // A path whose throughput went non-finite (ended, and counted as a NaN sample).
+  void CountNaN() { ++counters_.nan; }
 
   // One camera sample of a pixel of this block, weighted by the filter's sample weight.
   void AddSample(Vec2i pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float filter_weight) {
@@ -108,6 +110,14 @@ class BlockContext {
       return;
     }
     if (Finite(L)) film_.AddSplat(p_film, L, lambda);
+  }
+
+  // The factor for the splats of light paths traced one per camera sample: the film divides
+  // splats by its samples per pixel, which counts one path per sample of every pixel of the
+  // full film; a crop window's samples trace fewer (the full film's pixels over the crop's).
+  float LightPathScale() const {
+    const CropWindow& c = film_.crop();
+    return float(double(film_.width()) * film_.height() / (double(c.Width()) * c.Height()));
   }
 
   // Every ray traced is counted here (closest hits and shadow rays), camera rays through a lens

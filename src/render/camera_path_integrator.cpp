@@ -75,6 +75,7 @@ void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
         }
         if (cr) L = cr->weight * Li(cr->ray, b.first_hits[k], b.lambdas[k], b.samplers[k], ctx);
         ctx.AddSample(pixel, L, b.lambdas[k], b.filter_samples[k].weight);
+        TraceLightPaths(b.samplers[k], ctx);
       }
     }
   });

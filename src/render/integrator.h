@@ -15,6 +15,9 @@ class Integrator {
   // they estimate through ctx. Called for many blocks at once on different threads: const, with
   // whatever changes kept in locals.
   virtual void RenderBlock(BlockContext& ctx) const = 0;
+  // Whether the integrator carries light to the camera from the light side
+  // (Camera::SampleImportance): the scene loader refuses cameras that cannot be reached so.
+  virtual bool TracesLightToCamera() const { return false; }
   const Scene& scene() const { return scene_; }
 
  protected:
@@ -41,8 +44,11 @@ class CameraPathIntegrator : public Integrator {
   virtual int AovChannels() const { return 0; }
   virtual void EvaluateAovs(const Ray&, const std::optional<SurfaceInteraction>&, const SampledWavelengths&, uint64_t,
                             float*) const {}
+  // Light paths of the camera sample (the light tracer's): called once per camera sample,
+  // after Li, whether or not the camera made a ray for it, with the sample's sampler.
+  virtual void TraceLightPaths(Sampler& /*sampler*/, BlockContext& /*ctx*/) const {}
 
- private:
+ protected:
   // The radiance along the camera ray straight from an emitter (Li's first term): what the
   // first hit emits through the segment's absorption, or the environment on a miss.
   SampledSpectrum DirectEmission(const Ray& ray, const std::optional<SurfaceInteraction>& hit,
@@ -52,15 +58,26 @@ class CameraPathIntegrator : public Integrator {
 // Unidirectional path tracing with next-event estimation and multiple importance sampling.
 // max_depth counts path segments as Mitsuba does (1: emitters seen directly, 2: direct
 // lighting, -1: unbounded); Russian roulette from rr_depth on.
+//
+// With `caustics`, the paths of light focused by specular surfaces onto a surface the camera
+// sees directly (emitter, one or more specular bounces, then that surface: L S+ D E) are left
+// to a light path per camera sample (render/light_paths.h, LightPathVertices::kCaustics), which
+// finds them from point lights too and without the fireflies of small lights behind glass:
+// camera paths drop an emitter they reach after a non-specular bounce at their first hit
+// followed by specular bounces only. The two halves are disjoint and together are every path:
+// the image converges to the same as without (test_light_tracer.cpp).
 class PathIntegrator final : public CameraPathIntegrator {
  public:
-  PathIntegrator(const Scene& scene, int max_depth, int rr_depth)
-      : CameraPathIntegrator(scene), max_depth_(max_depth), rr_depth_(rr_depth) {}
+  PathIntegrator(const Scene& scene, int max_depth, int rr_depth, bool caustics = false)
+      : CameraPathIntegrator(scene), max_depth_(max_depth), rr_depth_(rr_depth), caustics_(caustics) {}
   SampledSpectrum Li(const Ray& ray, const std::optional<SurfaceInteraction>& first_hit, SampledWavelengths& lambda,
                      Sampler& sampler, BlockContext& ctx) const override;
+  void TraceLightPaths(Sampler& sampler, BlockContext& ctx) const override;
+  bool TracesLightToCamera() const override { return caustics_; }
 
  private:
   int max_depth_, rr_depth_;
+  bool caustics_;
 };
 
 // Direct illumination only: emitter and BSDF samples combined with the power heuristic

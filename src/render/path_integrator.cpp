@@ -1,5 +1,6 @@
 #include "render/direct_lighting.h"
 #include "render/integrator.h"
+#include "render/light_paths.h"
 
 #include <limits>
 
@@ -11,6 +12,11 @@ SampledSpectrum PathIntegrator::Li(const Ray& camera_ray, const std::optional<Su
   SampledSpectrum L(0.f), beta(1.f);
   Ray ray = camera_ray;
   bool specular_bounce = false;
+  // With caustics: whether the path so far is the camera's half of a caustic (a non-specular
+  // bounce at the first hit, then specular bounces only, at least one), whose emitters the light
+  // paths take.
+  bool scattered_first = false;
+  int specular_after_first = 0;
   float bsdf_pdf = 0, eta_scale = 1;
   Vec3f prev_p;
   // `depth` is the number of path segments traced so far, including the current ray.
@@ -18,7 +24,9 @@ SampledSpectrum PathIntegrator::Li(const Ray& camera_ray, const std::optional<Su
     if (depth > 1) ++counts.closest;
     // Initialised by the call itself (an assignment would copy the interaction each bounce).
     std::optional<SurfaceInteraction> si = depth == 1 ? first_hit : scene_.Intersect(ray);
+    const bool caustic = caustics_ && scattered_first && specular_after_first > 0;
     if (!si) {
+      if (caustic) break;
       for (const InfiniteLight* light : scene_.infinite_lights()) {
         SampledSpectrum Le = light->Le(ray.d, lambda);
         if (Le.IsBlack()) continue;
@@ -32,7 +40,7 @@ SampledSpectrum PathIntegrator::Li(const Ray& camera_ray, const std::optional<Su
       break;
     }
     beta *= SegmentTransmittance(ray, *si, lambda);
-    SampledSpectrum Le = EmittedRadiance(*si, lambda);
+    SampledSpectrum Le = caustic ? SampledSpectrum(0.f) : EmittedRadiance(*si, lambda);
     if (!Le.IsBlack()) {
       if (depth == 1 || specular_bounce) {
         L += beta * Le;
@@ -61,6 +69,13 @@ SampledSpectrum PathIntegrator::Li(const Ray& camera_ray, const std::optional<Su
     beta *= bs->f * (AbsDot(bs->wi, si->shading.n) / bs->pdf);
     bsdf_pdf = bs->pdf;
     specular_bounce = bs->IsSpecular();
+    if (depth == 1) {
+      scattered_first = !specular_bounce;
+    } else if (specular_bounce) {
+      ++specular_after_first;
+    } else {
+      scattered_first = false;  // no longer a caustic's camera half
+    }
     if (bs->IsTransmission()) eta_scale *= Sqr(bs->eta);
     prev_p = si->p;
     ray = si->SpawnRay(bs->wi);
@@ -77,6 +92,10 @@ SampledSpectrum PathIntegrator::Li(const Ray& camera_ray, const std::optional<Su
     }
   }
   return L;
+}
+
+void PathIntegrator::TraceLightPaths(Sampler& sampler, BlockContext& ctx) const {
+  if (caustics_) TraceLightPath(scene_, {max_depth_, rr_depth_, LightPathVertices::kCaustics}, sampler, ctx);
 }
 
 }  // namespace objektiv

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "base/color_space.h"
+#include "base/frame.h"
 #include "scene/texture.h"
 
 namespace objektiv {
@@ -19,6 +20,19 @@ LightSample EscapingSample(const Vec3f& ref, const Vec3f& wi, float radius, Samp
   return s;
 }
 }  // namespace
+
+std::optional<LightLeSample> InfiniteLight::SampleLe(Vec2f u_pos, Vec2f u_dir, const SampledWavelengths& lambda) const {
+  const std::optional<LightSample> ls = SampleLi(scene_center_, u_dir, lambda);
+  if (!ls || !(ls->pdf > 0) || ls->L.IsBlack()) return std::nullopt;
+  const Vec2f disc = SampleUniformDiskConcentric(u_pos);
+  const Frame frame = Frame::FromZ(ls->wi);
+  LightLeSample s;
+  s.ray = Ray{scene_center_ + scene_radius_ * (ls->wi + frame.s * disc.x + frame.t * disc.y), -ls->wi};
+  s.L = ls->L;
+  s.pdf_pos = 1 / (kPi * scene_radius_ * scene_radius_);
+  s.pdf_dir = ls->pdf;
+  return s;
+}
 
 std::optional<LightSample> ConstantEnvironment::SampleLi(const Vec3f& ref, Vec2f u, const SampledWavelengths& lambda) const {
   Vec3f wi = SampleUniformSphere(u);

@@ -17,6 +17,9 @@ class InfiniteLight : public Light {
   // Radiance arriving along a ray that escaped in direction w.
   virtual SampledSpectrum Le(const Vec3f& w, const SampledWavelengths& lambda) const = 0;
   virtual float PdfLi(const Vec3f& w) const = 0;
+  // A direction chosen as SampleLi chooses it, the ray's origin uniform over the disc across
+  // the scene's bounding sphere, facing it from outside.
+  std::optional<LightLeSample> SampleLe(Vec2f u_pos, Vec2f u_dir, const SampledWavelengths& lambda) const override;
 
  protected:
   Vec3f scene_center_{0.f};

@@ -1,5 +1,7 @@
 #include "scene/light.h"
 
+#include "base/frame.h"
+#include "base/rng.h"
 #include "base/sampling.h"
 #include "scene/shape.h"
 
@@ -20,7 +22,22 @@ std::optional<LightSample> PointSourceSample(const Vec3f& p, const Vec3f& ref, f
   s.n = Vec3f(0.f);
   return s;
 }
+
+// A ray from the point p in a direction d chosen with density pdf_dir; the caller fills in L.
+LightLeSample RayFromPoint(const Vec3f& p, const Vec3f& d, float pdf_dir) {
+  LightLeSample s;
+  s.ray = Ray{p, d};
+  s.pdf_pos = 1;
+  s.pdf_dir = pdf_dir;
+  return s;
+}
 }  // namespace
+
+std::optional<LightLeSample> PointLight::SampleLe(Vec2f, Vec2f u_dir, const SampledWavelengths& lambda) const {
+  LightLeSample s = RayFromPoint(p_, SampleUniformSphere(u_dir), UniformSpherePdf());
+  s.L = intensity_.Sample(lambda);
+  return s;
+}
 
 std::optional<LightSample> PointLight::SampleLi(const Vec3f& ref, Vec2f, const SampledWavelengths& lambda) const {
   float dist2;
@@ -59,6 +76,15 @@ std::optional<LightSample> SpotLight::SampleLi(const Vec3f& ref, Vec2f, const Sa
   return s;
 }
 
+std::optional<LightLeSample> SpotLight::SampleLe(Vec2f, Vec2f u_dir, const SampledWavelengths& lambda) const {
+  const Vec3f d = Frame::FromZ(dir_).FromLocal(SampleUniformCone(u_dir, cos_cutoff_));
+  const float fall = Falloff(d);
+  if (fall == 0) return std::nullopt;
+  LightLeSample s = RayFromPoint(p_, Normalize(d), UniformConePdf(cos_cutoff_));
+  s.L = intensity_.Sample(lambda) * fall;
+  return s;
+}
+
 float SpotLight::Power() const {
   // Solid angle of the cone, counting the falloff region at half weight.
   return SpectrumToY(intensity_) * 2 * kPi * (1 - 0.5f * (cos_beam_ + cos_cutoff_));
@@ -71,6 +97,17 @@ std::optional<LightSample> DirectionalLight::SampleLi(const Vec3f& ref, Vec2f, c
   s.pdf = 1;
   s.p = ref + s.wi * (2 * scene_radius_);
   s.infinite = true;
+  return s;
+}
+
+std::optional<LightLeSample> DirectionalLight::SampleLe(Vec2f u_pos, Vec2f, const SampledWavelengths& lambda) const {
+  const Vec2f disc = SampleUniformDiskConcentric(u_pos);
+  const Frame frame = Frame::FromZ(dir_);
+  LightLeSample s;
+  s.ray = Ray{scene_center_ + scene_radius_ * (frame.s * disc.x + frame.t * disc.y - dir_), dir_};
+  s.L = irradiance_.Sample(lambda);
+  s.pdf_pos = 1 / (kPi * scene_radius_ * scene_radius_);
+  s.pdf_dir = 1;
   return s;
 }
 
@@ -100,6 +137,33 @@ std::optional<LightSample> AreaLight::SampleLi(const Vec3f& ref, Vec2f u, const 
     if (s.L.IsBlack()) out.reset();
   }
   return out;
+}
+
+std::optional<LightLeSample> AreaLight::SampleLe(Vec2f u_pos, Vec2f u_dir, const SampledWavelengths& lambda) const {
+  const ShapeSample ss = shape_->SampleArea(u_pos);
+  if (!(ss.pdf > 0)) return std::nullopt;
+  Vec3f n = ss.n;
+  float side_pmf = 1;
+  if (two_sided_) {  // the first half of u_dir.x picks the front, the second the back
+    side_pmf = 0.5f;
+    if (u_dir.x < 0.5f) {
+      u_dir.x = std::min(2 * u_dir.x, kOneMinusEpsilon);
+    } else {
+      u_dir.x = std::min(2 * (u_dir.x - 0.5f), kOneMinusEpsilon);
+      n = -n;
+    }
+  }
+  const Vec3f local = SampleCosineHemisphere(u_dir);
+  if (!(local.z > 0)) return std::nullopt;
+  const Vec3f d = Normalize(Frame::FromZ(n).FromLocal(local));
+  LightLeSample s;
+  s.ray = Ray{OffsetRayOrigin(ss.p, ss.p_error, n, d), d};
+  s.L = L(ss.n, ss.uv, d, lambda);
+  if (s.L.IsBlack()) return std::nullopt;
+  s.n = ss.n;
+  s.pdf_pos = ss.pdf;
+  s.pdf_dir = side_pmf * CosineHemispherePdf(local.z);
+  return s;
 }
 
 float AreaLight::PdfLi(const Vec3f& ref, const SurfaceInteraction& hit) const { return shape_->PdfFrom(ref, hit); }
