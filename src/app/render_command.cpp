@@ -139,6 +139,9 @@ int RunRender(const RenderArgs& a) {
   FilmSettings& fs_ = setup.film;
   if (a.crop_given) {
     fs_.crop = ParseCrop(a.crop, fs_.width, fs_.height);
+    if (setup.integrator->TracesLightToCamera())
+      spdlog::warn("{}: light paths land anywhere on the film and only those inside --crop count: renders split by "
+                   "crop are noisier than one render (split light-traced renders by --spp-range)", a.scene);
     if (part && !info.render_crop.Contains(fs_.crop))
       throw CLI::ValidationError("--crop", fmt::format("a part's pixels must lie inside the scene's crop window {},{},{},{}",
                                                        info.render_crop.x0, info.render_crop.y0, info.render_crop.x1,
