@@ -87,9 +87,10 @@ RenderSetup Build(const SceneDocument& doc, const GlassCatalog& glasses) {
   setup.integrator = BuildIntegrator(integrator, *setup.scene);
   if (setup.integrator->TracesLightToCamera() && !setup.camera->HasImportance())
     throw ErrorAt(integrator->loc,
-                  "this integrator carries light paths to the camera ({}), and light cannot find this '{}' sensor: "
-                  "perspective, thinlens and realistic (its exact lens, not lens_model thick or thin) can be found",
-                  integrator->type == "ptracer" ? "ptracer" : "light-traced caustics", sensor->type);
+                  "this integrator carries light paths to the camera (ptracer, or path with caustics), and light "
+                  "cannot find this '{}' sensor: perspective, thinlens and realistic (its exact lens, not lens_model "
+                  "thick or thin) can be found",
+                  sensor->type);
   if (setup.scene->lights().empty()) spdlog::warn("{}: the scene has no emitters; the image will be black", root.loc.file);
   return setup;
 }

@@ -42,7 +42,7 @@ void TraceLightPath(const Scene& scene, const LightPathSettings& settings, Sampl
   const Light* light = scene.SampleLight(sampler.Get1D(), &light_pmf);
   if (!light || !(light_pmf > 0)) return;
   SampledWavelengths lambda = SampledWavelengths::SampleVisible(sampler.Get1D());
-  const Vec2f u_pos = sampler.Get2D();
+  const Vec2f u_pos = sampler.Get2D();  // drawn before u_dir (arguments have no order)
   const std::optional<LightLeSample> les = light->SampleLe(u_pos, sampler.Get2D(), lambda);
   if (!les || !(les->pdf_pos > 0) || !(les->pdf_dir > 0)) return;
   const SampledSpectrum flux = les->Flux() * (ctx.LightPathScale() / light_pmf);
