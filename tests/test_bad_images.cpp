@@ -12,21 +12,12 @@
 
 #include "base/error.h"
 #include "io/image_io.h"
+#include "sanitizer_build.h"
 
 namespace objektiv {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Built with AddressSanitizer: GCC says so with __SANITIZE_ADDRESS__, clang before 17 only
-// through __has_feature.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;
-#elif defined(__has_feature)
-constexpr bool kAddressSanitizer = __has_feature(address_sanitizer);
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
 
 fs::path TempDir(const std::string& name) {
   fs::path dir = fs::temp_directory_path() / ("objektiv_bad_images_" + name);

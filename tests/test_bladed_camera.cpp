@@ -14,6 +14,7 @@
 #include "camera/realistic_camera.h"
 #include "optics/lens_file.h"
 #include "optics/paraxial.h"
+#include "sanitizer_build.h"
 
 namespace objektiv {
 namespace {
@@ -104,6 +105,7 @@ struct Opening {
 };
 
 TEST(BladedStop, LightAtEveryFilmPointMatchesAnIndependentEstimate) {
+  SKIP_UNDER_SANITIZERS("BladedStop.ShareOfTheLightIsThePolygonsAsInTheThickLensModel");
   // Film points over all azimuths, out to the corner: the camera (sampling the bladed stop's
   // own pupil bound) against the reference, within four standard errors.
   const LensSystem round = StoppedLens("dgauss.50mm", 11);
@@ -186,6 +188,7 @@ double AngleGap(double a, double b, int n) {
 }
 
 TEST(BladedStop, DefocusedPointLightImagesTheIrisTurnedByItsRotation) {
+  SKIP_UNDER_SANITIZERS("BladedStop.ShareOfTheLightIsThePolygonsAsInTheThickLensModel");
   // A small light 1 m in front of a lens focused at infinity: its blurred image is the iris
   // (a triangle here), on the axis and on every side of the frame alike. Forward (rays from
   // the light through the entrance pupil onto the film, exact tracer) and backward (the
@@ -265,6 +268,7 @@ TEST(BladedStop, DefocusedPointLightImagesTheIrisTurnedByItsRotation) {
 }
 
 TEST(BladedStop, FewCameraRaysAreWasted) {
+  SKIP_UNDER_SANITIZERS("BladedStop.ShareOfTheLightIsThePolygonsAsInTheThickLensModel");
   // Every shipped lens wide open and stopped down, with three straight blades (the sharpest
   // corners) and six curved ones: at least 95% of the rays traced get through, as for the
   // round stop.
@@ -294,6 +298,7 @@ TEST(BladedStop, FewCameraRaysAreWasted) {
 }
 
 TEST(BladedStop, RaysAreAimedOnlyWhereTheApertureMaskIsOpen) {
+  SKIP_UNDER_SANITIZERS("RealisticCamera.ApertureMaskWeightsTheLightThroughTheStop");
   // A mask open on a quarter of the stop: the camera samples the quarter's image only, so
   // nearly every ray it traces carries light; its total is the quarter's share.
   Image quarter(64, 64, {"R", "G", "B"});

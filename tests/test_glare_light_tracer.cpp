@@ -13,6 +13,7 @@
 #include "io/scene_loader.h"
 #include "render/glare_light_tracer.h"
 #include "render/lens_flare.h"
+#include "sanitizer_build.h"
 
 namespace objektiv {
 namespace {
@@ -63,6 +64,7 @@ Blocks BundleGhosts(const RenderSetup& setup) {
 }
 
 TEST(GlareLightTracer, PointLightGhostsMatchTheBundles) {
+  SKIP_UNDER_SANITIZERS("GlareLightTracer.SmallAreaLightHasThePointLightsGhosts");
   RenderSetup setup = LoadSceneFromString(GlareScene("", kPointLight), "glare.xml", {});
   const auto& camera = dynamic_cast<const RealisticCamera&>(*setup.camera);
   const CropWindow crop{0, 0, 48, 32};

@@ -14,6 +14,7 @@
 #include "optics/paraxial.h"
 #include "optics/real_focus.h"
 #include "optics/real_ray_analysis.h"
+#include "sanitizer_build.h"
 
 namespace objektiv {
 namespace {
@@ -65,6 +66,7 @@ std::optional<CameraRay> PassingRay(const Camera& cam, Vec2f pixel, float lambda
 }
 
 TEST(RealisticCamera, EachStopHalvesTheCentreIrradiance) {
+  SKIP_UNDER_SANITIZERS("RealisticCamera.CentreIrradianceOfAnIdealLensIsOneOverNSquared");
   for (const char* lens : {"dgauss.50mm", "tessar.brendel.100mm"}) {
     double previous = 0;
     for (double n : {2 * M_SQRT2, 4.0, 4 * M_SQRT2, 8.0}) {
@@ -89,6 +91,7 @@ TEST(RealisticCamera, CentreIrradianceOfAnIdealLensIsOneOverNSquared) {
 }
 
 TEST(RealisticCamera, PinholeLimitIsThePerspectiveCameraUpToDistortion) {
+  SKIP_UNDER_SANITIZERS("RealisticCamera.ThinLensLimit");
   // With the stop nearly closed every ray is the chief ray: the direction for a film point
   // is the perspective camera's at the paraxial focal length, up to the lens's distortion.
   for (const char* name : {"dgauss.50mm", "wide.22mm", "telephoto.250mm"}) {
@@ -162,6 +165,7 @@ TEST(RealisticCamera, ThinLensLimit) {
 }
 
 TEST(RealisticCamera, ThickLensMatchesTheRealLensNearTheAxis) {
+  SKIP_UNDER_SANITIZERS("RealisticCamera.PassRateAtLeastNinetyFivePercent");
   // In the paraxial regime (a small stop, a film point near the axis) the thick-lens camera
   // built from the prescription sends the chief ray where the real lens does, and its centre
   // irradiance at f/8 matches.
