@@ -41,6 +41,9 @@ std::vector<Case> NonSpecularCases() {
   pl.specular = S(1.f);
   pl.specular_sampling_weight = 0.5f;
   c.push_back({"plastic (diffuse lobe)", BSDF(f, pl, false)});
+  c.push_back({"phong", BSDF(f, PhongBxDF{S(0.5f), S(0.4f), 30}, false)});
+  c.push_back({"phong, broad lobe", BSDF(f, PhongBxDF{S(0.3f), S(0.6f), 2}, false)});
+  c.push_back({"phong, sharp lobe only", BSDF(f, PhongBxDF{S(0), S(0.9f), 300}, false)});
   return c;
 }
 
@@ -137,6 +140,89 @@ TEST(Bsdf, SmoothDielectricSplitsByFresnel) {
   EXPECT_TRUE(t->flags & kTransmission);
   EXPECT_NEAR(t->pdf, 1 - F, 1e-5);
   EXPECT_NEAR(std::sqrt(1 - wo.z * wo.z), 1.5f * std::sqrt(1 - t->wi.z * t->wi.z), 1e-5);
+}
+
+// The normalised Blinn-Phong lobe reflects exactly ks at normal incidence (its normalisation's
+// closed form) and less elsewhere, whatever the exponent.
+TEST(Bsdf, PhongLobeReflectsKsAtNormalIncidenceAndLessElsewhere) {
+  for (float exponent : {1.f, 10.f, 100.f, 1000.f}) {
+    const BSDF b(Frame(), PhongBxDF{S(0), S(0.8f), exponent}, false);
+    PCG32 g(3, uint64_t(exponent));
+    double previous = 1e9;
+    for (float deg : {0.f, 30.f, 60.f, 85.f}) {
+      const Vec3f wo(std::sin(Radians(deg)), 0, std::cos(Radians(deg)));
+      double sum = 0, sum2 = 0;
+      const int n = 200000;
+      for (int i = 0; i < n; ++i) {
+        auto s = b.Sample(wo, g.UniformFloat(), {g.UniformFloat(), g.UniformFloat()});
+        const double v = s ? s->f[0] * std::abs(s->wi.z) / s->pdf : 0;
+        sum += v;
+        sum2 += v * v;
+      }
+      const double albedo = sum / n, se = std::sqrt(std::max(0.0, sum2 / n - albedo * albedo) / n);
+      if (deg == 0) EXPECT_NEAR(albedo, 0.8, 4 * se + 1e-4) << "exponent " << exponent;
+      EXPECT_LE(albedo, 0.8 + 4 * se) << "exponent " << exponent << " at " << deg << " degrees";
+      EXPECT_LT(albedo, previous + 4 * se) << "exponent " << exponent << " at " << deg << " degrees";
+      previous = albedo;
+    }
+  }
+}
+
+// The delta lobes a Whitted tracer follows carry what sampling them carries (f |cos| of the
+// sample), and a smooth dielectric's two add up to all the light (R + T = 1 before the 1/eta^2
+// of radiance), with total internal reflection from inside beyond the critical angle.
+TEST(Bsdf, SpecularLobesCarryFresnelsShares) {
+  DielectricBxDF d;
+  d.eta = 1.5f;
+  const BSDF glass(Frame(), d, true);
+  SpecularLobe lobes[2];
+  for (float deg : {0.f, 30.f, 60.f, 89.f}) {
+    const Vec3f wo(std::sin(Radians(deg)), 0, std::cos(Radians(deg)));
+    ASSERT_EQ(glass.SpecularLobes(wo, lobes), 2) << deg;
+    const float F = FresnelDielectric(wo.z, 1.5f);
+    EXPECT_FALSE(lobes[0].transmission);
+    EXPECT_NEAR(lobes[0].weight[0], F, 1e-6);
+    EXPECT_NEAR(lobes[0].wi.x, -wo.x, 1e-6);
+    EXPECT_TRUE(lobes[1].transmission);
+    EXPECT_NEAR(lobes[1].weight[0] * 1.5f * 1.5f, 1 - F, 1e-5) << deg;  // radiance: T / eta^2 going in
+    EXPECT_NEAR(std::sin(Radians(deg)), 1.5f * std::sqrt(1 - Sqr(lobes[1].wi.z)), 1e-5);
+    // The same as sampling each lobe.
+    auto t = glass.Sample(wo, 0.999f, {0.5f, 0.5f});
+    ASSERT_TRUE(t);
+    EXPECT_NEAR(t->f[0] * std::abs(t->wi.z), lobes[1].weight[0], 1e-5);
+  }
+  // From inside the glass: beyond asin(1/1.5) = 41.8 degrees all of it reflects.
+  const Vec3f inside(std::sin(Radians(50.f)), 0, -std::cos(Radians(50.f)));
+  ASSERT_EQ(glass.SpecularLobes(inside, lobes), 1);
+  EXPECT_NEAR(lobes[0].weight[0], 1, 1e-6);
+  EXPECT_LT(lobes[0].wi.z, 0);
+
+  const SampledSpectrum eta = S(0.2f), k = S(3.f);
+  const BSDF mirror(Frame(), ConductorBxDF{eta, k, S(1.f), TrowbridgeReitz(0, 0)}, false);
+  const Vec3f wo = Normalize(Vec3f(0.3f, 0.2f, 1));
+  ASSERT_EQ(mirror.SpecularLobes(wo, lobes), 1);
+  EXPECT_NEAR(lobes[0].weight[0], FresnelComplex(wo.z, eta, k)[0], 1e-6);
+  // Rough and diffuse surfaces have none; Phong has none.
+  EXPECT_EQ(BSDF(Frame(), ConductorBxDF{eta, k, S(1.f), TrowbridgeReitz(0.3f, 0.3f)}, false).SpecularLobes(wo, lobes), 0);
+  EXPECT_EQ(BSDF(Frame(), DiffuseBxDF{S(0.5f)}, false).SpecularLobes(wo, lobes), 0);
+  EXPECT_EQ(BSDF(Frame(), PhongBxDF{S(0.5f), S(0.4f), 30}, false).SpecularLobes(wo, lobes), 0);
+  // Plastic: its coat's reflection, and behind a one-sided plastic nothing.
+  PlasticBxDF pl;
+  pl.eta = 1.49f;
+  pl.specular = S(0.9f);
+  ASSERT_EQ(BSDF(Frame(), pl, false).SpecularLobes(wo, lobes), 1);
+  EXPECT_NEAR(lobes[0].weight[0], 0.9f * FresnelDielectric(wo.z, 1.49f), 1e-6);
+  EXPECT_EQ(BSDF(Frame(), pl, false).SpecularLobes(-wo, lobes), 0);
+}
+
+TEST(Bsdf, DiffuseReflectanceIsTheDiffusePartsAlbedo) {
+  const Vec3f wo = Normalize(Vec3f(0.3f, 0, 1));
+  EXPECT_NEAR(BSDF(Frame(), DiffuseBxDF{S(0.6f)}, false).DiffuseReflectance(wo)[0], 0.6f, 1e-6);
+  EXPECT_NEAR(BSDF(Frame(), PhongBxDF{S(0.3f), S(0.5f), 20}, false).DiffuseReflectance(wo)[0], 0.3f, 1e-6);
+  EXPECT_TRUE(BSDF(Frame(), DiffuseBxDF{S(0.6f)}, false).DiffuseReflectance(-wo).IsBlack());
+  EXPECT_NEAR(BSDF(Frame(), DiffuseBxDF{S(0.6f)}, true).DiffuseReflectance(-wo)[0], 0.6f, 1e-6);
+  DielectricBxDF d;
+  EXPECT_TRUE(BSDF(Frame(), d, true).DiffuseReflectance(wo).IsBlack());
 }
 
 TEST(Bsdf, OneSidedOpaqueBsdfsAreBlackFromBehind) {

@@ -2,6 +2,7 @@
 #include "io/loader_context.h"
 #include "render/aov.h"
 #include "render/light_tracer.h"
+#include "render/whitted_integrator.h"
 
 namespace objektiv {
 
@@ -37,6 +38,17 @@ std::unique_ptr<Integrator> MakeAovIntegrator(const Properties& p, const Scene& 
   return std::make_unique<AovIntegrator>(scene, std::move(aovs), std::unique_ptr<CameraPathIntegrator>(camera_path));
 }
 
+// The classic tracer (render/whitted_integrator.h).
+std::unique_ptr<Integrator> MakeWhitted(const Properties& p, const Scene& scene) {
+  WhittedSettings w;
+  w.max_depth = int(p.IntIn("max_depth", w.max_depth, -1, 1 << 10));
+  if (w.max_depth == 0) throw ErrorAt(p.LocOf("max_depth"), "max_depth must be -1 (unbounded) or at least 1");
+  w.shadow_grid = int(p.IntIn("shadow_grid", w.shadow_grid, 1, 64));
+  w.bailout = float(p.FloatIn("bailout", w.bailout, 0, 1));
+  if (auto ambient = p.SpectrumProp("ambient")) w.ambient = MakeSpectrum(*ambient, SpectrumUsage::kIlluminant);
+  return std::make_unique<WhittedIntegrator>(scene, std::move(w));
+}
+
 }  // namespace
 
 const IntegratorRegistry& IntegratorPlugins() {
@@ -64,6 +76,12 @@ const IntegratorRegistry& IntegratorPlugins() {
              const PathDepths d = ParsePathDepths(p);
              return std::make_unique<LightTracerIntegrator>(scene, d.max_depth, d.rr_depth);
            }},
+          {"whitted",
+           {{"max_depth", PropType::kInteger},
+            {"shadow_grid", PropType::kInteger},
+            {"bailout", PropType::kFloat},
+            {"ambient", PropType::kSpectrum}},
+           MakeWhitted},
           {"aov", {{"aovs", PropType::kString}, {"integrator", PropType::kObject}}, MakeAovIntegrator},
       });
   return registry;

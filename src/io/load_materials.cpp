@@ -1,5 +1,8 @@
 // The <bsdf> plugins (materials).
+#include <algorithm>
 #include <cmath>
+
+#include <spdlog/spdlog.h>
 
 #include "base/cie.h"
 #include "io/loader_context.h"
@@ -140,6 +143,34 @@ std::shared_ptr<Material> MakePlastic(const Properties& p, LoaderContext& ctx) {
       GetTexture(p, "specular_reflectance", SpectrumUsage::kUnbounded, 1, ctx), p.Bool("nonlinear", false));
 }
 
+// The classic tracer's `phong` (Mitsuba 0.6's names): diffuse and specular colour, exponent.
+std::shared_ptr<Material> MakePhong(const Properties& p, LoaderContext& ctx) {
+  auto kd = GetTexture(p, "diffuse_reflectance", SpectrumUsage::kAlbedo, 0.5f, ctx);
+  auto ks = GetTexture(p, "specular_reflectance", SpectrumUsage::kAlbedo, 0.2f, ctx);
+  const float exponent = float(p.FloatIn("exponent", 30, 0, 1e5));
+  // The colours as written (where both are numbers): their sum above 1 reflects more than
+  // arrives. (An RGB colour's smooth spectrum can also exceed its RGB values near the ends of
+  // the visible range; the material scales those wavelengths without a word.)
+  auto largest = [&p](const char* name, const SpectrumTexture& texture, float fallback) -> std::optional<float> {
+    if (!dynamic_cast<const ConstantTexture*>(&texture)) return std::nullopt;
+    if (!p.Has(name)) return fallback;
+    const std::optional<SpectrumValue> v = p.SpectrumProp(name);
+    if (!v) return std::nullopt;
+    if (v->kind == SpectrumValue::Kind::kRgb) return std::max({v->rgb.x, v->rgb.y, v->rgb.z});
+    if (v->kind == SpectrumValue::Kind::kConstant) return v->value;
+    if (v->kind == SpectrumValue::Kind::kSampled && !v->values.empty())
+      return *std::max_element(v->values.begin(), v->values.end());
+    return std::nullopt;
+  };
+  const std::optional<float> d = largest("diffuse_reflectance", *kd, 0.5f),
+                             s = largest("specular_reflectance", *ks, 0.2f);
+  if (d && s && *d + *s > 1.0001f)
+    spdlog::warn("{}:{}: phong: diffuse_reflectance + specular_reflectance reach {:.3g}, above 1: both are scaled "
+                 "down where they sum above 1, so that the surface reflects no more than arrives",
+                 p.loc().file, p.loc().line, *d + *s);
+  return std::make_shared<PhongMaterial>(std::move(kd), std::move(ks), exponent);
+}
+
 std::shared_ptr<Material> MakeTwoSided(const Properties& p, LoaderContext& ctx) {
   auto inner = p.Children("bsdf");
   if (inner.size() != 1) throw ErrorAt(p.loc(), "twosided needs exactly one nested <bsdf>, got {}", inner.size());
@@ -172,6 +203,11 @@ const MaterialRegistry& MaterialPlugins() {
             {"specular_reflectance", PropType::kSpectrumOrTexture},
             {"nonlinear", PropType::kBoolean}},
            MakePlastic},
+          {"phong",
+           {{"diffuse_reflectance", PropType::kSpectrumOrTexture},
+            {"specular_reflectance", PropType::kSpectrumOrTexture},
+            {"exponent", PropType::kFloat}},
+           MakePhong},
           {"twosided", {{"bsdf", PropType::kObject}}, MakeTwoSided},
       });
   return registry;

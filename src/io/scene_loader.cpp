@@ -91,7 +91,7 @@ RenderSetup Build(const SceneDocument& doc, const GlassCatalog& glasses) {
                   "cannot find this '{}' sensor: perspective, thinlens and realistic (its exact lens, not lens_model "
                   "thick or thin) can be found",
                   sensor->type);
-  if (setup.scene->lights().empty()) spdlog::warn("{}: the scene has no emitters; the image will be black", root.loc.file);
+  if (setup.scene->lights().empty() && !setup.integrator->LightsTheSceneItself()) spdlog::warn("{}: the scene has no emitters; the image will be black", root.loc.file);
   return setup;
 }
 

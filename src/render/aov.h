@@ -50,6 +50,7 @@ class AovIntegrator final : public CameraPathIntegrator {
   }
   void TraceLightPaths(Sampler& sampler, BlockContext& ctx) const override { inner_->TraceLightPaths(sampler, ctx); }
   bool TracesLightToCamera() const override { return inner_->TracesLightToCamera(); }
+  bool LightsTheSceneItself() const override { return inner_->LightsTheSceneItself(); }
   int AovChannels() const override;
   void EvaluateAovs(const Ray& ray, const std::optional<SurfaceInteraction>& hit, const SampledWavelengths& lambda,
                     uint64_t seed, float* out) const override;

@@ -18,6 +18,8 @@ class Integrator {
   // Whether the integrator carries light to the camera from the light side
   // (Camera::SampleImportance): the scene loader refuses cameras that cannot be reached so.
   virtual bool TracesLightToCamera() const { return false; }
+  // Whether it lights the scene without emitters (whitted's ambient term).
+  virtual bool LightsTheSceneItself() const { return false; }
   const Scene& scene() const { return scene_; }
 
  protected:

@@ -7,7 +7,16 @@
 
 namespace objektiv {
 
-using BxDF = std::variant<DiffuseBxDF, DielectricBxDF, ConductorBxDF, PlasticBxDF>;
+using BxDF = std::variant<DiffuseBxDF, DielectricBxDF, ConductorBxDF, PlasticBxDF, PhongBxDF>;
+
+// A delta lobe of a BSDF at wo (scene/bsdf_lobes.cpp): the one direction it sends light to and
+// the share it sends (f |cos theta_i| of the lobe: Fresnel reflectance or transmittance with
+// the colour scales, and the 1/eta^2 of radiance crossing an interface).
+struct SpecularLobe {
+  Vec3f wi;
+  SampledSpectrum weight;
+  bool transmission = false;
+};
 
 class BSDF {
  public:
@@ -33,8 +42,16 @@ class BSDF {
   // Whether Sample uses its 1D number (to choose between lobes); single-lobe BxDFs do not,
   // so integrators need not draw it.
   bool UsesLobeChoice() const {
-    return std::holds_alternative<DielectricBxDF>(bxdf_) || std::holds_alternative<PlasticBxDF>(bxdf_);
+    return std::holds_alternative<DielectricBxDF>(bxdf_) || std::holds_alternative<PlasticBxDF>(bxdf_) ||
+           std::holds_alternative<PhongBxDF>(bxdf_);
   }
+  // Every delta lobe at wo, written to out (at most two: a smooth dielectric's reflection and
+  // refraction), for tracers that follow each of them instead of sampling one (whitted).
+  int SpecularLobes(const Vec3f& wo_world, SpecularLobe out[2], TransportMode mode = TransportMode::kRadiance) const;
+  // The reflectance of the BSDF's diffuse part seen from wo, the share of a uniform ambient
+  // light it returns: Lambert's R, Phong's kd, plastic's base through its coat (pi f toward the
+  // shading normal); zero for the others.
+  SampledSpectrum DiffuseReflectance(const Vec3f& wo_world) const;
   const Frame& frame() const { return frame_; }
 
  private:

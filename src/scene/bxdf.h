@@ -74,4 +74,18 @@ struct PlasticBxDF {
   int Flags() const { return kReflection | kDiffuse | kSpecular; }
 };
 
+// Energy-conserving Blinn-Phong (the classic tracer's `phong`): a Lambertian lobe kd / pi and a
+// normalised half-vector lobe ks (n+2)(n+4) / (8 pi (2^(-n/2) + n)) cos^n(theta_h), whose
+// directional albedo is exactly ks at normal incidence and less elsewhere, so kd + ks <= 1
+// never reflects more than arrives (scene/phong_bxdf.cpp). Front side only, like the diffuse.
+struct PhongBxDF {
+  SampledSpectrum kd, ks;
+  float exponent = 30;
+  SampledSpectrum f(const Vec3f& wo, const Vec3f& wi) const;
+  std::optional<BSDFSample> Sample(const Vec3f& wo, float uc, Vec2f u) const;
+  float Pdf(const Vec3f& wo, const Vec3f& wi) const;
+  int Flags() const;
+  float SpecularProbability() const;  // of choosing the lobe of ks when sampling
+};
+
 }  // namespace objektiv

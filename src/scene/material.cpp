@@ -63,4 +63,20 @@ BSDF PlasticMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& 
   return BSDF(si.shading, b, two_sided_);
 }
 
+BSDF PhongMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const {
+  PhongBxDF b;
+  b.kd = diffuse_->Evaluate(si.uv, lambda);
+  b.ks = specular_->Evaluate(si.uv, lambda);
+  b.exponent = exponent_;
+  for (int i = 0; i < kSpectrumSamples; ++i) {
+    b.kd[i] = Clamp(b.kd[i], 0, 1);
+    b.ks[i] = Clamp(b.ks[i], 0, 1);
+    if (const float sum = b.kd[i] + b.ks[i]; sum > 1) {
+      b.kd[i] /= sum;
+      b.ks[i] /= sum;
+    }
+  }
+  return BSDF(si.shading, b, two_sided_);
+}
+
 }  // namespace objektiv

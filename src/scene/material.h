@@ -74,4 +74,18 @@ class PlasticMaterial final : public Material {
   bool nonlinear_;
 };
 
+// The classic tracer's energy-conserving Blinn-Phong (PhongBxDF): where kd + ks exceeds 1 at a
+// wavelength both are scaled down to sum to 1 (the loader warns when their means do).
+class PhongMaterial final : public Material {
+ public:
+  PhongMaterial(std::shared_ptr<const SpectrumTexture> diffuse, std::shared_ptr<const SpectrumTexture> specular,
+                float exponent)
+      : diffuse_(std::move(diffuse)), specular_(std::move(specular)), exponent_(exponent) {}
+  BSDF GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const override;
+
+ private:
+  std::shared_ptr<const SpectrumTexture> diffuse_, specular_;
+  float exponent_;
+};
+
 }  // namespace objektiv

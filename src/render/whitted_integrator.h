@@ -1,0 +1,52 @@
+// The classic ray tracer (Whitted 1980, with the soft shadows of distributed ray tracing):
+// light from every light source at each surface the camera sees, and the mirror reflections
+// and refractions followed recursively. It answers quickly and nearly without noise, which is
+// what a preview needs; what it leaves out is every other path of light (the light a diffuse
+// surface passes on, caustics), as the classic tracers do.
+//
+// At a surface: its emission; for the BSDF's non-specular part (Lambert, Phong, plastic's base,
+// rough metal and glass), the light of each light source, found by shadow rays: one for a
+// point, spot or directional light (hard shadows), an n x n grid over an area or environment
+// light, turned by one random offset per surface point (stratified and unbiased: soft shadows
+// with little noise); an optional ambient radiance times the diffuse reflectance; then each
+// delta lobe (mirror, Fresnel-weighted reflection and refraction of smooth glass, total internal
+// reflection included, plastic's coat) followed by a ray of its own, through the Beer-Lambert
+// absorption of the glass it runs in. Shadow rays stop at glass, as they do in the classic
+// tracers and in the path tracer's light sampling.
+//
+// max_depth counts path segments as Mitsuba does (1: emitters seen directly, 2: direct
+// light, each reflection or refraction one more); a branch whose weight falls below `bailout`
+// (POV-Ray's adc_bailout) is not followed.
+#pragma once
+#include <optional>
+
+#include "render/integrator.h"
+
+namespace objektiv {
+
+struct WhittedSettings {
+  int max_depth = 8;
+  int shadow_grid = 4;  // n: n x n shadow rays per area or environment light
+  float bailout = 1.f / 255;
+  std::optional<Spectrum> ambient;  // radiance from every direction, unshadowed
+};
+
+class WhittedIntegrator final : public CameraPathIntegrator {
+ public:
+  WhittedIntegrator(const Scene& scene, WhittedSettings settings)
+      : CameraPathIntegrator(scene), settings_(std::move(settings)) {}
+  SampledSpectrum Li(const Ray& ray, const std::optional<SurfaceInteraction>& first_hit, SampledWavelengths& lambda,
+                     Sampler& sampler, BlockContext& ctx) const override;
+  bool LightsTheSceneItself() const override { return settings_.ambient.has_value(); }
+
+ private:
+  // Light leaving si toward the ray's origin (emission excluded); `weight` is the share of it
+  // that reaches the camera, `segments` the path's segments so far.
+  SampledSpectrum Shade(const SurfaceInteraction& si, SampledWavelengths& lambda, Sampler& sampler,
+                        RayCounts& counts, const SampledSpectrum& weight, int segments) const;
+  SampledSpectrum LightFromSources(const SurfaceInteraction& si, const BSDF& bsdf, const SampledWavelengths& lambda,
+                                   Sampler& sampler, RayCounts& counts) const;
+  WhittedSettings settings_;
+};
+
+}  // namespace objektiv

@@ -1,0 +1,157 @@
+// The classic tracer (render/whitted_integrator.h, integrator `whitted`): the same image as the
+// path tracer where both are exact (diffuse and Phong surfaces lit directly by point, spot,
+// directional and area lights; a mirror; a glass slab with absorption in front of a lamp); the
+// ambient term as the light of a uniform sky; the loader's checks.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include "base/error.h"
+#include "image_estimates.h"
+#include "render_helpers.h"
+
+namespace objektiv {
+namespace {
+
+using test::Estimate;
+using test::Estimated;
+using test::ExpectSameImage;
+using test::kSize;
+using test::RenderXml;
+
+// `shapes` and `lights` seen from the front and above by a 45-degree pinhole camera.
+std::string Scene(const std::string& integrator, const std::string& shapes, int spp, int seed) {
+  return fmt::format(R"(<scene version="3.0.0">
+  {}
+  <sensor type="perspective"><float name="fov" value="45"/>
+    <transform name="to_world"><lookat origin="0, 1.2, 3.2" target="0, 0.5, 0" up="0, 1, 0"/></transform>
+    <sampler type="independent"><integer name="sample_count" value="{}"/><integer name="seed" value="{}"/></sampler>
+    <film type="hdrfilm"><integer name="width" value="{}"/><integer name="height" value="{}"/><rfilter type="box"/></film>
+  </sensor>
+  {}
+</scene>)",
+                     integrator, spp, seed, kSize, kSize, shapes);
+}
+
+// A checkered floor with a diffuse ball and a Phong ball on it (no surface sees another's
+// light but through `lights`' direct light at max_depth 2).
+const char* kBalls = R"(
+  <shape type="rectangle"><transform name="to_world"><rotate x="1" angle="-90"/><scale value="3"/></transform>
+    <bsdf type="diffuse"><texture type="checkerboard" name="reflectance">
+      <rgb name="color0" value="0.7, 0.7, 0.7"/><rgb name="color1" value="0.2, 0.3, 0.2"/>
+      <transform name="to_uv"><scale x="6" y="6"/></transform></texture></bsdf></shape>
+  <shape type="sphere"><point name="center" x="-0.5" y="0.4" z="0"/><float name="radius" value="0.4"/>
+    <bsdf type="diffuse"><rgb name="reflectance" value="0.6, 0.5, 0.3"/></bsdf></shape>
+  <shape type="sphere"><point name="center" x="0.55" y="0.45" z="-0.2"/><float name="radius" value="0.45"/>
+    <bsdf type="phong"><rgb name="diffuse_reflectance" value="0.3, 0.1, 0.1"/>
+      <rgb name="specular_reflectance" value="0.5, 0.5, 0.5"/><float name="exponent" value="40"/></bsdf></shape>)";
+
+std::string Integrator(const char* type, int max_depth, const std::string& more = "") {
+  return fmt::format(R"(<integrator type="{}"><integer name="max_depth" value="{}"/>{}</integrator>)", type, max_depth,
+                     more);
+}
+
+// `whitted` and `path` at the same max_depth render the same image, telling an error of
+// `resolution` in total.
+void ExpectSameAsPathTracer(const std::string& shapes, int max_depth, int path_spp, int whitted_spp,
+                            double resolution, const std::string& what) {
+  const Estimate path =
+      Estimated([&](int seed) { return Scene(Integrator("path", max_depth), shapes, path_spp, seed); });
+  const Estimate whitted =
+      Estimated([&](int seed) { return Scene(Integrator("whitted", max_depth), shapes, whitted_spp, seed); });
+  ExpectSameImage(path, whitted, resolution, what);
+}
+
+TEST(Whitted, DirectLightOfPointSpotAndDirectionalLightsIsThePathTracers) {
+  for (const char* light :
+       {R"(<emitter type="point"><point name="position" x="-1" y="2.5" z="1.5"/><rgb name="intensity" value="8, 8, 7"/></emitter>)",
+        R"(<emitter type="spot"><rgb name="intensity" value="12, 12, 12"/><float name="cutoff_angle" value="30"/>
+           <transform name="to_world"><lookat origin="1, 2.5, 1" target="0, 0, -0.2"/></transform></emitter>)",
+        R"(<emitter type="directional"><vector name="direction" x="0.4" y="-1" z="-0.3"/><rgb name="irradiance" value="2, 2, 2"/></emitter>)"})
+    ExpectSameAsPathTracer(std::string(kBalls) + light, 2, 16, 4, 0.03, light);
+}
+
+TEST(Whitted, SoftShadowsOfAnAreaLightAreThePathTracers) {
+  const std::string lamp = R"(<shape type="rectangle">
+    <transform name="to_world"><scale x="0.5" y="0.3"/><rotate x="1" angle="90"/><translate x="-0.3" y="2" z="0.6"/></transform>
+    <emitter type="area"><rgb name="radiance" value="10, 9, 8"/></emitter></shape>)";
+  ExpectSameAsPathTracer(kBalls + lamp, 2, 64, 4, 0.03, "area light");
+}
+
+// A mirror ball on a diffuse floor lit by a point light: the floor seen in the mirror (camera,
+// mirror, floor, light: three segments) and the mirror's shadow on the floor.
+TEST(Whitted, MirrorReflectionIsThePathTracers) {
+  const char* scene = R"(
+  <shape type="rectangle"><transform name="to_world"><rotate x="1" angle="-90"/><scale value="3"/></transform>
+    <bsdf type="diffuse"><texture type="checkerboard" name="reflectance">
+      <rgb name="color0" value="0.8, 0.8, 0.8"/><rgb name="color1" value="0.1, 0.1, 0.4"/>
+      <transform name="to_uv"><scale x="6" y="6"/></transform></texture></bsdf></shape>
+  <shape type="sphere"><point name="center" x="0" y="0.6" z="-0.2"/><float name="radius" value="0.6"/>
+    <bsdf type="conductor"><string name="material" value="Al"/></bsdf></shape>
+  <emitter type="point"><point name="position" x="-1.2" y="2.5" z="1.2"/><rgb name="intensity" value="8, 8, 8"/></emitter>)";
+  ExpectSameAsPathTracer(scene, 3, 16, 4, 0.03, "mirror");
+}
+
+// A tilted slab of absorbing glass in front of a lamp: the lamp seen through it (refracted,
+// shifted, dimmed by Fresnel at two faces and by Beer-Lambert inside, with its internal
+// reflections), and the lamp's reflection in it.
+TEST(Whitted, GlassSlabWithAbsorptionIsThePathTracers) {
+  const char* scene = R"(
+  <shape type="rectangle">
+    <transform name="to_world"><scale x="0.8" y="0.5"/><translate y="0.5" z="-1"/></transform>
+    <emitter type="area"><rgb name="radiance" value="2, 3, 4"/></emitter></shape>
+  <shape type="cube">
+    <transform name="to_world"><scale x="0.6" y="0.6" z="0.08"/><rotate y="1" angle="35"/><rotate x="1" angle="10"/>
+      <translate y="0.55" z="0"/></transform>
+    <bsdf type="dielectric"><float name="int_ior" value="1.6"/>
+      <rgb name="absorption" value="0.5, 2, 4"/></bsdf></shape>
+  <shape type="rectangle">
+    <transform name="to_world"><scale x="0.4" y="0.3"/><rotate y="1" angle="180"/><translate x="0.9" y="1.1" z="2"/></transform>
+    <emitter type="area"><rgb name="radiance" value="5, 4, 3"/></emitter></shape>)";
+  ExpectSameAsPathTracer(scene, 12, 64, 4, 0.03, "glass slab");
+}
+
+// The ambient term is the light of a uniform sky that nothing shadows: under no other light, a
+// diffuse floor that sees only the sky is the path tracer's under that sky.
+TEST(Whitted, AmbientTermIsTheLightOfAnUnshadowedUniformSky) {
+  const char* floor = R"(<shape type="rectangle"><transform name="to_world"><rotate x="1" angle="-90"/><scale value="30"/></transform>
+    <bsdf type="diffuse"><rgb name="reflectance" value="0.6, 0.4, 0.2"/></bsdf></shape>)";
+  Estimate path = Estimated([&](int seed) {
+    return Scene(Integrator("path", 2), std::string(floor) + R"(<emitter type="constant"><rgb name="radiance" value="0.5, 0.7, 0.9"/></emitter>)",
+                 64, seed);
+  });
+  Estimate whitted = Estimated([&](int seed) {
+    return Scene(Integrator("whitted", 2, R"(<rgb name="ambient" value="0.5, 0.7, 0.9"/>)"), floor, 1, seed);
+  });
+  // The sky itself is seen above the horizon by the path tracer only: compare the floor's rows.
+  for (int k = 0; k < test::kBlocks; ++k)
+    if (k < test::kBlocks / 2) path.mean[k] = whitted.mean[k] = path.var[k] = whitted.var[k] = 0;
+  ExpectSameImage(path, whitted, 0.03, "ambient");
+}
+
+TEST(Whitted, BadSettingsAreErrorsAtTheirLine) {
+  for (const char* bad : {R"(<integer name="max_depth" value="0"/>)", R"(<integer name="shadow_grid" value="0"/>)",
+                          R"(<float name="bailout" value="2"/>)", R"(<float name="ambient" value="-1"/>)"}) {
+    const std::string xml = fmt::format(
+        "<scene version=\"3.0.0\">\n<integrator type=\"whitted\">\n{}\n</integrator>\n<sensor type=\"perspective\"/>\n</scene>",
+        bad);
+    try {
+      LoadSceneFromString(xml, "test.xml", {});
+      ADD_FAILURE() << "accepted: " << bad;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("test.xml:3"), std::string::npos) << e.what();
+    }
+  }
+  const std::string phong =
+      "<scene version=\"3.0.0\">\n<sensor type=\"perspective\"/>\n<shape type=\"sphere\"><bsdf type=\"phong\">\n"
+      "<float name=\"exponent\" value=\"-2\"/>\n</bsdf></shape>\n</scene>";
+  try {
+    LoadSceneFromString(phong, "test.xml", {});
+    ADD_FAILURE() << "a negative exponent accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("test.xml:4"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace objektiv
