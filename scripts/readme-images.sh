@@ -3,7 +3,8 @@
 # scenes in scenes/ (a few minutes on 2 cores). Needs a build (make) and oiiotool
 # (openimageio-tools) to put panels side by side. `readme-images.sh flare` renders only the
 # ghost and starburst pictures (docs/images/flare-*.png), `readme-images.sh caustics` the
-# light-traced caustics (docs/images/caustics-*.png).
+# light-traced caustics (docs/images/caustics-*.png), `readme-images.sh bump` the bump-mapped
+# floor (docs/images/bump-*.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/objektiv
@@ -44,6 +45,16 @@ caustics() {
   render scenes/prism/spectrum.xml -D spp=256 -D width=480 -D height=300 -o "$tmp/spectrum.exr"
   cp "$tmp/spectrum.png" "$out/caustics-prism-spectrum.png"
 }
+bump() {
+  # The table and chairs on the bump-mapped tiled floor.
+  render scenes/bump/table-and-chairs.xml -D spp=64 -D width=640 -D height=400 -o "$tmp/table.exr"
+  cp "$tmp/table.png" "$out/bump-table-and-chairs.png"
+}
+if [ "${1:-}" = bump ]; then
+  bump
+  echo "wrote $out/bump-*.png"
+  exit 0
+fi
 if [ "${1:-}" = flare ]; then
   flare
   echo "wrote $out/flare-*.png"
@@ -84,4 +95,5 @@ for f in 0.85 2.25 6.05; do
 done
 oiiotool "$tmp/focus-0.85.png" "$tmp/focus-2.25.png" "$tmp/focus-6.05.png" --mosaic:pad=6 3x1 -o "$out/lens-focus-series.png"
 flare
-echo "wrote $out/lens-*.png and $out/flare-*.png"
+bump
+echo "wrote $out/lens-*.png, $out/flare-*.png and $out/bump-*.png"

@@ -5,9 +5,11 @@
 #include <spdlog/spdlog.h>
 
 #include "base/cie.h"
+#include "base/log.h"
 #include "io/loader_context.h"
 #include "optics/glass_catalog.h"
 #include "scene/conductor_data.h"
+#include "scene/normal_mapping.h"
 
 namespace objektiv {
 namespace {
@@ -182,6 +184,44 @@ std::shared_ptr<Material> MakeTwoSided(const Properties& p, LoaderContext& ctx) 
   return m;
 }
 
+// The one nested <bsdf> a bumpmap or normalmap wraps, built for it alone (an enclosing
+// twosided changes it).
+std::shared_ptr<Material> WrappedMaterial(const Properties& p, LoaderContext& ctx) {
+  auto inner = p.Children("bsdf");
+  if (inner.size() != 1) throw ErrorAt(p.loc(), "{} needs exactly one nested <bsdf> to wrap, got {}", p.type(), inner.size());
+  return MaterialPlugins().Build(*inner[0], ctx);
+}
+
+// Mitsuba 3's bumpmap: heights from one texture (named 'arg', or unnamed), times 'scale'.
+std::shared_ptr<Material> MakeBumpMap(const Properties& p, LoaderContext& ctx) {
+  auto unnamed = p.Children("texture");
+  const size_t given = unnamed.size() + (p.Has("arg") ? 1 : 0);
+  if (given == 0)
+    throw ErrorAt(p.loc(), "bumpmap needs a texture of heights: a nested <texture name=\"arg\" type=\"bitmap\"> (or one unnamed <texture>)");
+  if (given > 1) throw ErrorAt(p.loc(), "bumpmap takes one texture of heights, got {}", given);
+  std::shared_ptr<const SpectrumTexture> height = p.Has("arg") ? GetTexture(p, "arg", SpectrumUsage::kData, 0, ctx)
+                                                               : BuildTexture(*unnamed[0], SpectrumUsage::kData, ctx);
+  const double scale = p.Float("scale", 1);
+  if (!std::isfinite(scale)) throw ErrorAt(p.LocOf("scale"), "bumpmap: scale must be finite, got {}", scale);
+  std::shared_ptr<Material> inner = WrappedMaterial(p, ctx);
+  if (height->IsPiecewiseConstant() || scale == 0) {
+    const Location& at = p.Has("arg") ? p.LocOf("arg") : unnamed[0]->loc;
+    spdlog::warn("{}:{}: bumpmap changes nothing: {}", at.file, at.line,
+                 scale == 0 ? "its scale is 0"
+                            : "its heights have no slope anywhere (a constant, a checkerboard of constants or a bitmap "
+                              "with filter_type nearest; use a bilinear bitmap)");
+  }
+  return std::make_shared<BumpMapMaterial>(std::move(inner), std::move(height), float(scale));
+}
+
+// Mitsuba 3's normalmap: tangent-space normals from the texture named 'normalmap'.
+std::shared_ptr<Material> MakeNormalMap(const Properties& p, LoaderContext& ctx) {
+  if (!p.Has("normalmap"))
+    throw ErrorAt(p.loc(), "normalmap needs its texture of normals: a nested <texture name=\"normalmap\" type=\"bitmap\">");
+  std::shared_ptr<const SpectrumTexture> normals = GetTexture(p, "normalmap", SpectrumUsage::kData, 0, ctx);
+  return std::make_shared<NormalMapMaterial>(WrappedMaterial(p, ctx), std::move(normals));
+}
+
 }  // namespace
 
 const MaterialRegistry& MaterialPlugins() {
@@ -209,6 +249,13 @@ const MaterialRegistry& MaterialPlugins() {
             {"exponent", PropType::kFloat}},
            MakePhong},
           {"twosided", {{"bsdf", PropType::kObject}}, MakeTwoSided},
+          {"bumpmap",
+           {{"bsdf", PropType::kObject},
+            {"arg", PropType::kSpectrumOrTexture},
+            {"texture", PropType::kObject},
+            {"scale", PropType::kFloat}},
+           MakeBumpMap},
+          {"normalmap", {{"bsdf", PropType::kObject}, {"normalmap", PropType::kSpectrumOrTexture}}, MakeNormalMap},
       });
   return registry;
 }

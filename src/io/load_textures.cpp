@@ -15,6 +15,7 @@ Spectrum MakeSpectrum(const SpectrumValue& v, SpectrumUsage usage) {
         case SpectrumUsage::kAlbedo:
           return Spectrum::RgbAlbedo(v.rgb);
         case SpectrumUsage::kUnbounded:
+        case SpectrumUsage::kData:
           return Spectrum::RgbUnbounded(v.rgb);
         case SpectrumUsage::kIlluminant:
           return Spectrum::RgbIlluminant(v.rgb);
@@ -42,6 +43,14 @@ std::shared_ptr<const SpectrumTexture> GetTexture(const Properties& props, const
     return BuildTexture(*obj, usage, ctx);
   }
   if (auto v = props.SpectrumProp(name)) {
+    if (usage == SpectrumUsage::kData) {
+      // Data (heights, normals) is numbers: a texture, a number or an <rgb>, never a spectrum.
+      if (v->kind == SpectrumValue::Kind::kRgb) return std::make_shared<ConstantTexture>(MakeSpectrum(*v, usage), v->rgb);
+      if (v->kind == SpectrumValue::Kind::kConstant)
+        return std::make_shared<ConstantTexture>(MakeSpectrum(*v, usage), Vec3f(v->value));
+      throw ErrorAt(props.LocOf(name), "'{}' holds data (heights or normals): give a texture, a number or an <rgb>, not a spectrum",
+                    name);
+    }
     if (usage == SpectrumUsage::kAlbedo && v->kind == SpectrumValue::Kind::kRgb &&
         (MinComponent(v->rgb) < 0 || MaxComponent(v->rgb) > 1))
       throw ErrorAt(props.LocOf(name), "reflectance '{}' must lie in [0, 1]", name);
@@ -61,7 +70,9 @@ constexpr Named<WrapMode> kWrapModes[] = {
 
 std::shared_ptr<const SpectrumTexture> BuildBitmap(const Properties& p, SpectrumUsage usage, LoaderContext&) {
   std::string file = ResolvePath(p.LocOf("filename"), p.String("filename"));
-  bool raw = p.Bool("raw", false);
+  // Data (a bump map's heights, a normal map's normals) is read as stored, unless the scene
+  // asks for sRGB decoding with raw = false; colours are decoded unless raw = true.
+  bool raw = p.Bool("raw", usage == SpectrumUsage::kData);
   FilterMode filter = p.Choice("filter_type", FilterMode::kBilinear, kFilterModes);
   WrapMode wrap = p.Choice("wrap_mode", WrapMode::kRepeat, kWrapModes);
   Image img = ReadImageRgb(file, raw);

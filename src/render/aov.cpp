@@ -85,7 +85,7 @@ Vec3f AlbedoXyz(const Ray& ray, const SurfaceInteraction& hit, const SampledWave
   // Energy, not radiance: light entering glass is not counted n^2 denser.
   const std::optional<BSDFSample> s = bsdf.Sample(-Normalize(ray.d), uc, u, TransportMode::kImportance);
   if (!s || !(s->pdf > 0)) return Vec3f(0.f);
-  SampledSpectrum rho = s->f * (AbsDot(s->wi, hit.shading.n) / s->pdf);
+  SampledSpectrum rho = s->f * (AbsDot(s->wi, bsdf.frame().n) / s->pdf);
   for (int i = 0; i < kSpectrumSamples; ++i) rho[i] *= D65Normalized(l[i]);
   return SampledToXYZ(rho, l);
 }
@@ -105,7 +105,13 @@ void AovIntegrator::EvaluateAovs(const Ray& ray, const std::optional<SurfaceInte
       case AovType::kPosition: *out++ = hit->p.x, *out++ = hit->p.y, *out++ = hit->p.z; break;
       case AovType::kUv: *out++ = hit->uv.x, *out++ = hit->uv.y; break;
       case AovType::kGeoNormal: *out++ = hit->n.x, *out++ = hit->n.y, *out++ = hit->n.z; break;
-      case AovType::kShNormal: *out++ = hit->shading.n.x, *out++ = hit->shading.n.y, *out++ = hit->shading.n.z; break;
+      case AovType::kShNormal: {
+        // The normal the material shades with: a bump or normal map's, where there is one.
+        const Material* m = hit->shape ? hit->shape->material.get() : nullptr;
+        const Vec3f ns = m ? m->ShadingFrame(*hit).n : hit->shading.n;
+        *out++ = ns.x, *out++ = ns.y, *out++ = ns.z;
+        break;
+      }
       case AovType::kAlbedo: {
         const Vec3f xyz = AlbedoXyz(ray, *hit, lambda, seed);
         *out++ = xyz.x, *out++ = xyz.y, *out++ = xyz.z;

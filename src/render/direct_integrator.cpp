@@ -28,7 +28,7 @@ SampledSpectrum DirectIntegrator::Li(const Ray& ray, const std::optional<Surface
     Vec2f u = sampler.Get2D();
     std::optional<BSDFSample> bs = bsdf.Sample(si->wo, uc, u);
     if (!bs) continue;
-    SampledSpectrum beta = bs->f * (AbsDot(bs->wi, si->shading.n) / bs->pdf) / nb;
+    SampledSpectrum beta = bs->f * (AbsDot(bs->wi, bsdf.frame().n) / bs->pdf) / nb;
     Ray next = si->SpawnRay(bs->wi);
     ++counts.closest;
     std::optional<SurfaceInteraction> hit = scene_.Intersect(next);

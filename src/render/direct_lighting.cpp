@@ -11,7 +11,7 @@ SampledSpectrum SampleLightMIS(const Scene& scene, const SurfaceInteraction& si,
   std::optional<LightSample> ls = light->SampleLi(si.p, u, lambda);
   if (!ls || ls->pdf == 0 || ls->L.IsBlack()) return {};
   BSDF::Evaluation eval = bsdf.EvalWithPdf(si.wo, ls->wi);
-  SampledSpectrum f = eval.f * AbsDot(ls->wi, si.shading.n);
+  SampledSpectrum f = eval.f * AbsDot(ls->wi, bsdf.frame().n);
   if (f.IsBlack()) return {};
   Ray shadow;
   if (ls->infinite) {

@@ -7,12 +7,13 @@
 namespace objektiv {
 
 namespace {
-// The adjoint BSDF's cosine for light scattered from wo into wi with a shading normal: what
-// |wi.n| is where shading and geometry agree; 0 where wo grazes the geometric surface.
-float ImportanceCosine(const SurfaceInteraction& si, const Vec3f& wo, const Vec3f& wi) {
+// The adjoint BSDF's cosine for light scattered from wo into wi with a shading normal (the
+// BSDF's, which a bump or normal map may have perturbed): what |wi.n| is where shading and
+// geometry agree; 0 where wo grazes the geometric surface.
+float ImportanceCosine(const SurfaceInteraction& si, const BSDF& bsdf, const Vec3f& wo, const Vec3f& wi) {
   const float wo_ng = AbsDot(wo, si.n);
   if (wo_ng == 0) return 0;
-  return AbsDot(wo, si.shading.n) * AbsDot(wi, si.n) / wo_ng;
+  return AbsDot(wo, bsdf.frame().n) * AbsDot(wi, si.n) / wo_ng;
 }
 
 // Splats the light of the vertex si (flux beta, arriving from si.wo) that reaches the camera.
@@ -26,7 +27,7 @@ void JoinCamera(const Scene& scene, const SurfaceInteraction& si, const BSDF& bs
   const Vec3f wi = Normalize(to_lens);
   const SampledSpectrum f = bsdf.f(si.wo, wi, TransportMode::kImportance);
   if (f.IsBlack()) return;
-  const SampledSpectrum J = beta * f * ImportanceCosine(si, si.wo, wi);
+  const SampledSpectrum J = beta * f * ImportanceCosine(si, bsdf, si.wo, wi);
   if (J.IsBlack()) return;
   ++ctx.rays().shadow;
   if (scene.Occluded(si.SpawnRayTo(imp->p_lens, Vec3f(0.f), Vec3f(0.f)))) return;
@@ -73,7 +74,7 @@ void TraceLightPath(const Scene& scene, const LightPathSettings& settings, Sampl
     const std::optional<BSDFSample> bs = bsdf.Sample(si->wo, uc, sampler.Get2D(), TransportMode::kImportance);
     if (!bs || !(bs->pdf > 0)) return;
     if (caustics && !bs->IsSpecular()) return;  // beyond the caustics' paths
-    throughput *= bs->f * (ImportanceCosine(*si, si->wo, bs->wi) / bs->pdf);
+    throughput *= bs->f * (ImportanceCosine(*si, bsdf, si->wo, bs->wi) / bs->pdf);
     ray = si->SpawnRay(bs->wi);
     if (throughput.HasNaN() || throughput.HasInf()) {
       ctx.CountNaN();

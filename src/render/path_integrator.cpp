@@ -66,7 +66,8 @@ SampledSpectrum PathIntegrator::Li(const Ray& camera_ray, const std::optional<Su
     Vec2f u = sampler.Get2D();
     std::optional<BSDFSample> bs = bsdf.Sample(si->wo, uc, u);
     if (!bs) break;
-    beta *= bs->f * (AbsDot(bs->wi, si->shading.n) / bs->pdf);
+    // The BSDF's own normal: a bump or normal map may have perturbed the shape's.
+    beta *= bs->f * (AbsDot(bs->wi, bsdf.frame().n) / bs->pdf);
     bsdf_pdf = bs->pdf;
     specular_bounce = bs->IsSpecular();
     if (depth == 1) {

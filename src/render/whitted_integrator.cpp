@@ -53,7 +53,7 @@ SampledSpectrum WhittedIntegrator::LightFromSources(const SurfaceInteraction& si
   auto shadow_ray = [&](const Light& light, Vec2f u) -> SampledSpectrum {
     const std::optional<LightSample> ls = light.SampleLi(si.p, u, lambda);
     if (!ls || ls->pdf == 0 || ls->L.IsBlack()) return {};
-    const SampledSpectrum f = bsdf.f(si.wo, ls->wi) * AbsDot(ls->wi, si.shading.n);
+    const SampledSpectrum f = bsdf.f(si.wo, ls->wi) * AbsDot(ls->wi, bsdf.frame().n);  // a bump map may have turned it
     if (f.IsBlack()) return {};
     ++counts.shadow;
     if (scene_.Occluded(ls->infinite ? si.SpawnRay(ls->wi) : si.SpawnRayTo(ls->p, ls->p_error, ls->n))) return {};

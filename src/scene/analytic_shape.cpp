@@ -85,14 +85,17 @@ bool ObjectPlaneHit(const Transform& to_world, const Vec3d& o, const Vec3d& d, d
   return true;
 }
 
-// The interaction at object-space point (x, y, 0) of a flat shape with world normal n.
+// The interaction at object-space point (x, y, 0) of a flat shape with world normal n and
+// object-space partial derivatives dpdu, dpdv of its parameterisation.
 SurfaceInteraction FlatInteraction(const Transform& to_world, const Vec3f& n, double x, double y, const Ray& ray,
-                                   float t, Vec2f uv) {
+                                   float t, Vec2f uv, const Vec3f& dpdu_obj, const Vec3f& dpdv_obj) {
   SurfaceInteraction si;
   TransformPointWithError(to_world, Vec3d(x, y, 0), &si.p, &si.p_error);
   si.n = n;
   si.uv = uv;
-  si.shading = Frame::FromNormalTangent(n, to_world.Vector(Vec3f(1, 0, 0)));
+  si.dpdu = to_world.Vector(dpdu_obj);
+  si.dpdv = to_world.Vector(dpdv_obj);
+  si.shading = Frame::FromNormalTangent(n, si.dpdu);
   si.t = t;
   si.wo = -Normalize(ray.d);
   return si;
@@ -122,7 +125,7 @@ void TransformPointWithError(const Transform& t, const Vec3d& p_obj, Vec3f* p, V
 // --- Sphere -------------------------------------------------------------------------
 
 Sphere::Sphere(const Vec3f& center, float radius, bool flip_normals, const Transform& to_world)
-    : flip_(flip_normals), to_world_(to_world) {
+    : object_radius_(radius), flip_(flip_normals), to_world_(to_world) {
   // to_world must be a similarity: orthogonal columns of equal length.
   Vec3d c0 = Column(to_world, 0), c1 = Column(to_world, 1), c2 = Column(to_world, 2);
   double s0 = Length(c0), s1 = Length(c1), s2 = Length(c2);
@@ -178,10 +181,16 @@ SurfaceInteraction Sphere::ComputeInteraction(const Ray& ray, const RTCHit&, flo
   si.p_error = s.p_error;
   si.n = s.n;
   si.uv = s.uv;
-  // Tangent along increasing phi around the sphere's local z axis.
-  Vec3f axis = Normalize(to_world_.Vector(Vec3f(0, 0, 1)));
-  Vec3f dpdu = Cross(axis, s.n);
-  si.shading = Frame::FromNormalTangent(s.n, dpdu);
+  // p = c + r (sin theta cos phi, sin theta sin phi, cos theta) in object space, with
+  // u = phi / 2 pi and v = theta / pi: dp/du = 2 pi dp/dphi, dp/dv = pi dp/dtheta. The
+  // object-space radius times to_world's linear part gives world lengths.
+  Vec3f local = Normalize(Vec3f(ToObject(to_world_.InverseMatrix(), pd - center_, false)));
+  float sin_theta = std::sqrt(local.x * local.x + local.y * local.y);
+  float phi = std::atan2(local.y, local.x);  // 0 at the poles, as the uv
+  float r = float(object_radius_);
+  si.dpdu = to_world_.Vector(Vec3f(-local.y, local.x, 0) * (2 * kPi * r));
+  si.dpdv = to_world_.Vector(Vec3f(local.z * std::cos(phi), local.z * std::sin(phi), -sin_theta) * (kPi * r));
+  si.shading = Frame::FromNormalTangent(s.n, si.dpdu);
   si.t = t;
   si.wo = -Normalize(ray.d);
   return si;
@@ -262,7 +271,9 @@ SurfaceInteraction Disk::ComputeInteraction(const Ray& ray, const RTCHit& hit, f
   float phi = std::atan2(hit.v, hit.u);
   if (phi < 0) phi += 2 * kPi;
   Vec2f uv(std::sqrt(hit.u * hit.u + hit.v * hit.v), phi * kInv2Pi);  // (r, phi / 2 pi)
-  return FlatInteraction(to_world_, normal_, hit.u, hit.v, ray, t, uv);
+  // p = (r cos phi, r sin phi, 0): dp/du = (cos phi, sin phi, 0), dp/dv = 2 pi (-y, x, 0).
+  return FlatInteraction(to_world_, normal_, hit.u, hit.v, ray, t, uv, Vec3f(std::cos(phi), std::sin(phi), 0),
+                         Vec3f(-hit.v, hit.u, 0) * (2 * kPi));
 }
 
 Bounds3f Disk::WorldBounds() const {
@@ -340,7 +351,10 @@ SurfaceInteraction Cylinder::ComputeInteraction(const Ray& ray, const RTCHit& hi
   si.p_error = s.p_error;
   si.n = s.n;
   si.uv = s.uv;
-  si.shading = Frame::FromNormalTangent(s.n, to_world_.Vector(Vec3f(-std::sin(hit.u), std::cos(hit.u), 0)));
+  // p = (cos phi, sin phi, z) with u = phi / 2 pi, v = z.
+  si.dpdu = to_world_.Vector(Vec3f(-std::sin(hit.u), std::cos(hit.u), 0) * (2 * kPi));
+  si.dpdv = to_world_.Vector(Vec3f(0, 0, 1));
+  si.shading = Frame::FromNormalTangent(s.n, si.dpdu);
   si.t = t;
   si.wo = -Normalize(ray.d);
   return si;
@@ -406,7 +420,8 @@ SurfaceInteraction InfinitePlane::ComputeInteraction(const Ray& ray, const RTCHi
   double th;
   Vec2d xy(hit.u, hit.v);
   ObjectPlaneHit(to_world_, Vec3d(ray.o), Vec3d(ray.d), std::numeric_limits<double>::infinity(), &th, &xy);
-  return FlatInteraction(to_world_, normal_, xy.x, xy.y, ray, t, {float(xy.x), float(xy.y)});
+  return FlatInteraction(to_world_, normal_, xy.x, xy.y, ray, t, {float(xy.x), float(xy.y)}, Vec3f(1, 0, 0),
+                         Vec3f(0, 1, 0));
 }
 
 }  // namespace objektiv

@@ -37,7 +37,8 @@ class Sphere final : public AnalyticShape {
  private:
   ShapeSample PointAt(const Vec3d& p) const;
   Vec3d center_;
-  double radius_;
+  double radius_;         // in world units
+  double object_radius_;  // before to_world's scale
   bool flip_;
   Transform to_world_;  // orientation for the uv parameterisation
 };

@@ -13,7 +13,7 @@ Overloaded(Ts...) -> Overloaded<Ts...>;
 
 SampledSpectrum BSDF::f(const Vec3f& wo_world, const Vec3f& wi_world, TransportMode mode) const {
   Vec3f wo = frame_.ToLocal(wo_world), wi = frame_.ToLocal(wi_world);
-  if (wo.z == 0) return {};
+  if (wo.z == 0 || !SidesAgree(wo_world, wo.z) || !SidesAgree(wi_world, wi.z)) return {};
   if (two_sided_ && wo.z < 0 && IsOpaque()) {
     wo.z = -wo.z;
     wi.z = -wi.z;
@@ -25,6 +25,7 @@ SampledSpectrum BSDF::f(const Vec3f& wo_world, const Vec3f& wi_world, TransportM
 
 std::optional<BSDFSample> BSDF::Sample(const Vec3f& wo_world, float uc, Vec2f u, TransportMode mode) const {
   Vec3f wo = frame_.ToLocal(wo_world);
+  if (!SidesAgree(wo_world, wo.z)) return std::nullopt;
   bool flipped = two_sided_ && wo.z < 0 && IsOpaque();
   if (flipped) wo.z = -wo.z;
   // One returned name on every path, so that the sample is built in the caller's slot (a
@@ -37,14 +38,16 @@ std::optional<BSDFSample> BSDF::Sample(const Vec3f& wo_world, float uc, Vec2f u,
   if (s && (s->pdf == 0 || s->f.IsBlack() || s->wi.z == 0)) s.reset();
   if (s) {
     if (flipped) s->wi.z = -s->wi.z;
+    const float wi_z = s->wi.z;
     s->wi = frame_.FromLocal(s->wi);
+    if (!SidesAgree(s->wi, wi_z)) s.reset();
   }
   return s;
 }
 
 float BSDF::Pdf(const Vec3f& wo_world, const Vec3f& wi_world, TransportMode mode) const {
   Vec3f wo = frame_.ToLocal(wo_world), wi = frame_.ToLocal(wi_world);
-  if (wo.z == 0) return 0;
+  if (wo.z == 0 || !SidesAgree(wo_world, wo.z) || !SidesAgree(wi_world, wi.z)) return 0;
   if (two_sided_ && wo.z < 0 && IsOpaque()) {
     wo.z = -wo.z;
     wi.z = -wi.z;
@@ -56,7 +59,7 @@ float BSDF::Pdf(const Vec3f& wo_world, const Vec3f& wi_world, TransportMode mode
 
 BSDF::Evaluation BSDF::EvalWithPdf(const Vec3f& wo_world, const Vec3f& wi_world, TransportMode mode) const {
   Vec3f wo = frame_.ToLocal(wo_world), wi = frame_.ToLocal(wi_world);
-  if (wo.z == 0) return {};
+  if (wo.z == 0 || !SidesAgree(wo_world, wo.z) || !SidesAgree(wi_world, wi.z)) return {};
   if (two_sided_ && wo.z < 0 && IsOpaque()) {
     wo.z = -wo.z;
     wi.z = -wi.z;

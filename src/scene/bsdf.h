@@ -53,12 +53,24 @@ class BSDF {
   // shading normal); zero for the others.
   SampledSpectrum DiffuseReflectance(const Vec3f& wo_world) const;
   const Frame& frame() const { return frame_; }
+  // For a perturbed shading frame (bump and normal maps): a direction wo or wi on different
+  // sides of the frame's normal and of `n` (the unperturbed shading normal) scatters nothing,
+  // so that no light leaks through the surface where the perturbed normal tilts past it (as
+  // Mitsuba, which tests wi alone; both keep the BSDF reciprocal).
+  void RequireSameSide(const Vec3f& n) {
+    side_n_ = n;
+    check_side_ = true;
+  }
 
  private:
   bool IsOpaque() const { return !std::holds_alternative<DielectricBxDF>(bxdf_); }
+  // Whether w (world; w_z its local z) passes the RequireSameSide test.
+  bool SidesAgree(const Vec3f& w_world, float w_z) const { return !check_side_ || Dot(w_world, side_n_) * w_z > 0; }
   Frame frame_;
   BxDF bxdf_;
   bool two_sided_ = false;
+  bool check_side_ = false;
+  Vec3f side_n_;
 };
 
 }  // namespace objektiv

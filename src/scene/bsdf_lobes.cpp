@@ -39,22 +39,26 @@ int Lobes(const PlasticBxDF& b, const Vec3f& wo, SpecularLobe out[2]) {
 
 int BSDF::SpecularLobes(const Vec3f& wo_world, SpecularLobe out[2], TransportMode mode) const {
   Vec3f wo = frame_.ToLocal(wo_world);
-  if (wo.z == 0) return 0;
+  if (wo.z == 0 || !SidesAgree(wo_world, wo.z)) return 0;
   const bool flipped = two_sided_ && wo.z < 0 && IsOpaque();
   if (flipped) wo.z = -wo.z;
   int n = 0;
   if (const auto* d = std::get_if<DielectricBxDF>(&bxdf_)) n = Lobes(*d, wo, mode, out);
   if (const auto* c = std::get_if<ConductorBxDF>(&bxdf_)) n = Lobes(*c, wo, out);
   if (const auto* p = std::get_if<PlasticBxDF>(&bxdf_)) n = Lobes(*p, wo, out);
+  int kept = 0;  // those on the sides a bump map allows (RequireSameSide)
   for (int i = 0; i < n; ++i) {
     if (flipped) out[i].wi.z = -out[i].wi.z;
+    const float wi_z = out[i].wi.z;
     out[i].wi = frame_.FromLocal(out[i].wi);
+    if (SidesAgree(out[i].wi, wi_z)) out[kept++] = out[i];
   }
-  return n;
+  return kept;
 }
 
 SampledSpectrum BSDF::DiffuseReflectance(const Vec3f& wo_world) const {
   Vec3f wo = frame_.ToLocal(wo_world);
+  if (!SidesAgree(wo_world, wo.z)) return {};
   if (two_sided_ && wo.z < 0 && IsOpaque()) wo.z = -wo.z;
   if (wo.z <= 0) return {};
   if (const auto* d = std::get_if<DiffuseBxDF>(&bxdf_)) return d->R;

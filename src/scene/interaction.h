@@ -13,6 +13,11 @@ struct SurfaceInteraction {
   Vec3f n;        // geometric normal (unit; oriented as the shape defines its outside)
   Frame shading;  // shading frame (z = shading normal, on the same side as n)
   Vec2f uv;
+  // The surface's partial derivatives along its (u, v) parameterisation, in world units per
+  // unit of uv (docs/scene-format.md lists each shape's). Zero where the parameterisation is
+  // singular (a sphere's poles, a disk's centre): there only dpdu or dpdv may be used.
+  // Bump and normal maps read them; the shading frame's tangent s follows dpdu.
+  Vec3f dpdu, dpdv;
   Vec3f wo;       // direction back toward the ray origin
   float t = 0;
   const ShapeRecord* shape = nullptr;

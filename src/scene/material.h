@@ -14,7 +14,10 @@ class Material {
   virtual ~Material() = default;
   // May reduce the wavelength bundle to its hero (dispersive interfaces).
   virtual BSDF GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const = 0;
-  void SetTwoSided(bool v) { two_sided_ = v; }
+  // The shading frame GetBSDF's BSDF shades with at si (its frame()): the shape's, unless a
+  // bump or normal map perturbs it. For what needs the normal but no BSDF (the AOVs).
+  virtual Frame ShadingFrame(const SurfaceInteraction& si) const { return si.shading; }
+  virtual void SetTwoSided(bool v) { two_sided_ = v; }
   // Absorption coefficient (per scene unit) of the medium behind the surface, for
   // Beer-Lambert attenuation of path segments inside closed dielectrics; nullptr if none.
   virtual const Spectrum* Absorption() const { return nullptr; }
@@ -75,7 +78,7 @@ class PlasticMaterial final : public Material {
 };
 
 // The classic tracer's energy-conserving Blinn-Phong (PhongBxDF): where kd + ks exceeds 1 at a
-// wavelength both are scaled down to sum to 1 (the loader warns when their means do).
+// wavelength both are scaled down to sum to 1 (the loader warns when the colours as written do).
 class PhongMaterial final : public Material {
  public:
   PhongMaterial(std::shared_ptr<const SpectrumTexture> diffuse, std::shared_ptr<const SpectrumTexture> specular,

@@ -233,6 +233,8 @@ SurfaceInteraction Scene::InstanceInteraction(const Ray& ray, const RTCRayHit& r
   }
   si.p_error = abs_err * (1 + Gamma(3)) + abs_p * Gamma(3);
   si.n = Normalize(m.Normal(o.n));
+  si.dpdu = m.Vector(o.dpdu);
+  si.dpdv = m.Vector(o.dpdv);
   si.shading = Frame::FromNormalTangent(Normalize(m.Normal(o.shading.n)), m.Vector(o.shading.s));
   si.wo = -Normalize(ray.d);
   si.shape = &rec;

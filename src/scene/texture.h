@@ -11,8 +11,13 @@
 
 namespace objektiv {
 
-// How an RGB from a texture becomes a spectrum.
-enum class SpectrumUsage { kAlbedo, kUnbounded, kIlluminant };
+// How an RGB from a texture becomes a spectrum. kData: the texture's numbers are data (a bump
+// map's heights, a normal map's coordinates), read through Rgb and never made a spectrum;
+// bitmaps for data are read without sRGB decoding unless the scene says otherwise.
+enum class SpectrumUsage { kAlbedo, kUnbounded, kIlluminant, kData };
+
+// Rec. 709 luminance of linear RGB: what a bump map reads as height from a colour texture.
+inline float Luminance(const Vec3f& rgb) { return 0.2126f * rgb.x + 0.7152f * rgb.y + 0.0722f * rgb.z; }
 
 class SpectrumTexture {
  public:
@@ -20,6 +25,14 @@ class SpectrumTexture {
   virtual SampledSpectrum Evaluate(Vec2f uv, const SampledWavelengths& lambda) const = 0;
   // Mean linear RGB over the texture (used for sampling weights, not for shading).
   virtual Vec3f MeanRgb() const = 0;
+  // The value at uv as three plain numbers (linear RGB, or data such as a normal map's
+  // coordinates), not as a spectrum.
+  virtual Vec3f Rgb(Vec2f uv) const = 0;
+  // The exact gradient (d/du, d/dv) of Luminance(Rgb) at uv wherever it is differentiable
+  // (bilinear bitmaps: the slope of the bilinear patch; flat pieces: zero).
+  virtual Vec2f LuminanceGradient(Vec2f uv) const = 0;
+  // Whether the gradient is zero wherever it exists (a bump map made of it changes nothing).
+  virtual bool IsPiecewiseConstant() const = 0;
 };
 
 // A spectrum that does not vary over the surface, tabulated at 1 nm over 360-830 nm when it
@@ -28,11 +41,17 @@ class SpectrumTexture {
 class ConstantTexture final : public SpectrumTexture {
  public:
   explicit ConstantTexture(Spectrum s);
+  // `rgb`: the numbers the scene wrote (Rgb returns them exactly, for data).
+  ConstantTexture(Spectrum s, Vec3f rgb);
   SampledSpectrum Evaluate(Vec2f, const SampledWavelengths& lambda) const override;
   Vec3f MeanRgb() const override;
+  Vec3f Rgb(Vec2f) const override { return rgb_; }
+  Vec2f LuminanceGradient(Vec2f) const override { return Vec2f(0, 0); }
+  bool IsPiecewiseConstant() const override { return true; }
 
  private:
   Spectrum s_;
+  Vec3f rgb_;
   std::vector<float> dense_;  // empty for constant spectra
 };
 
@@ -47,8 +66,13 @@ class CheckerboardTexture final : public SpectrumTexture {
       : c0_(std::move(c0)), c1_(std::move(c1)), to_uv_(to_uv), mean_((c0_->MeanRgb() + c1_->MeanRgb()) * 0.5f) {}
   SampledSpectrum Evaluate(Vec2f uv, const SampledWavelengths& lambda) const override;
   Vec3f MeanRgb() const override { return mean_; }
+  Vec3f Rgb(Vec2f uv) const override { return Pick(uv).Rgb(uv); }
+  // Inside a square, the gradient of its colour; the steps between squares have none.
+  Vec2f LuminanceGradient(Vec2f uv) const override { return Pick(uv).LuminanceGradient(uv); }
+  bool IsPiecewiseConstant() const override { return c0_->IsPiecewiseConstant() && c1_->IsPiecewiseConstant(); }
 
  private:
+  const SpectrumTexture& Pick(Vec2f uv) const;
   std::shared_ptr<const SpectrumTexture> c0_, c1_;
   Transform to_uv_;
   Vec3f mean_;
@@ -71,8 +95,13 @@ class BitmapTexture final : public SpectrumTexture {
   SampledSpectrum Evaluate(Vec2f uv, const SampledWavelengths& lambda) const override;
   Vec3f MeanRgb() const override { return mean_; }
   Vec3f LookupRgb(Vec2f uv) const;
+  Vec3f Rgb(Vec2f uv) const override { return LookupRgb(uv); }
+  Vec2f LuminanceGradient(Vec2f uv) const override;
+  bool IsPiecewiseConstant() const override { return filter_ == FilterMode::kNearest; }
 
  private:
+  // The texel coordinates (x, y) of uv after to_uv and wrapping (NaN where there are none).
+  Vec2f TexelCoordinates(Vec2f uv) const;
   Vec3f Texel(int x, int y) const;
   Image image_;
   SpectrumUsage usage_;

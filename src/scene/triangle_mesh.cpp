@@ -79,19 +79,37 @@ SurfaceInteraction TriangleMesh::ComputeInteraction(const Ray& ray, const RTCHit
     if (l2 > 0) ns = nsi * ((flip_ ? -1.f : 1.f) / std::sqrt(l2));
   }
   if (data_.uvs.empty()) {
-    // No parameterisation: barycentric uv and any tangent (texture-free surfaces).
+    // No uvs: the barycentric uv (b1 + b2, b2), for which p = p0 + u (p1 - p0) + v (p2 - p1).
     si.uv = {b1 + b2, b2};
-    si.shading = Frame::FromZ(ns);
+    si.dpdu = p1 - p0;
+    si.dpdv = p2 - p1;
   } else {
     const Vec2f &uv0 = data_.uvs[tri[0]], &uv1 = data_.uvs[tri[1]], &uv2 = data_.uvs[tri[2]];
     si.uv = uv0 * b0 + uv1 * b1 + uv2 * b2;
-    // dp/du from the uv parameterisation, for a tangent that follows the texture.
+    // The affine map from uv to the triangle's plane: p - p2 = dpdu (uv - uv2) + dpdv (...),
+    // solved from the edges (p0 - p2, p1 - p2) and (uv0 - uv2, uv1 - uv2) by Cramer's rule.
     Vec2f duv02 = uv0 - uv2, duv12 = uv1 - uv2;
     Vec3f dp02 = p0 - p2, dp12 = p1 - p2;
     float det = duv02.x * duv12.y - duv02.y * duv12.x;
-    Vec3f dpdu = std::abs(det) > 1e-12f ? (dp02 * duv12.y - dp12 * duv02.y) / det : p1 - p0;
-    si.shading = Frame::FromNormalTangent(ns, dpdu);
+    auto finite = [](const Vec3f& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    // Relative to the uv edges' size, so that tiny but valid uv triangles are kept.
+    float uv_scale = std::max(std::max(std::abs(duv02.x), std::abs(duv02.y)), std::max(std::abs(duv12.x), std::abs(duv12.y)));
+    if (std::abs(det) > 1e-9f * uv_scale * uv_scale) {
+      si.dpdu = (dp02 * duv12.y - dp12 * duv02.y) / det;
+      si.dpdv = (dp12 * duv02.x - dp02 * duv12.x) / det;
+    }
+    if (!(std::abs(det) > 1e-9f * uv_scale * uv_scale) || !finite(si.dpdu) || !finite(si.dpdv) ||
+        !(LengthSquared(Cross(si.dpdu, si.dpdv)) > 0)) {
+      // Degenerate uvs (all three alike, or on a line): no derivative exists. A frame around
+      // the face normal stands in, with the length of the triangle's edges, so that a bump
+      // map's slope keeps a sensible scale.
+      Frame f = Frame::FromZ(si.n);
+      float len = std::sqrt(Length(Cross(p1 - p0, p2 - p0)));
+      si.dpdu = f.s * len;
+      si.dpdv = f.t * len;
+    }
   }
+  si.shading = Frame::FromNormalTangent(ns, si.dpdu);
   si.t = t;
   si.wo = -ray.d * (1 / Length(ray.d));
   return si;
