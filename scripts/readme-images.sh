@@ -3,7 +3,8 @@
 # scenes in scenes/ (a few minutes on 2 cores). Needs a build (make) and oiiotool
 # (openimageio-tools) to put panels side by side. `readme-images.sh flare` renders only the
 # ghost and starburst pictures (docs/images/flare-*.png), `readme-images.sh caustics` the
-# light-traced caustics (docs/images/caustics-*.png).
+# light-traced caustics (docs/images/caustics-*.png), `readme-images.sh stereo` the stereo rig's
+# anaglyph (docs/images/stereo-*.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/objektiv
@@ -44,6 +45,20 @@ caustics() {
   render scenes/prism/spectrum.xml -D spp=256 -D width=480 -D height=300 -o "$tmp/spectrum.exr"
   cp "$tmp/spectrum.png" "$out/caustics-prism-spectrum.png"
 }
+stereo() {
+  # The still life through a stereo rig: the red-cyan anaglyph, and its EXR's eyes side by side.
+  render scenes/stereo/anaglyph.xml -o "$tmp/anaglyph.exr"
+  cp "$tmp/anaglyph.png" "$out/stereo-anaglyph.png"
+  for e in left right; do
+    oiiotool "$tmp/anaglyph.exr" --ch $e.R,$e.G,$e.B --chnames R,G,B --resize 50% --colorconvert linear sRGB -o "$tmp/$e.png"
+  done
+  oiiotool "$tmp/left.png" "$tmp/right.png" --mosaic:pad=4 2x1 -o "$out/stereo-eyes.png"
+}
+if [ "${1:-}" = stereo ]; then
+  stereo
+  echo "wrote $out/stereo-*.png"
+  exit 0
+fi
 if [ "${1:-}" = flare ]; then
   flare
   echo "wrote $out/flare-*.png"
