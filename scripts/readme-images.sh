@@ -4,7 +4,9 @@
 # (openimageio-tools) to put panels side by side. `readme-images.sh flare` renders only the
 # ghost and starburst pictures (docs/images/flare-*.png), `readme-images.sh caustics` the
 # light-traced caustics (docs/images/caustics-*.png), `readme-images.sh bump` the bump-mapped
-# floor (docs/images/bump-*.png).
+# floor (docs/images/bump-*.png), `readme-images.sh stereo` the stereo rig's anaglyph
+# (docs/images/stereo-*.png), `readme-images.sh classic` the classic tracer's picture
+# (docs/images/classic-*.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/objektiv
@@ -50,21 +52,29 @@ bump() {
   render scenes/bump/table-and-chairs.xml -D spp=64 -D width=640 -D height=400 -o "$tmp/table.exr"
   cp "$tmp/table.png" "$out/bump-table-and-chairs.png"
 }
-if [ "${1:-}" = bump ]; then
-  bump
-  echo "wrote $out/bump-*.png"
-  exit 0
-fi
-if [ "${1:-}" = flare ]; then
-  flare
-  echo "wrote $out/flare-*.png"
-  exit 0
-fi
-if [ "${1:-}" = caustics ]; then
-  caustics
-  echo "wrote $out/caustics-*.png"
-  exit 0
-fi
+stereo() {
+  # The still life through a stereo rig: the red-cyan anaglyph, and its EXR's eyes side by side.
+  render scenes/stereo/anaglyph.xml -o "$tmp/anaglyph.exr"
+  cp "$tmp/anaglyph.png" "$out/stereo-anaglyph.png"
+  for e in left right; do
+    oiiotool "$tmp/anaglyph.exr" --ch $e.R,$e.G,$e.B --chnames R,G,B --resize 50% --colorconvert linear sRGB -o "$tmp/$e.png"
+  done
+  oiiotool "$tmp/left.png" "$tmp/right.png" --mosaic:pad=4 2x1 -o "$out/stereo-eyes.png"
+}
+classic() {
+  # Spheres on a checkerboard by the classic tracer, at one sample per pixel and at 16.
+  render scenes/classic/spheres-checkerboard.xml -o "$tmp/classic-1.exr"
+  render scenes/classic/spheres-checkerboard.xml -D spp=16 -o "$tmp/classic-16.exr"
+  cp "$tmp/classic-1.png" "$out/classic-spheres-1spp.png"
+  cp "$tmp/classic-16.png" "$out/classic-spheres.png"
+}
+case "${1:-}" in
+  flare | caustics | bump | stereo | classic)
+    "$1"
+    echo "wrote $out/$1-*.png"
+    exit 0
+    ;;
+esac
 
 render scenes/bokeh/bokeh-lens.xml -D spp=1024 -o "$tmp/bokeh-f2.8.exr"
 render scenes/bokeh/bokeh-lens.xml -D spp=1024 -D fnumber=2.03 -o "$tmp/bokeh-open.exr"
@@ -94,6 +104,5 @@ for f in 0.85 2.25 6.05; do
   render scenes/lens/focus-series.xml -D spp=256 -D focus=$f -D width=420 -D height=280 -o "$tmp/focus-$f.exr"
 done
 oiiotool "$tmp/focus-0.85.png" "$tmp/focus-2.25.png" "$tmp/focus-6.05.png" --mosaic:pad=6 3x1 -o "$out/lens-focus-series.png"
-flare
-bump
-echo "wrote $out/lens-*.png, $out/flare-*.png and $out/bump-*.png"
+for part in flare caustics bump stereo classic; do "$part"; done
+echo "wrote $out/*.png"

@@ -107,7 +107,7 @@ TEST(KnownTypes, ErrorsListEveryRegisteredType) {
   EXPECT_NE(unknown("<bsdf type=\"velvet\"/>").find("twosided"), std::string::npos);
   EXPECT_NE(unknown("<integrator type=\"bdpt\"/>").find("(known: aov, direct, path, ptracer)"), std::string::npos);
   std::string msg = ErrorOf([] { LoadSceneFromString("<scene>\n<sensor type=\"fisheye\"/>\n</scene>", "k.xml", {}); });
-  EXPECT_NE(msg.find("(known: orthographic, perspective, realistic, thinlens)"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("(known: orthographic, perspective, realistic, stereo, thinlens)"), std::string::npos) << msg;
   msg = ErrorOf([] {
     LoadSceneFromString("<scene>\n<sensor type=\"perspective\"><film type=\"hdrfilm\"><rfilter type=\"sinc\"/></film>"
                         "</sensor>\n</scene>",

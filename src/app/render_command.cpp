@@ -16,6 +16,7 @@
 #include "base/interrupt.h"
 #include "base/log.h"
 #include "base/output_file.h"
+#include "camera/stereo_camera.h"
 #include "io/render_part.h"
 #include "render/progressive_render.h"
 
@@ -142,6 +143,10 @@ int RunRender(const RenderArgs& a) {
     if (setup.integrator->TracesLightToCamera())
       spdlog::warn("{}: light paths land anywhere on the film and only those inside --crop count: renders split by "
                    "crop are noisier than one render (split light-traced renders by --spp-range)", a.scene);
+    const auto* stereo = dynamic_cast<const StereoCamera*>(setup.camera.get());
+    if (!part && stereo && stereo->layout() == StereoLayout::kAnaglyph)
+      throw CLI::ValidationError("--crop", "an anaglyph is made of both eyes' whole images: crop a part to merge "
+                                           "(--part) or render layout side-by-side");
     if (part && !info.render_crop.Contains(fs_.crop))
       throw CLI::ValidationError("--crop", fmt::format("a part's pixels must lie inside the scene's crop window {},{},{},{}",
                                                        info.render_crop.x0, info.render_crop.y0, info.render_crop.x1,

@@ -11,6 +11,8 @@
 #include "base/input_files.h"
 #include "base/interrupt.h"
 #include "base/output_file.h"
+#include "camera/stereo_camera.h"
+#include "io/anaglyph.h"
 #include "io/tonemap.h"
 #include "render/aov.h"
 
@@ -174,6 +176,23 @@ LensLayers WriteRenderImages(const RenderSetup& setup, const Film& film, int thr
   AddLensLayers(layers, *fs.color_space, fs.exposure, linear, header);
   if (const auto* aov = dynamic_cast<const AovIntegrator*>(setup.integrator.get()))
     AddAovChannels(*aov, film, *fs.color_space, linear);
+  if (const auto* stereo = dynamic_cast<const StereoCamera*>(setup.camera.get())) {
+    if (stereo->layout() == StereoLayout::kAnaglyph) {
+      // Both eyes whole (render_command refuses --crop for an anaglyph's image).
+      if (!(fs.crop == CropWindow{0, 0, fs.width, fs.height}))
+        throw InputError(fmt::format("{}: an anaglyph needs the whole film, not a crop of it", exr));
+      linear = AnaglyphImage(linear, *fs.color_space, fs.tonemap);
+      header.push_back({"objektiv:stereo", std::string("anaglyph: R, G, B red-cyan by Dubois' least squares, linear "
+                                                       "Rec.709 in [0, 1], the tone curve applied; left.*, right.*: "
+                                                       "the eyes' linear images")});
+      WriteExr(exr, linear, header);
+      WritePng(png, ApplyToneMap(linear, ToneMap::kClamp));  // the tone curve is in the anaglyph already
+      return layers;
+    }
+    header.push_back({"objektiv:stereo", std::string(stereo->layout() == StereoLayout::kOverUnder
+                                                         ? "over-under: the left eye's image on top"
+                                                         : "side-by-side: the left eye's image on the left")});
+  }
   WriteExr(exr, linear, header);
   WritePng(png, ApplyToneMap(linear, fs.tonemap));
   return layers;

@@ -41,8 +41,8 @@ PerspectiveCamera::PerspectiveCamera(const Transform& to_world, int width, int h
 
 Vec3f PerspectiveCamera::CameraDirection(Vec2f p) const {
   // Image x to the right is camera -x; image y down is camera -y.
-  float sx = (1 - 2 * p.x / width_) * tan_.x;
-  float sy = (1 - 2 * p.y / height_) * tan_.y;
+  float sx = (1 - 2 * p.x / width_) * tan_.x + shift_.x;
+  float sy = (1 - 2 * p.y / height_) * tan_.y + shift_.y;
   return {sx, sy, 1};
 }
 
@@ -61,7 +61,7 @@ std::optional<CameraRay> PerspectiveCamera::GenerateRay(const CameraSample& s, S
 
 std::optional<Vec2f> PerspectiveCamera::FilmPoint(const Vec3f& d) const {
   if (!(d.z > 0)) return std::nullopt;
-  const float sx = d.x / d.z, sy = d.y / d.z;
+  const float sx = d.x / d.z - shift_.x, sy = d.y / d.z - shift_.y;
   const Vec2f p((1 - sx / tan_.x) * 0.5f * width_, (1 - sy / tan_.y) * 0.5f * height_);
   if (!(p.x >= 0 && p.x < width_ && p.y >= 0 && p.y < height_)) return std::nullopt;
   return p;

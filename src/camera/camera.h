@@ -15,6 +15,9 @@ namespace objektiv {
 struct CameraSample {
   Vec2f p_film;  // continuous pixel coordinates on the full film (0..width, 0..height; y down)
   Vec2f p_lens;  // in [0,1)^2
+  // The pixel whose sample this is ((-1, -1): the one under p_film). A filter wider than a pixel
+  // puts samples beyond it; a camera that tiles its film (stereo) keeps them in the pixel's tile.
+  Vec2i pixel{-1, -1};
 };
 
 struct CameraRay {
@@ -88,6 +91,9 @@ class PerspectiveCamera : public Camera {
   // 1: the image is radiance).
   std::optional<CameraImportance> SampleImportance(const Vec3f& p, Vec2f u, SampledWavelengths& lambda) const override;
   bool HasImportance() const override { return true; }
+  // An off-axis frustum (a stereo eye's, camera/stereo_camera.h): the image's window on the
+  // plane at unit distance moved by `shift` (camera-space x, y), as a shift lens moves it.
+  void ShiftFrustum(Vec2f shift) { shift_ = shift; }
 
  protected:
   // Direction in camera space through film point p (not normalised; z = 1).
@@ -99,6 +105,7 @@ class PerspectiveCamera : public Camera {
   // lens point (a thin lens's rays from each of its points see the film as the pinhole does).
   std::optional<CameraImportance> ImportanceThrough(const Vec3f& p, const Vec3f& p_lens, Vec2f p_film) const;
   Vec2f tan_;
+  Vec2f shift_{0.f, 0.f};
   float near_, far_;
 };
 

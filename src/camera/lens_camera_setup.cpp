@@ -36,6 +36,14 @@ FocusRequest Focus(const LensCameraSpec& spec, const Transform& to_world) {
   return focus;
 }
 
+// Where the chief ray from the point `offset` mm beside the axis (toward -x), `distance` mm in front
+// of the entrance pupil, meets the film (lens x, mm): its slope offset / distance at the entrance
+// pupil, times the pupils' angular magnification D_ep / D_xp at the exit pupil, over the exit
+// pupil's distance to the film (paraxial; the centre of the point's blur spot when defocused).
+double ChiefRayFilmX(double offset, double distance, double ep_diameter, double xp_diameter, double xp_to_film) {
+  return offset / distance * (ep_diameter / xp_diameter) * xp_to_film;
+}
+
 }  // namespace
 
 std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int height, const LensCameraSpec& spec) {
@@ -44,13 +52,23 @@ std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int
   const LensSystem& lens = setup.lens;
   spdlog::info("{}", setup.report);
   std::unique_ptr<Camera> camera;
+  LensCameraSettings settings = spec.settings;
   if (spec.model == LensModel::kReal) {
-    auto real = std::make_unique<RealisticCamera>(to_world, width, height, lens, spec.settings);
+    if (spec.convergence_mm > 0) {
+      const ParaxialData& p = lens.paraxial();
+      const double xp_z = lens.VertexZ(lens.SurfaceCount() - 1) + p.exit_pupil_position;
+      settings.shift.x += ChiefRayFilmX(spec.eye_offset_mm, spec.convergence_mm, p.entrance_pupil_diameter,
+                                        p.exit_pupil_diameter, lens.FilmZ() - xp_z);
+    }
+    auto real = std::make_unique<RealisticCamera>(to_world, width, height, lens, settings);
     if (real->dispersive()) spdlog::debug("lens {}: dispersive glass, one wavelength per camera ray", spec.lens.name);
     camera = std::move(real);
   } else {
     ParaxialLensModel m = MakeParaxialModel(lens, setup.focus.plane_of_focus_to_film, spec.model == LensModel::kThin);
-    camera = std::make_unique<ParaxialLensCamera>(to_world, width, height, m, lens.stop_shape(), spec.settings);
+    if (spec.convergence_mm > 0)
+      settings.shift.x += ChiefRayFilmX(spec.eye_offset_mm, spec.convergence_mm, m.entrance_pupil_radius,
+                                        m.exit_pupil_radius, m.film_z - m.exit_pupil_z);
+    camera = std::make_unique<ParaxialLensCamera>(to_world, width, height, m, lens.stop_shape(), settings);
   }
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   spdlog::info("lens camera set up in {:.3f} s", seconds);

@@ -22,6 +22,11 @@ struct LensCameraSpec {
   double focus_distance = INFINITY;  // metres from the film
   std::optional<Vec3f> focus_point;  // world space: focus on the plane through it instead
   LensCameraSettings settings;
+  // A stereo eye's offset along the camera's x axis and the convergence distance from the
+  // entrance pupil (mm; 0: parallel): the sensor is shifted sideways (as a shift lens) by the
+  // paraxial image height of the rig's axis point at that distance, so that it images at the
+  // film's centre in both eyes. The camera itself is moved by whoever gives to_world.
+  double eye_offset_mm = 0, convergence_mm = 0;
 };
 
 // Throws InputError (without a location) when the stop cannot be set as asked.

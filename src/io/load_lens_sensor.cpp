@@ -197,9 +197,14 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b
       throw ErrorAt(p.LocOf("aperture_mask"), "{}", e.what());
     }
   }
+  // A stereo eye (camera/stereo_camera.h): moved along the camera's x axis (metres, in scene
+  // units by metres_per_unit) and its sensor shifted toward the convergence plane.
+  spec.eye_offset_mm = b.eye.offset * 1e3;
+  spec.convergence_mm = b.eye.convergence * 1e3;
+  const Transform to_world = EyeTransform(b.to_world, b.eye.offset / s.metres_per_unit);
   std::unique_ptr<Camera> camera;
   try {
-    camera = MakeLensCamera(b.to_world, b.width, b.height, spec);
+    camera = MakeLensCamera(to_world, b.width, b.height, spec);
   } catch (const InputError& e) {
     throw ErrorAt(p.loc(), "{}", e.what());
   }

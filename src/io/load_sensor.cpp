@@ -73,7 +73,14 @@ std::unique_ptr<Camera> BuildPerspective(const Properties& p, const SensorBase& 
     Vec2f t = ScreenTangents(fov, axis, w, h);
     focal_mm = sensor_width / (2 * t.x);
   }
-  if (!thin) return std::make_unique<PerspectiveCamera>(b.to_world, w, h, fov, axis, near_clip, b.far_clip);
+  // A stereo eye: moved along the camera's x axis, its frustum shifted toward the convergence plane.
+  const Transform to_world = EyeTransform(b.to_world, b.eye.offset);
+  const float shift = b.eye.OffAxis() ? EyeFrustumShift(b.to_world, b.eye.offset, b.eye.convergence) : 0.f;
+  if (!thin) {
+    auto camera = std::make_unique<PerspectiveCamera>(to_world, w, h, fov, axis, near_clip, b.far_clip);
+    camera->ShiftFrustum(Vec2f(shift, 0.f));
+    return camera;
+  }
   float radius;
   if (p.Has("fnumber")) {
     if (p.Has("aperture_radius")) throw ErrorAt(p.LocOf("fnumber"), "give either fnumber or aperture_radius");
@@ -86,8 +93,10 @@ std::unique_ptr<Camera> BuildPerspective(const Properties& p, const SensorBase& 
   float focus = float(p.FloatIn("focus_distance", 0, 1e-6, 1e30));
   int blades = int(p.IntIn("blades", 0, 0, 64));
   if (blades == 1 || blades == 2) throw ErrorAt(p.LocOf("blades"), "blades must be 0 (circular) or at least 3");
-  return std::make_unique<ThinLensCamera>(b.to_world, w, h, fov, axis, near_clip, b.far_clip, radius, focus, blades,
-                                          float(p.Float("blade_rotation", 0)));
+  auto camera = std::make_unique<ThinLensCamera>(to_world, w, h, fov, axis, near_clip, b.far_clip, radius, focus, blades,
+                                                 float(p.Float("blade_rotation", 0)));
+  camera->ShiftFrustum(Vec2f(shift, 0.f));
+  return camera;
 }
 
 }  // namespace
@@ -107,10 +116,14 @@ const SensorRegistry& SensorPlugins() {
           {"orthographic",
            {{"near_clip", PropType::kFloat}},
            [](const Properties& p, const SensorBase& b) -> std::unique_ptr<Camera> {
-             return std::make_unique<OrthographicCamera>(b.to_world, b.width, b.height, NearClip(p, b.far_clip),
+             // A stereo eye turns toward the convergence plane (stereo_camera.h: OrthographicEyeTransform).
+             const Transform to_world = b.eye.offset == 0 ? b.to_world
+                                        : OrthographicEyeTransform(b.to_world, b.eye.offset, b.eye.convergence);
+             return std::make_unique<OrthographicCamera>(to_world, b.width, b.height, NearClip(p, b.far_clip),
                                                          b.far_clip);
            }},
           RealisticSensorPlugin(),
+          StereoSensorPlugin(),
       });
   return registry;
 }
@@ -128,6 +141,16 @@ void BuildSensor(const ObjectNode& node, const GlassCatalog& glasses, RenderSetu
   CheckWithinSceneLimit(base.to_world.Point(Vec3f(0.f)), p.LocOf("to_world"), "the sensor");
   setup.camera = plugin.make(p, base);
   p.WarnUnused();
+  // A camera that tiles the film with several images (stereo) takes the film as one image's
+  // size and makes it larger; a crop window of it would be ambiguous (--crop crops the whole).
+  if (setup.camera->width() != setup.film.width || setup.camera->height() != setup.film.height) {
+    const CropWindow whole{0, 0, setup.film.width, setup.film.height};
+    if (!(setup.film.crop == whole))
+      throw ErrorAt(setup.film.loc, "the film of a '{}' sensor is one eye's image and cannot be cropped (crop_*); "
+                    "crop the whole {}x{} film with --crop", node.type, setup.camera->width(), setup.camera->height());
+    setup.film.width = setup.camera->width(), setup.film.height = setup.camera->height();
+    setup.film.crop = {0, 0, setup.film.width, setup.film.height};
+  }
 }
 
 }  // namespace objektiv

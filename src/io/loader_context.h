@@ -3,6 +3,7 @@
 #pragma once
 #include <map>
 
+#include "camera/stereo_camera.h"
 #include "io/plugin_registry.h"
 #include "io/scene_loader.h"
 
@@ -53,6 +54,7 @@ struct SensorBase {
   int width, height;
   float far_clip;
   const GlassCatalog* glasses;  // for a lens file's glass names
+  StereoEye eye = {};           // an eye of a stereo rig: where the plugin puts it (none: offset 0)
 };
 
 // What an emitter plugin makes: a light of its own, or (type "area") the emission of the
@@ -86,5 +88,7 @@ const EmitterRegistry& EmitterPlugins();
 
 // <sensor type="realistic">: a camera with a real lens prescription (load_lens_sensor.cpp).
 SensorRegistry::PluginType RealisticSensorPlugin();
+// <sensor type="stereo">: two eyes of the nested sensor (load_stereo_sensor.cpp).
+SensorRegistry::PluginType StereoSensorPlugin();
 
 }  // namespace objektiv

@@ -89,7 +89,7 @@ RenderSetup Build(const SceneDocument& doc, const GlassCatalog& glasses) {
     throw ErrorAt(integrator->loc,
                   "this integrator carries light paths to the camera (ptracer, or path with caustics), and light "
                   "cannot find this '{}' sensor: perspective, thinlens and realistic (its exact lens, not lens_model "
-                  "thick or thin) can be found",
+                  "thick or thin) can be found, and a stereo rig of them",
                   sensor->type);
   if (setup.scene->lights().empty() && !setup.integrator->LightsTheSceneItself()) spdlog::warn("{}: the scene has no emitters; the image will be black", root.loc.file);
   return setup;

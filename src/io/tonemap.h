@@ -10,5 +10,7 @@ enum class ToneMap {
 };
 
 Image ApplyToneMap(const Image& linear, ToneMap mode);
+// The tone curve alone, in linear light: a linear value to the display's linear [0, 1].
+float ToneCurve(float linear, ToneMap mode);
 
 }  // namespace objektiv

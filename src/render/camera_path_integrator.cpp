@@ -53,7 +53,7 @@ void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
         b.lambdas[k] = SampledWavelengths::SampleVisible(sk.Get1D());
         Vec2f offset = b.filter_samples[k].offset;
         Vec2f lens = lens_sample ? sk.Get2D() : Vec2f(0.5f, 0.5f);
-        b.camera_samples[k] = {Vec2f(pixel.x + 0.5f + offset.x, pixel.y + 0.5f + offset.y), lens};
+        b.camera_samples[k] = {Vec2f(pixel.x + 0.5f + offset.x, pixel.y + 0.5f + offset.y), lens, pixel};
       }
       camera.GenerateRays(std::span(b.camera_samples.data(), n), std::span(b.lambdas.data(), n),
                           std::span(b.rays.data(), n), ctx.camera_rays());
