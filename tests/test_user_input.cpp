@@ -104,8 +104,9 @@ TEST(KnownTypes, ErrorsListEveryRegisteredType) {
       LoadSceneFromString("<scene>\n<sensor type=\"perspective\"/>\n" + object + "\n</scene>", "k.xml", {});
     });
   };
+  EXPECT_NE(unknown("<bsdf type=\"velvet\"/>").find("phong, plastic"), std::string::npos);
   EXPECT_NE(unknown("<bsdf type=\"velvet\"/>").find("twosided"), std::string::npos);
-  EXPECT_NE(unknown("<integrator type=\"bdpt\"/>").find("(known: aov, direct, path, ptracer)"), std::string::npos);
+  EXPECT_NE(unknown("<integrator type=\"bdpt\"/>").find("(known: aov, direct, path, ptracer, whitted)"), std::string::npos);
   std::string msg = ErrorOf([] { LoadSceneFromString("<scene>\n<sensor type=\"fisheye\"/>\n</scene>", "k.xml", {}); });
   EXPECT_NE(msg.find("(known: orthographic, perspective, realistic, stereo, thinlens)"), std::string::npos) << msg;
   msg = ErrorOf([] {
