@@ -107,6 +107,9 @@ TEST(Bsdf, NoBsdfCreatesEnergy) {
   DielectricBxDF smooth;
   smooth.eta = 1.5f;
   cases.push_back({"smooth dielectric", BSDF(f, smooth, true)});
+  ThinDielectricBxDF thin;
+  thin.eta = S(1.7f);
+  cases.push_back({"thin dielectric", BSDF(f, thin, true)});
   cases.push_back({"smooth conductor", BSDF(f, ConductorBxDF{S(0.2f), S(3.f), S(1.f), TrowbridgeReitz(0, 0)}, false)});
   PCG32 g(2, 3);
   for (const Case& c : cases)
@@ -213,6 +216,35 @@ TEST(Bsdf, SpecularLobesCarryFresnelsShares) {
   ASSERT_EQ(BSDF(Frame(), pl, false).SpecularLobes(wo, lobes), 1);
   EXPECT_NEAR(lobes[0].weight[0], 0.9f * FresnelDielectric(wo.z, 1.49f), 1e-6);
   EXPECT_EQ(BSDF(Frame(), pl, false).SpecularLobes(-wo, lobes), 0);
+}
+
+// A thin sheet reflects 2R / (1 + R) of Fresnel's R at each face and lets the rest through
+// undeviated, from either side; sampling chooses by that share, and the lobes carry it.
+TEST(Bsdf, ThinDielectricSumsTheReflectionsBetweenItsFaces) {
+  ThinDielectricBxDF t;
+  t.eta = S(1.5f);
+  const BSDF sheet(Frame(), t, true);
+  SpecularLobe lobes[2];
+  for (float deg : {0.f, 40.f, 80.f})
+    for (float side : {1.f, -1.f}) {
+      const Vec3f wo(std::sin(Radians(deg)), 0, side * std::cos(Radians(deg)));
+      const float R = FresnelDielectric(std::cos(Radians(deg)), 1.5f), sheet_R = 2 * R / (1 + R);
+      auto r = sheet.Sample(wo, 0.5f * sheet_R, {0.5f, 0.5f});
+      ASSERT_TRUE(r);
+      EXPECT_TRUE(r->flags & kReflection);
+      EXPECT_NEAR(r->pdf, sheet_R, 1e-6);
+      EXPECT_NEAR(r->wi.z, wo.z, 1e-6);
+      EXPECT_NEAR(r->f[0] * std::abs(r->wi.z) / r->pdf, 1, 1e-5);
+      auto tr = sheet.Sample(wo, 0.5f + 0.5f * sheet_R, {0.5f, 0.5f});
+      ASSERT_TRUE(tr);
+      EXPECT_TRUE(tr->flags & kTransmission);
+      EXPECT_NEAR(tr->wi.x, -wo.x, 1e-6);
+      EXPECT_NEAR(tr->wi.z, -wo.z, 1e-6);
+      EXPECT_NEAR(tr->pdf, 1 - sheet_R, 1e-6);
+      ASSERT_EQ(sheet.SpecularLobes(wo, lobes), 2);
+      EXPECT_NEAR(lobes[0].weight[0], sheet_R, 1e-6);
+      EXPECT_NEAR(lobes[1].weight[0], 1 - sheet_R, 1e-6);
+    }
 }
 
 TEST(Bsdf, DiffuseReflectanceIsTheDiffusePartsAlbedo) {

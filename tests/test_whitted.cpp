@@ -111,6 +111,29 @@ TEST(Whitted, GlassSlabWithAbsorptionIsThePathTracers) {
   ExpectSameAsPathTracer(scene, 12, 64, 4, 0.03, "glass slab");
 }
 
+// A `thindielectric` sheet is a glass slab too thin to shift the light: in front of a lamp, the
+// path tracer's sheet and the classic tracer's slab (a cube 1 mm thick, every inner reflection
+// followed) show the same.
+TEST(Whitted, ThinDielectricSheetIsAVeryThinGlassSlab) {
+  const std::string lamp = R"(
+  <shape type="rectangle">
+    <transform name="to_world"><scale x="0.8" y="0.5"/><translate y="0.5" z="-1"/></transform>
+    <emitter type="area"><rgb name="radiance" value="2, 3, 4"/></emitter></shape>
+  <shape type="rectangle">
+    <transform name="to_world"><scale x="0.4" y="0.3"/><rotate y="1" angle="180"/><translate x="0.9" y="1.1" z="2"/></transform>
+    <emitter type="area"><rgb name="radiance" value="5, 4, 3"/></emitter></shape>)";
+  const char* tilt = R"(<rotate y="1" angle="50"/><rotate x="1" angle="10"/><translate y="0.55" z="0"/>)";
+  const std::string sheet = fmt::format(R"(<shape type="rectangle"><transform name="to_world"><scale value="0.6"/>{}</transform>
+    <bsdf type="thindielectric"><float name="int_ior" value="1.7"/></bsdf></shape>)", tilt);
+  const std::string slab = fmt::format(R"(<shape type="cube"><transform name="to_world"><scale x="0.6" y="0.6" z="0.0005"/>{}</transform>
+    <bsdf type="dielectric"><float name="int_ior" value="1.7"/></bsdf></shape>)", tilt);
+  const Estimate path = Estimated([&](int seed) { return Scene(Integrator("path", 40), lamp + sheet, 64, seed); });
+  const Estimate whitted = Estimated([&](int seed) {
+    return Scene(Integrator("whitted", 40, R"(<float name="bailout" value="0"/>)"), lamp + slab, 4, seed);
+  });
+  ExpectSameImage(path, whitted, 0.03, "thin sheet and thin slab");
+}
+
 // The ambient term is the light of a uniform sky that nothing shadows: under no other light, a
 // diffuse floor that sees only the sky is the path tracer's under that sky.
 TEST(Whitted, AmbientTermIsTheLightOfAnUnshadowedUniformSky) {

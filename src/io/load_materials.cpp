@@ -97,6 +97,13 @@ std::shared_ptr<Material> MakeDielectric(const Properties& p, LoaderContext& ctx
   return m;
 }
 
+std::shared_ptr<Material> MakeThinDielectric(const Properties& p, LoaderContext& ctx) {
+  return std::make_shared<ThinDielectricMaterial>(
+      GetInteriorIor(p, ctx.glasses), GetIor(p, "ext_ior", *NamedIor("air")),
+      GetTexture(p, "specular_reflectance", SpectrumUsage::kUnbounded, 1, ctx),
+      GetTexture(p, "specular_transmittance", SpectrumUsage::kUnbounded, 1, ctx));
+}
+
 std::shared_ptr<Material> MakeConductor(const Properties& p, LoaderContext& ctx, bool rough) {
   auto [au, av] = rough ? GetAlpha(p, 0.1f) : std::pair<float, float>{0.f, 0.f};
   Spectrum eta, k;
@@ -129,6 +136,13 @@ const std::vector<PropertyDecl> kDielectric = {{"int_ior", PropType::kFloatOrStr
                                                {"specular_reflectance", PropType::kSpectrumOrTexture},
                                                {"specular_transmittance", PropType::kSpectrumOrTexture},
                                                {"absorption", PropType::kSpectrum}};
+// A thin sheet: the dielectric's index and colours, no volume to absorb in.
+const std::vector<PropertyDecl> kThinDielectric = [] {
+  std::vector<PropertyDecl> decls;
+  for (const PropertyDecl& d : kDielectric)
+    if (d.name != "absorption") decls.push_back(d);
+  return decls;
+}();
 const std::vector<PropertyDecl> kConductor = {{"material", PropType::kString},
                                               {"eta", PropType::kSpectrum},
                                               {"k", PropType::kSpectrum},
@@ -233,6 +247,7 @@ const MaterialRegistry& MaterialPlugins() {
           {"dielectric", kDielectric, [](P p, LoaderContext& ctx) { return MakeDielectric(p, ctx, false); }},
           {"roughdielectric", Join(kDielectric, kRoughness),
            [](P p, LoaderContext& ctx) { return MakeDielectric(p, ctx, true); }},
+          {"thindielectric", kThinDielectric, MakeThinDielectric},
           {"conductor", kConductor, [](P p, LoaderContext& ctx) { return MakeConductor(p, ctx, false); }},
           {"roughconductor", Join(kConductor, kRoughness),
            [](P p, LoaderContext& ctx) { return MakeConductor(p, ctx, true); }},

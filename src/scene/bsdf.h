@@ -7,7 +7,7 @@
 
 namespace objektiv {
 
-using BxDF = std::variant<DiffuseBxDF, DielectricBxDF, ConductorBxDF, PlasticBxDF, PhongBxDF>;
+using BxDF = std::variant<DiffuseBxDF, DielectricBxDF, ConductorBxDF, PlasticBxDF, PhongBxDF, ThinDielectricBxDF>;
 
 // A delta lobe of a BSDF at wo (scene/bsdf_lobes.cpp): the one direction it sends light to and
 // the share it sends (f |cos theta_i| of the lobe: Fresnel reflectance or transmittance with
@@ -43,7 +43,7 @@ class BSDF {
   // so integrators need not draw it.
   bool UsesLobeChoice() const {
     return std::holds_alternative<DielectricBxDF>(bxdf_) || std::holds_alternative<PlasticBxDF>(bxdf_) ||
-           std::holds_alternative<PhongBxDF>(bxdf_);
+           std::holds_alternative<PhongBxDF>(bxdf_) || std::holds_alternative<ThinDielectricBxDF>(bxdf_);
   }
   // Every delta lobe at wo, written to out (at most two: a smooth dielectric's reflection and
   // refraction), for tracers that follow each of them instead of sampling one (whitted).
@@ -63,7 +63,9 @@ class BSDF {
   }
 
  private:
-  bool IsOpaque() const { return !std::holds_alternative<DielectricBxDF>(bxdf_); }
+  bool IsOpaque() const {
+    return !std::holds_alternative<DielectricBxDF>(bxdf_) && !std::holds_alternative<ThinDielectricBxDF>(bxdf_);
+  }
   // Whether w (world; w_z its local z) passes the RequireSameSide test.
   bool SidesAgree(const Vec3f& w_world, float w_z) const { return !check_side_ || Dot(w_world, side_n_) * w_z > 0; }
   Frame frame_;

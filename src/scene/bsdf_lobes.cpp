@@ -23,6 +23,13 @@ int Lobes(const DielectricBxDF& b, const Vec3f& wo, TransportMode mode, Specular
   return n;
 }
 
+int Lobes(const ThinDielectricBxDF& b, const Vec3f& wo, SpecularLobe out[2]) {
+  const SampledSpectrum R = b.Reflectance(AbsCosTheta(wo));
+  out[0] = {Vec3f(-wo.x, -wo.y, wo.z), b.reflect_scale * R, false};
+  out[1] = {-wo, b.transmit_scale * (SampledSpectrum(1.f) - R), true};
+  return 2;
+}
+
 int Lobes(const ConductorBxDF& b, const Vec3f& wo, SpecularLobe out[2]) {
   if (!b.distrib.EffectivelySmooth()) return 0;
   out[0] = {Vec3f(-wo.x, -wo.y, wo.z), b.scale * FresnelComplex(AbsCosTheta(wo), b.eta, b.k), false};
@@ -44,6 +51,7 @@ int BSDF::SpecularLobes(const Vec3f& wo_world, SpecularLobe out[2], TransportMod
   if (flipped) wo.z = -wo.z;
   int n = 0;
   if (const auto* d = std::get_if<DielectricBxDF>(&bxdf_)) n = Lobes(*d, wo, mode, out);
+  if (const auto* t = std::get_if<ThinDielectricBxDF>(&bxdf_)) n = Lobes(*t, wo, out);
   if (const auto* c = std::get_if<ConductorBxDF>(&bxdf_)) n = Lobes(*c, wo, out);
   if (const auto* p = std::get_if<PlasticBxDF>(&bxdf_)) n = Lobes(*p, wo, out);
   int kept = 0;  // those on the sides a bump map allows (RequireSameSide)

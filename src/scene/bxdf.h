@@ -74,6 +74,21 @@ struct PlasticBxDF {
   int Flags() const { return kReflection | kDiffuse | kSpecular; }
 };
 
+// A thin dielectric sheet (Mitsuba 3's `thindielectric`: a window pane): light reflects off it or
+// passes straight through, undeviated, with the reflections between the sheet's two faces summed
+// in closed form: R + T^2 R (1 + R^2 + R^4 + ...) = 2R / (1 + R) of Fresnel's R at each face
+// (scene/thin_dielectric_bxdf.cpp). Purely specular; the same from both sides.
+struct ThinDielectricBxDF {
+  SampledSpectrum eta{1.5f};  // n_sheet / n_outside per wavelength (no dispersion of direction)
+  SampledSpectrum reflect_scale{1.f}, transmit_scale{1.f};
+  SampledSpectrum f(const Vec3f&, const Vec3f&) const { return {}; }
+  std::optional<BSDFSample> Sample(const Vec3f& wo, float uc, Vec2f u) const;
+  float Pdf(const Vec3f&, const Vec3f&) const { return 0; }
+  int Flags() const { return kReflection | kTransmission | kSpecular; }
+  // The sheet's reflectance (both faces, every inner reflection) at |cos theta| = cos_o.
+  SampledSpectrum Reflectance(float cos_o) const;
+};
+
 // Energy-conserving Blinn-Phong (the classic tracer's `phong`): a Lambertian lobe kd / pi and a
 // normalised half-vector lobe ks (n+2)(n+4) / (8 pi (2^(-n/2) + n)) cos^n(theta_h), whose
 // directional albedo is exactly ks at normal incidence and less elsewhere, so kd + ks <= 1

@@ -27,6 +27,14 @@ BSDF DielectricMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelength
   return BSDF(si.shading, b, true);
 }
 
+BSDF ThinDielectricMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const {
+  ThinDielectricBxDF b;
+  for (int i = 0; i < kSpectrumSamples; ++i) b.eta[i] = float(int_ior_(lambda[i]) / ext_ior_);
+  b.reflect_scale = specular_reflectance_->Evaluate(si.uv, lambda);
+  b.transmit_scale = specular_transmittance_->Evaluate(si.uv, lambda);
+  return BSDF(si.shading, b, true);
+}
+
 ConductorMaterial::ConductorMaterial(Spectrum eta, Spectrum k, float alpha_u, float alpha_v,
                                      std::shared_ptr<const SpectrumTexture> specular_reflectance)
     : eta_(std::move(eta)), k_(std::move(k)), alpha_u_(alpha_u), alpha_v_(alpha_v),

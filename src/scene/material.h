@@ -53,6 +53,22 @@ class DielectricMaterial final : public Material {
   std::shared_ptr<const SpectrumTexture> specular_reflectance_, specular_transmittance_;
 };
 
+// Mitsuba 3's `thindielectric` (ThinDielectricBxDF): int_ior may vary with wavelength, which
+// changes only the reflectance (light passes undeviated), so every wavelength is kept.
+class ThinDielectricMaterial final : public Material {
+ public:
+  ThinDielectricMaterial(IorModel int_ior, double ext_ior, std::shared_ptr<const SpectrumTexture> specular_reflectance,
+                         std::shared_ptr<const SpectrumTexture> specular_transmittance)
+      : int_ior_(std::move(int_ior)), ext_ior_(ext_ior), specular_reflectance_(std::move(specular_reflectance)),
+        specular_transmittance_(std::move(specular_transmittance)) {}
+  BSDF GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const override;
+
+ private:
+  IorModel int_ior_;
+  double ext_ior_;
+  std::shared_ptr<const SpectrumTexture> specular_reflectance_, specular_transmittance_;
+};
+
 class ConductorMaterial final : public Material {
  public:
   ConductorMaterial(Spectrum eta, Spectrum k, float alpha_u, float alpha_v,
