@@ -76,6 +76,9 @@ TEST(Whitted, SoftShadowsOfAnAreaLightAreThePathTracers) {
     <transform name="to_world"><scale x="0.5" y="0.3"/><rotate x="1" angle="90"/><translate x="-0.3" y="2" z="0.6"/></transform>
     <emitter type="area"><rgb name="radiance" value="10, 9, 8"/></emitter></shape>)";
   ExpectSameAsPathTracer(kBalls + lamp, 2, 64, 4, 0.03, "area light");
+  // The sky on the Phong ball's highlight: light and BSDF samples combined.
+  ExpectSameAsPathTracer(std::string(kBalls) + R"(<emitter type="constant"><rgb name="radiance" value="0.6, 0.7, 0.9"/></emitter>)", 2,
+                         64, 4, 0.03, "sky");
 }
 
 // A mirror ball on a diffuse floor lit by a point light: the floor seen in the mirror (camera,
@@ -129,9 +132,32 @@ TEST(Whitted, ThinDielectricSheetIsAVeryThinGlassSlab) {
     <bsdf type="dielectric"><float name="int_ior" value="1.7"/></bsdf></shape>)", tilt);
   const Estimate path = Estimated([&](int seed) { return Scene(Integrator("path", 40), lamp + sheet, 64, seed); });
   const Estimate whitted = Estimated([&](int seed) {
-    return Scene(Integrator("whitted", 40, R"(<float name="bailout" value="0"/>)"), lamp + slab, 4, seed);
+    return Scene(Integrator("whitted", 40, R"(<float name="bailout" value="1e-4"/>)"), lamp + slab, 4, seed);
   });
   ExpectSameImage(path, whitted, 0.03, "thin sheet and thin slab");
+}
+
+// Two perfect mirrors facing each other with the camera between them and a glass ball in the
+// middle: at the deepest depth and the smallest bailout every branch still ends (the chain of
+// mirror images at max_depth, the glass's branches at the bailout), in a bounded number of rays.
+TEST(Whitted, MirrorsFacingEachOtherEndAtTheBounds) {
+  const std::string scene = fmt::format(R"(<scene version="3.0.0">
+  <integrator type="whitted"><integer name="max_depth" value="64"/><float name="bailout" value="1e-4"/></integrator>
+  <sensor type="perspective"><float name="fov" value="20"/>
+    <transform name="to_world"><lookat origin="0, 0, 0" target="0, 0, -1" up="0, 1, 0"/></transform>
+    <sampler type="independent"><integer name="sample_count" value="1"/></sampler>
+    <film type="hdrfilm"><integer name="width" value="16"/><integer name="height" value="16"/></film>
+  </sensor>
+  <shape type="rectangle"><transform name="to_world"><scale value="100"/><translate z="-1"/></transform><bsdf type="conductor"/></shape>
+  <shape type="rectangle"><transform name="to_world"><scale value="100"/><rotate y="1" angle="180"/><translate z="1"/></transform>
+    <bsdf type="conductor"/></shape>
+  <shape type="sphere"><point name="center" x="0" y="0" z="-0.5"/><float name="radius" value="0.05"/>
+    <bsdf type="dielectric"/></shape>
+  <emitter type="constant"><rgb name="radiance" value="1, 1, 1"/></emitter>
+</scene>)");
+  const test::RenderResult r = RenderXml(scene);
+  EXPECT_EQ(r.stats.nan_count, 0u);
+  EXPECT_LT(r.stats.rays, 16u * 16u * 4096u);
 }
 
 // The ambient term is the light of a uniform sky that nothing shadows: under no other light, a
@@ -153,8 +179,12 @@ TEST(Whitted, AmbientTermIsTheLightOfAnUnshadowedUniformSky) {
 }
 
 TEST(Whitted, BadSettingsAreErrorsAtTheirLine) {
-  for (const char* bad : {R"(<integer name="max_depth" value="0"/>)", R"(<integer name="shadow_grid" value="0"/>)",
-                          R"(<float name="bailout" value="2"/>)", R"(<float name="ambient" value="-1"/>)"}) {
+  // Every branch is followed: an unbounded depth or no bailout could recurse without end (two
+  // mirrors facing each other) or branch without end (glass between them).
+  for (const char* bad : {R"(<integer name="max_depth" value="0"/>)", R"(<integer name="max_depth" value="-1"/>)",
+                          R"(<integer name="max_depth" value="65"/>)", R"(<integer name="shadow_grid" value="0"/>)",
+                          R"(<float name="bailout" value="2"/>)", R"(<float name="bailout" value="0"/>)",
+                          R"(<float name="ambient" value="-1"/>)"}) {
     const std::string xml = fmt::format(
         "<scene version=\"3.0.0\">\n<integrator type=\"whitted\">\n{}\n</integrator>\n<sensor type=\"perspective\"/>\n</scene>",
         bad);

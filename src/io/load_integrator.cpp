@@ -41,10 +41,10 @@ std::unique_ptr<Integrator> MakeAovIntegrator(const Properties& p, const Scene& 
 // The classic tracer (render/whitted_integrator.h).
 std::unique_ptr<Integrator> MakeWhitted(const Properties& p, const Scene& scene) {
   WhittedSettings w;
-  w.max_depth = int(p.IntIn("max_depth", w.max_depth, -1, 1 << 10));
-  if (w.max_depth == 0) throw ErrorAt(p.LocOf("max_depth"), "max_depth must be -1 (unbounded) or at least 1");
+  // Every branch is followed: the depth needs a bound, and the bailout a floor.
+  w.max_depth = int(p.IntIn("max_depth", w.max_depth, 1, WhittedSettings::kMaxDepth));
   w.shadow_grid = int(p.IntIn("shadow_grid", w.shadow_grid, 1, 64));
-  w.bailout = float(p.FloatIn("bailout", w.bailout, 0, 1));
+  w.bailout = float(p.FloatIn("bailout", w.bailout, WhittedSettings::kMinBailout, 1));
   if (auto ambient = p.SpectrumProp("ambient")) w.ambient = MakeSpectrum(*ambient, SpectrumUsage::kIlluminant);
   return std::make_unique<WhittedIntegrator>(scene, std::move(w));
 }

@@ -4,8 +4,23 @@
 #include <cmath>
 
 #include "render/direct_lighting.h"
+#include "scene/infinite_light.h"
 
 namespace objektiv {
+
+namespace {
+
+// Point k of an n x n grid's cell centres, all moved by one random offset (wrapping around):
+// every point is uniform over [0,1)^2 (over the light, or the BSDF's directions), and the n x n
+// of them cover it evenly.
+Vec2f GridPoint(int k, int grid, Vec2f offset) {
+  Vec2f u(((k % grid) + 0.5f) / grid + offset.x, ((k / grid) + 0.5f) / grid + offset.y);
+  u.x -= std::floor(u.x);
+  u.y -= std::floor(u.y);
+  return Vec2f(std::min(u.x, 0x1.fffffep-1f), std::min(u.y, 0x1.fffffep-1f));
+}
+
+}  // namespace
 
 SampledSpectrum WhittedIntegrator::Li(const Ray& ray, const std::optional<SurfaceInteraction>& si,
                                       SampledWavelengths& lambda, Sampler& sampler, BlockContext& ctx) const {
@@ -17,7 +32,7 @@ SampledSpectrum WhittedIntegrator::Li(const Ray& ray, const std::optional<Surfac
 SampledSpectrum WhittedIntegrator::Shade(const SurfaceInteraction& si, SampledWavelengths& lambda, Sampler& sampler,
                                          RayCounts& counts, const SampledSpectrum& weight, int segments) const {
   // Each shadow ray and each reflected or refracted ray is one segment more.
-  if (settings_.max_depth >= 0 && segments + 1 > settings_.max_depth) return {};
+  if (segments + 1 > settings_.max_depth) return {};
   const Material* material = si.shape->material.get();
   if (!material) return {};
   const BSDF bsdf = material->GetBSDF(si, lambda);
@@ -49,36 +64,76 @@ SampledSpectrum WhittedIntegrator::Shade(const SurfaceInteraction& si, SampledWa
 SampledSpectrum WhittedIntegrator::LightFromSources(const SurfaceInteraction& si, const BSDF& bsdf,
                                                     const SampledWavelengths& lambda, Sampler& sampler,
                                                     RayCounts& counts) const {
-  SampledSpectrum L(0.f);
-  auto shadow_ray = [&](const Light& light, Vec2f u) -> SampledSpectrum {
-    const std::optional<LightSample> ls = light.SampleLi(si.p, u, lambda);
-    if (!ls || ls->pdf == 0 || ls->L.IsBlack()) return {};
-    const SampledSpectrum f = bsdf.f(si.wo, ls->wi) * AbsDot(ls->wi, bsdf.frame().n);  // a bump map may have turned it
-    if (f.IsBlack()) return {};
+  const Vec3f n = bsdf.frame().n;  // a bump map may have turned it
+  auto visible = [&](const Ray& ray) {
     ++counts.shadow;
-    if (scene_.Occluded(ls->infinite ? si.SpawnRay(ls->wi) : si.SpawnRayTo(ls->p, ls->p_error, ls->n))) return {};
-    return f * ls->L / ls->pdf;
+    return !scene_.Occluded(ray);
   };
-  const int n = std::max(1, settings_.shadow_grid);
+  const int grid = std::max(1, settings_.shadow_grid), count = grid * grid;
+  // A glossy lobe (Phong, rough metal and glass) is also sampled by the BSDF, as many times as
+  // the light, the two combined by the power heuristic: light samples alone put a sharp
+  // highlight of a large light (the sky) on a few of them, which glitters.
+  const bool glossy = bsdf.Flags() & kGlossy;
+  SampledSpectrum L(0.f);
   for (const auto& light : scene_.lights()) {
-    if (light->IsDelta()) {
-      L += shadow_ray(*light, Vec2f(0.5f, 0.5f));
+    if (light->IsDelta()) {  // one shadow ray: a hard shadow
+      const std::optional<LightSample> ls = light->SampleLi(si.p, Vec2f(0.5f, 0.5f), lambda);
+      if (!ls || ls->pdf == 0 || ls->L.IsBlack()) continue;
+      const SampledSpectrum f = bsdf.f(si.wo, ls->wi) * AbsDot(ls->wi, n);
+      if (!f.IsBlack() && visible(ls->infinite ? si.SpawnRay(ls->wi) : si.SpawnRayTo(ls->p, ls->p_error, ls->n)))
+        L += f * ls->L / ls->pdf;
       continue;
     }
-    // The grid's cell centres, all moved by one random offset (wrapping around): every point is
-    // uniform over the light, and the n x n of them cover it evenly.
     const Vec2f offset = sampler.Get2D();
     SampledSpectrum sum(0.f);
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        Vec2f u((i + 0.5f) / n + offset.x, (j + 0.5f) / n + offset.y);
-        u.x -= std::floor(u.x);
-        u.y -= std::floor(u.y);
-        sum += shadow_ray(*light, Vec2f(std::min(u.x, 0x1.fffffep-1f), std::min(u.y, 0x1.fffffep-1f)));
-      }
-    L += sum / float(n * n);
+    for (int k = 0; k < count; ++k) {
+      const std::optional<LightSample> ls = light->SampleLi(si.p, GridPoint(k, grid, offset), lambda);
+      if (!ls || ls->pdf == 0 || ls->L.IsBlack()) continue;
+      const BSDF::Evaluation e = bsdf.EvalWithPdf(si.wo, ls->wi);
+      const SampledSpectrum f = e.f * AbsDot(ls->wi, n);
+      if (f.IsBlack() || !visible(ls->infinite ? si.SpawnRay(ls->wi) : si.SpawnRayTo(ls->p, ls->p_error, ls->n)))
+        continue;
+      const float w = glossy ? PowerHeuristic(ls->pdf, e.pdf) : 1.f;
+      sum += f * ls->L * (w / ls->pdf);
+    }
+    if (glossy) sum += BsdfSamplesOfLight(si, bsdf, *light, lambda, sampler, counts);
+    L += sum / float(count);
   }
   return L;
+}
+
+SampledSpectrum WhittedIntegrator::BsdfSamplesOfLight(const SurfaceInteraction& si, const BSDF& bsdf, const Light& light,
+                                                      const SampledWavelengths& lambda, Sampler& sampler,
+                                                      RayCounts& counts) const {
+  const int grid = std::max(1, settings_.shadow_grid);
+  const Vec2f offset = sampler.Get2D();
+  const float uc0 = sampler.Get1D();
+  const auto* area = dynamic_cast<const AreaLight*>(&light);
+  const auto* infinite = dynamic_cast<const InfiniteLight*>(&light);
+  SampledSpectrum sum(0.f);
+  for (int k = 0; k < grid * grid; ++k) {
+    const float uc = std::min((k + uc0) / float(grid * grid), 0x1.fffffep-1f);  // the lobe choice, stratified too
+    const std::optional<BSDFSample> bs = bsdf.Sample(si.wo, uc, GridPoint(k, grid, offset));
+    if (!bs || bs->IsSpecular()) continue;
+    const Ray ray = si.SpawnRay(bs->wi);
+    ++counts.closest;
+    const std::optional<SurfaceInteraction> hit = scene_.Intersect(ray);
+    SampledSpectrum Le;
+    float light_pdf = 0;
+    if (hit) {
+      if (!area || hit->shape->area_light != area) continue;
+      Le = EmittedRadiance(*hit, lambda) * SegmentTransmittance(ray, *hit, lambda);
+      light_pdf = area->PdfLi(si.p, *hit);
+    } else {
+      if (!infinite) continue;
+      Le = infinite->Le(ray.d, lambda);
+      light_pdf = infinite->PdfLi(ray.d);
+    }
+    if (Le.IsBlack()) continue;
+    const SampledSpectrum f = bs->f * AbsDot(bs->wi, bsdf.frame().n);
+    sum += f * Le * (PowerHeuristic(bs->pdf, light_pdf) / bs->pdf);
+  }
+  return sum;
 }
 
 }  // namespace objektiv

@@ -8,15 +8,18 @@
 // rough metal and glass), the light of each light source, found by shadow rays: one for a
 // point, spot or directional light (hard shadows), an n x n grid over an area or environment
 // light, turned by one random offset per surface point (stratified and unbiased: soft shadows
-// with little noise); an optional ambient radiance times the diffuse reflectance; then each
+// with little noise), and for glossy lobes as many samples of the BSDF, the two combined by
+// multiple importance sampling; an optional ambient radiance times the diffuse reflectance; then each
 // delta lobe (mirror, Fresnel-weighted reflection and refraction of smooth glass, total internal
 // reflection included, plastic's coat) followed by a ray of its own, through the Beer-Lambert
 // absorption of the glass it runs in. Shadow rays stop at glass, as they do in the classic
 // tracers and in the path tracer's light sampling.
 //
 // max_depth counts path segments as Mitsuba does (1: emitters seen directly, 2: direct
-// light, each reflection or refraction one more); a branch whose weight falls below `bailout`
-// (POV-Ray's adc_bailout) is not followed.
+// light, each reflection or refraction one more), at most kMaxDepth: every branch is followed,
+// so the recursion needs a bound (two mirrors facing each other never dim the light); a branch
+// whose weight falls below `bailout` (POV-Ray's adc_bailout; at least kMinBailout, which keeps
+// the branches of glass between mirrors few) is not followed.
 #pragma once
 #include <optional>
 
@@ -25,6 +28,8 @@
 namespace objektiv {
 
 struct WhittedSettings {
+  static constexpr int kMaxDepth = 64;
+  static constexpr float kMinBailout = 1e-4f;
   int max_depth = 8;
   int shadow_grid = 4;  // n: n x n shadow rays per area or environment light
   float bailout = 1.f / 255;
@@ -46,6 +51,10 @@ class WhittedIntegrator final : public CameraPathIntegrator {
                         RayCounts& counts, const SampledSpectrum& weight, int segments) const;
   SampledSpectrum LightFromSources(const SurfaceInteraction& si, const BSDF& bsdf, const SampledWavelengths& lambda,
                                    Sampler& sampler, RayCounts& counts) const;
+  // n x n samples of a glossy BSDF toward an area or environment light, weighted against the
+  // light's own samples (multiple importance sampling, power heuristic).
+  SampledSpectrum BsdfSamplesOfLight(const SurfaceInteraction& si, const BSDF& bsdf, const Light& light,
+                                     const SampledWavelengths& lambda, Sampler& sampler, RayCounts& counts) const;
   WhittedSettings settings_;
 };
 
