@@ -294,3 +294,23 @@ TEST(Instancing, InstancedShapesCannotEmit) {
 
 }  // namespace
 }  // namespace objektiv
+
+namespace objektiv {
+namespace {
+
+// Radiance so large that the film's conversion and sums would overflow single precision (a sky
+// of 1e37) is counted and dropped as Inf, never written as NaN pixels behind a summary of none.
+TEST(FilmSafety, RadianceBeyondSinglePrecisionsReachIsCountedNotWrittenAsNaN) {
+  const test::RenderResult r = test::RenderXml(R"(<scene version="3.0.0">
+  <sensor type="perspective"><float name="fov" value="45"/>
+    <sampler type="independent"><integer name="sample_count" value="4"/></sampler>
+    <film type="hdrfilm"><integer name="width" value="16"/><integer name="height" value="16"/></film></sensor>
+  <shape type="sphere"><point name="center" x="0" y="0" z="3"/><bsdf type="diffuse"/></shape>
+  <emitter type="constant"><rgb name="radiance" value="1e37"/></emitter>
+</scene>)");
+  EXPECT_EQ(r.stats.inf_count, 16u * 16u * 4u);
+  for (float v : r.image.pixels) EXPECT_FALSE(std::isnan(v));
+}
+
+}  // namespace
+}  // namespace objektiv

@@ -126,13 +126,18 @@ class BlockContext {
   CameraRayCount& camera_rays() { return counters_.camera; }
 
  private:
-  // Non-finite radiance is counted and dropped, never written to the film.
+  // Non-finite radiance is counted and dropped, never written to the film; so is radiance
+  // beyond kLargestRadiance, which the film's conversion to XYZ (over a wavelength's density)
+  // and its sums over samples would carry past single precision into Inf and NaN pixels.
+  static constexpr float kLargestRadiance = 1e25f;
   bool Finite(const SampledSpectrum& L) {
     if (L.HasNaN()) {
       ++counters_.nan;
       return false;
     }
-    if (L.HasInf()) {
+    float largest = 0;
+    for (int i = 0; i < kSpectrumSamples; ++i) largest = std::max(largest, std::abs(L[i]));
+    if (!(largest <= kLargestRadiance)) {  // Inf too
       ++counters_.inf;
       return false;
     }
