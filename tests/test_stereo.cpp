@@ -408,11 +408,13 @@ TEST(Stereo, BadRigsNameFileAndLine) {
   const char* persp = R"(type="perspective">)";
   const std::vector<BadCase> cases = {
       {R"(<float name="eye_separation" value="-0.065"/><float name="convergence_distance" value="3"/>)", persp, 2,
-       "eye_separation must be a positive"},
+       "eye_separation must be a distance above 0"},
       {R"(<float name="eye_separation" value="0"/><float name="convergence_distance" value="3"/>)", persp, 2,
-       "eye_separation must be a positive"},
-      {R"(<float name="convergence_distance" value="0"/>)", persp, 2, "convergence_distance must be a positive"},
-      {R"(<float name="convergence_distance" value="-2"/>)", persp, 2, "convergence_distance must be a positive"},
+       "eye_separation must be a distance above 0"},
+      {R"(<float name="convergence_distance" value="0"/>)", persp, 2, "convergence_distance must be a distance above 0"},
+      {R"(<float name="convergence_distance" value="-2"/>)", persp, 2, "convergence_distance must be a distance above 0"},
+      {R"(<float name="eye_separation" value="1e6"/><float name="convergence_distance" value="3"/>)", persp, 2,
+       "below 1e6 (metres), got 1000000"},
       {R"(<string name="layout" value="top-bottom"/>)", persp, 2, "is not one of: side-by-side, over-under, anaglyph"},
       {R"(<string name="frustum" value="toe-in"/>)", persp, 2, "is not one of: offaxis, parallel"},
       {"", persp, 2, "needs convergence_distance"},

@@ -239,9 +239,14 @@ int RunRender(const RenderArgs& a) {
   const bool stopped = interrupted || InterruptSignal() != 0;
   if (!stopped && fs::exists(checkpoint)) fs::remove(checkpoint);
   if (!a.stats_json.empty()) WriteStatsJson(a.stats_json, stats, threads, layers, result);
+  // An anaglyph's film holds both eyes side by side; its image is one eye wide.
+  const auto* rig = dynamic_cast<const StereoCamera*>(setup.camera.get());
+  const std::string eyes = rig && rig->layout() == StereoLayout::kAnaglyph && !part
+                               ? fmt::format(" (both eyes; the anaglyph {}x{})", stats.width / 2, stats.height)
+                               : "";
   if (!a.quiet)
-    std::printf("%s: %dx%d, %.4g spp, %.2f s%s, %.3g samples/s, %.2f Mrays/s, %s, NaN %llu, Inf %llu -> %s%s%s\n",
-                a.scene.c_str(), stats.width, stats.height, film.samples_per_pixel(), stats.seconds,
+    std::printf("%s: %dx%d%s, %.4g spp, %.2f s%s, %.3g samples/s, %.2f Mrays/s, %s, NaN %llu, Inf %llu -> %s%s%s\n",
+                a.scene.c_str(), stats.width, stats.height, eyes.c_str(), film.samples_per_pixel(), stats.seconds,
                 LensPassTimes(layers).c_str(), stats.SamplesPerSecond(), stats.MraysPerSecond(),
                 stats.CameraPassRate() ? fmt::format("camera pass rate {:.1f}%", 100 * *stats.CameraPassRate()).c_str()
                                        : "no camera ray traced",

@@ -61,7 +61,8 @@ std::unique_ptr<Camera> BuildStereo(const Properties& p, const SensorBase& b) {
   if (in.type == "stereo") throw ErrorAt(in.loc, "a stereo sensor cannot wrap another stereo sensor");
   const double separation = p.Float("eye_separation", 0.065);
   if (!(separation > 0 && separation < 1e6))
-    throw ErrorAt(p.LocOf("eye_separation"), "eye_separation must be a positive distance (metres), got {}", separation);
+    throw ErrorAt(p.LocOf("eye_separation"), "eye_separation must be a distance above 0 and below 1e6 (metres), got {}",
+                  separation);
   const bool offaxis = p.Choice("frustum", true, kFrusta);
   const StereoLayout layout = p.Choice("layout", StereoLayout::kSideBySide, kLayouts);
   double convergence = 0;
@@ -71,7 +72,7 @@ std::unique_ptr<Camera> BuildStereo(const Properties& p, const SensorBase& b) {
                     "both eyes' images coincide)");
     convergence = p.Float("convergence_distance");
     if (!(convergence > 0 && convergence < 1e30))
-      throw ErrorAt(p.LocOf("convergence_distance"), "convergence_distance must be a positive distance (metres), got {}",
+      throw ErrorAt(p.LocOf("convergence_distance"), "convergence_distance must be a distance above 0 and below 1e30 (metres), got {}",
                     convergence);
   } else if (p.Has("convergence_distance")) {
     spdlog::warn("{}:{}: convergence_distance does nothing with frustum 'parallel' (the frusta are not shifted)",
