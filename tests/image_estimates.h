@@ -30,23 +30,29 @@ inline std::vector<double> Blocks(const Image& img) {
 struct Estimate {
   std::vector<double> mean, var;
 };
-inline Estimate Estimated(const std::function<std::string(int seed)>& scene) {
+// Any block sums (one vector per seed) over 8 seeds.
+inline Estimate EstimatedBlocks(const std::function<std::vector<double>(int seed)>& blocks) {
   constexpr int kSeeds = 8;
   std::vector<std::vector<double>> runs;
-  for (int seed = 1; seed <= kSeeds; ++seed) runs.push_back(Blocks(RenderXml(scene(seed)).image));
-  Estimate e{std::vector<double>(kBlocks, 0), std::vector<double>(kBlocks, 0)};
-  for (int k = 0; k < kBlocks; ++k) {
+  for (int seed = 1; seed <= kSeeds; ++seed) runs.push_back(blocks(seed));
+  const size_t n = runs[0].size();
+  Estimate e{std::vector<double>(n, 0), std::vector<double>(n, 0)};
+  for (size_t k = 0; k < n; ++k) {
     for (const auto& run : runs) e.mean[k] += run[k] / kSeeds;
     for (const auto& run : runs) e.var[k] += (run[k] - e.mean[k]) * (run[k] - e.mean[k]) / (kSeeds - 1) / kSeeds;
   }
   return e;
+}
+// The 8 x 8 blocks of a 32 x 32 render of scene(seed).
+inline Estimate Estimated(const std::function<std::string(int seed)>& scene) {
+  return EstimatedBlocks([&](int seed) { return Blocks(RenderXml(scene(seed)).image); });
 }
 
 // Two estimates of the same image agree block by block and in total within their measured
 // noise; the total must be able to tell an error of `resolution`.
 inline void ExpectSameImage(const Estimate& a, const Estimate& b, double resolution, const std::string& what) {
   double total_a = 0, total_b = 0, total_var = 0;
-  for (int k = 0; k < kBlocks; ++k) {
+  for (size_t k = 0; k < a.mean.size(); ++k) {
     const double var = a.var[k] + b.var[k];
     EXPECT_NEAR(b.mean[k], a.mean[k], 5 * std::sqrt(var) + 1e-9) << "block " << k << "\n" << what;
     total_a += a.mean[k];

@@ -13,11 +13,14 @@
 #include "base/error.h"
 #include "camera/stereo_camera.h"
 #include "io/anaglyph.h"
+#include "image_estimates.h"
 #include "render_helpers.h"
 
 namespace objektiv {
 namespace {
 
+using test::Estimate;
+using test::ExpectSameImage;
 using test::RenderXml;
 
 constexpr double kSeparation = 0.065, kConvergence = 3;
@@ -240,39 +243,6 @@ std::vector<double> Blocks(const Image& img, Vec2i origin, int w, int h, bool mi
   return b;
 }
 
-// Block sums over renders of 8 seeds: their mean and the variance of the mean.
-struct Estimate {
-  std::vector<double> mean, var;
-};
-Estimate Estimated(const std::function<std::vector<double>(int seed)>& blocks) {
-  constexpr int kSeeds = 8;
-  std::vector<std::vector<double>> runs;
-  for (int seed = 1; seed <= kSeeds; ++seed) runs.push_back(blocks(seed));
-  const size_t n = runs[0].size();
-  Estimate e{std::vector<double>(n, 0), std::vector<double>(n, 0)};
-  for (size_t k = 0; k < n; ++k) {
-    for (const auto& run : runs) e.mean[k] += run[k] / kSeeds;
-    for (const auto& run : runs) e.var[k] += (run[k] - e.mean[k]) * (run[k] - e.mean[k]) / (kSeeds - 1) / kSeeds;
-  }
-  return e;
-}
-
-// Two estimates agree block by block and in total within their measured noise; the total must
-// be able to tell an error of `resolution`.
-void ExpectSameImage(const Estimate& a, const Estimate& b, double resolution, const std::string& what) {
-  double total_a = 0, total_b = 0, total_var = 0;
-  for (size_t k = 0; k < a.mean.size(); ++k) {
-    const double var = a.var[k] + b.var[k];
-    EXPECT_NEAR(b.mean[k], a.mean[k], 5 * std::sqrt(var) + 1e-9) << "block " << k << "\n" << what;
-    total_a += a.mean[k];
-    total_b += b.mean[k];
-    total_var += var;
-  }
-  EXPECT_GT(total_a, 0);
-  EXPECT_NEAR(total_b, total_a, 4 * std::sqrt(total_var)) << what;
-  EXPECT_LT(4 * std::sqrt(total_var), resolution * total_a) << what;
-}
-
 // The real lens in a rig renders: nearly every camera ray passes, and the symmetric scene's
 // left image is the right one mirrored (within the noise).
 TEST(Stereo, RealLensRigRendersSymmetricImages) {
@@ -281,7 +251,7 @@ TEST(Stereo, RealLensRigRendersSymmetricImages) {
   const std::string props = R"(<float name="convergence_distance" value="3.2"/>)";
   double pass_rate = 0;
   auto eye = [&](int e) {
-    return Estimated([&, e](int seed) {
+    return test::EstimatedBlocks([&, e](int seed) {
       const test::RenderResult r = RenderXml(SymmetricRoom(props, inner, 32, 32, 16, seed));
       pass_rate = *r.stats.CameraPassRate();
       return Blocks(r.image, Vec2i(e == 0 ? 0 : 32, 0), 32, 32, e == 1);
@@ -345,10 +315,10 @@ TEST(Stereo, LightTracingThroughTheRigMatchesThePathTracer) {
       <string name="layout" value="{}"/>)", layout);
     const char* inner = R"(type="perspective"><float name="fov" value="50"/>)";
     const int w = std::string(layout) == "over-under" ? 32 : 64, h = std::string(layout) == "over-under" ? 64 : 32;
-    const Estimate path = Estimated([&](int seed) {
+    const Estimate path = test::EstimatedBlocks([&](int seed) {
       return Blocks(RenderXml(SymmetricRoom(props, inner, 32, 32, 16, seed)).image, Vec2i(0, 0), w, h);
     });
-    const Estimate light = Estimated([&](int seed) {
+    const Estimate light = test::EstimatedBlocks([&](int seed) {
       return Blocks(RenderXml(SymmetricRoom(props, inner, 32, 32, 32, seed, "ptracer")).image, Vec2i(0, 0), w, h);
     });
     ExpectSameImage(path, light, 0.03, layout);

@@ -108,8 +108,10 @@ SampledSpectrum WhittedIntegrator::BsdfSamplesOfLight(const SurfaceInteraction& 
   const int grid = std::max(1, settings_.shadow_grid);
   const Vec2f offset = sampler.Get2D();
   const float uc0 = sampler.Get1D();
-  const auto* area = dynamic_cast<const AreaLight*>(&light);
-  const auto* infinite = dynamic_cast<const InfiniteLight*>(&light);
+  // Called for the lights that are not delta (not point, spot or directional): an environment,
+  // or a shape's area light.
+  const auto* infinite = light.IsInfinite() ? static_cast<const InfiniteLight*>(&light) : nullptr;
+  const auto* area = infinite ? nullptr : static_cast<const AreaLight*>(&light);
   SampledSpectrum sum(0.f);
   for (int k = 0; k < grid * grid; ++k) {
     const float uc = std::min((k + uc0) / float(grid * grid), 0x1.fffffep-1f);  // the lobe choice, stratified too

@@ -101,6 +101,13 @@ struct PhongBxDF {
   float Pdf(const Vec3f& wo, const Vec3f& wi) const;
   int Flags() const;
   float SpecularProbability() const;  // of choosing the lobe of ks when sampling
+
+ private:
+  struct Evaluation {
+    SampledSpectrum f;
+    float pdf = 0;
+  };
+  Evaluation Evaluate(const Vec3f& wo, const Vec3f& wi) const;
 };
 
 }  // namespace objektiv

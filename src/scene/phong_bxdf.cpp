@@ -17,8 +17,6 @@ namespace {
 
 float LobeNormalisation(float n) { return (n + 2) * (n + 4) / (8 * kPi * (std::exp2(-n / 2) + n)); }
 
-float HalfVectorPdf(float cos_h, float n) { return (n + 1) * 0.5f * kInvPi * std::pow(cos_h, n); }
-
 }  // namespace
 
 int PhongBxDF::Flags() const {
@@ -33,22 +31,23 @@ float PhongBxDF::SpecularProbability() const {
   return d + s > 0 ? s / (d + s) : 0;
 }
 
-SampledSpectrum PhongBxDF::f(const Vec3f& wo, const Vec3f& wi) const {
+// f and the sampling density together: the half vector and its power once.
+PhongBxDF::Evaluation PhongBxDF::Evaluate(const Vec3f& wo, const Vec3f& wi) const {
   if (wo.z <= 0 || wi.z <= 0) return {};
-  SampledSpectrum value = kd * kInvPi;
+  const float ps = SpecularProbability();
+  Evaluation e{kd * kInvPi, (1 - ps) * CosineHemispherePdf(wi.z)};
   const Vec3f h = Normalize(wo + wi);
-  if (!ks.IsBlack() && h.z > 0) value += ks * (LobeNormalisation(exponent) * std::pow(h.z, exponent));
-  return value;
+  if (ps > 0 && h.z > 0) {
+    const float lobe = std::pow(h.z, exponent);
+    e.f += ks * (LobeNormalisation(exponent) * lobe);
+    e.pdf += ps * (exponent + 1) * 0.5f * kInvPi * lobe / (4 * Dot(wo, h));
+  }
+  return e;
 }
 
-float PhongBxDF::Pdf(const Vec3f& wo, const Vec3f& wi) const {
-  if (wo.z <= 0 || wi.z <= 0) return 0;
-  const float ps = SpecularProbability();
-  float pdf = (1 - ps) * CosineHemispherePdf(wi.z);
-  const Vec3f h = Normalize(wo + wi);
-  if (ps > 0 && h.z > 0) pdf += ps * HalfVectorPdf(h.z, exponent) / (4 * Dot(wo, h));
-  return pdf;
-}
+SampledSpectrum PhongBxDF::f(const Vec3f& wo, const Vec3f& wi) const { return Evaluate(wo, wi).f; }
+
+float PhongBxDF::Pdf(const Vec3f& wo, const Vec3f& wi) const { return Evaluate(wo, wi).pdf; }
 
 std::optional<BSDFSample> PhongBxDF::Sample(const Vec3f& wo, float uc, Vec2f u) const {
   if (wo.z <= 0) return std::nullopt;
@@ -63,9 +62,9 @@ std::optional<BSDFSample> PhongBxDF::Sample(const Vec3f& wo, float uc, Vec2f u) 
     wi = SampleCosineHemisphere(u);
   }
   if (wi.z <= 0) return std::nullopt;
-  const float pdf = Pdf(wo, wi);
-  if (pdf == 0) return std::nullopt;
-  return BSDFSample{f(wo, wi), wi, pdf, kReflection | (glossy ? kGlossy : kDiffuse)};
+  const Evaluation e = Evaluate(wo, wi);
+  if (e.pdf == 0) return std::nullopt;
+  return BSDFSample{e.f, wi, e.pdf, kReflection | (glossy ? kGlossy : kDiffuse)};
 }
 
 }  // namespace objektiv
