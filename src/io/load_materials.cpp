@@ -9,6 +9,7 @@
 #include "io/loader_context.h"
 #include "optics/glass_catalog.h"
 #include "scene/conductor_data.h"
+#include "scene/blend_material.h"
 #include "scene/normal_mapping.h"
 
 namespace objektiv {
@@ -159,6 +160,64 @@ std::shared_ptr<Material> MakePlastic(const Properties& p, LoaderContext& ctx) {
       GetTexture(p, "specular_reflectance", SpectrumUsage::kUnbounded, 1, ctx), p.Bool("nonlinear", false));
 }
 
+// Mitsuba 3's roughplastic: plastic's parameters and the coat's GGX roughness alpha (isotropic).
+std::shared_ptr<Material> MakeRoughPlastic(const Properties& p, LoaderContext& ctx) {
+  p.Choice("distribution", Distribution::kGgx, kDistributions);
+  if (p.Has("alpha")) {
+    const double a = p.Float("alpha");
+    if (!(a >= 1e-3 && a <= 1))
+      throw ErrorAt(p.LocOf("alpha"), "roughplastic: alpha must lie in [0.001, 1], got {} (for a smooth coat use plastic)", a);
+  }
+  const double alpha = p.Float("alpha", 0.1);
+  const double int_ior = GetIor(p, "int_ior", 1.49), ext_ior = GetIor(p, "ext_ior", 1.000277);
+  return std::make_shared<RoughPlasticMaterial>(
+      float(alpha), float(int_ior), float(ext_ior), GetTexture(p, "diffuse_reflectance", SpectrumUsage::kAlbedo, 0.5f, ctx),
+      GetTexture(p, "specular_reflectance", SpectrumUsage::kUnbounded, 1, ctx), p.Bool("nonlinear", false));
+}
+
+// A weight or an opacity (blendbsdf, mask): a number or colour must lie in [0, 1]; a texture's
+// values are clamped to it where they are read (TextureWeight).
+std::shared_ptr<const SpectrumTexture> GetWeight(const Properties& p, const std::string& name, LoaderContext& ctx) {
+  if (const std::optional<SpectrumValue> v = p.Has(name) && !p.Object(name) ? p.SpectrumProp(name) : std::nullopt) {
+    const bool in_range = v->kind == SpectrumValue::Kind::kConstant ? v->value >= 0 && v->value <= 1
+                          : v->kind == SpectrumValue::Kind::kRgb    ? MinComponent(v->rgb) >= 0 && MaxComponent(v->rgb) <= 1
+                                                                    : true;
+    if (!in_range) throw ErrorAt(p.LocOf(name), "{}: '{}' must lie in [0, 1]", p.type(), name);
+  }
+  return GetTexture(p, name, SpectrumUsage::kData, 0.5f, ctx);
+}
+
+// The nested <bsdf>s a blendbsdf or mask is made of, exactly `count` of them.
+std::vector<std::shared_ptr<Material>> NestedMaterials(const Properties& p, LoaderContext& ctx, size_t count) {
+  auto nodes = p.Children("bsdf");
+  if (nodes.size() != count)
+    throw ErrorAt(p.loc(), "{} needs exactly {} nested <bsdf>{}, got {}", p.type(), count, count == 1 ? "" : "s", nodes.size());
+  std::vector<std::shared_ptr<Material>> out;
+  for (const auto& n : nodes) {
+    std::shared_ptr<Material> m = MaterialPlugins().Build(*n, ctx);
+    if (m->Absorption())
+      throw ErrorAt(n->loc, "{} cannot hold a dielectric with absorption (the medium behind a blend or mask has no one "
+                    "interior)", p.type());
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+std::shared_ptr<Material> MakeBlend(const Properties& p, LoaderContext& ctx) {
+  std::shared_ptr<const SpectrumTexture> weight = GetWeight(p, "weight", ctx);
+  std::vector<std::shared_ptr<Material>> parts = NestedMaterials(p, ctx, 2);
+  auto blend = std::make_shared<BlendMaterial>(parts[0], parts[1], std::move(weight));
+  if (blend->Leaves() > kMaxBlendLeaves)
+    throw ErrorAt(p.loc(), "blendbsdf: blends nested in blends mix {} BSDFs, more than the {} supported", blend->Leaves(),
+                  kMaxBlendLeaves);
+  return blend;
+}
+
+std::shared_ptr<Material> MakeMask(const Properties& p, LoaderContext& ctx) {
+  std::shared_ptr<const SpectrumTexture> opacity = GetWeight(p, "opacity", ctx);
+  return std::make_shared<MaskMaterial>(NestedMaterials(p, ctx, 1)[0], std::move(opacity));
+}
+
 // The classic tracer's `phong` (Mitsuba 0.6's names): diffuse and specular colour, exponent.
 std::shared_ptr<Material> MakePhong(const Properties& p, LoaderContext& ctx) {
   auto kd = GetTexture(p, "diffuse_reflectance", SpectrumUsage::kAlbedo, 0.5f, ctx);
@@ -258,6 +317,17 @@ const MaterialRegistry& MaterialPlugins() {
             {"specular_reflectance", PropType::kSpectrumOrTexture},
             {"nonlinear", PropType::kBoolean}},
            MakePlastic},
+          {"roughplastic",
+           {{"distribution", kDistributions},
+            {"alpha", PropType::kFloat},
+            {"int_ior", PropType::kFloatOrString},
+            {"ext_ior", PropType::kFloatOrString},
+            {"diffuse_reflectance", PropType::kSpectrumOrTexture},
+            {"specular_reflectance", PropType::kSpectrumOrTexture},
+            {"nonlinear", PropType::kBoolean}},
+           MakeRoughPlastic},
+          {"blendbsdf", {{"bsdf", PropType::kObject}, {"weight", PropType::kSpectrumOrTexture}}, MakeBlend},
+          {"mask", {{"bsdf", PropType::kObject}, {"opacity", PropType::kSpectrumOrTexture}}, MakeMask},
           {"phong",
            {{"diffuse_reflectance", PropType::kSpectrumOrTexture},
             {"specular_reflectance", PropType::kSpectrumOrTexture},

@@ -71,6 +71,9 @@ void AddSurfaces(const Properties& props, ShapeList shapes, LoaderContext& ctx, 
     emission = EmitterPlugins().Build(e, ctx);
   }
   const auto& radiance = emission.area_radiance;
+  // Light sampling picks points over the whole surface; rays would pass a mask's holes.
+  if (radiance && material->HasOpacity())
+    throw ErrorAt(emitters[0]->loc, "an area emitter cannot be on a shape whose BSDF is a mask (or holds one)");
   if (group >= 0) {
     if (radiance) throw ErrorAt(emitters[0]->loc, "shapes inside a shapegroup cannot emit light");
     // An instance's bounds are its group's, transformed: the plane's would leave Embree's range.

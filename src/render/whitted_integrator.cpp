@@ -41,7 +41,7 @@ SampledSpectrum WhittedIntegrator::Shade(const SurfaceInteraction& si, SampledWa
     L += LightFromSources(si, bsdf, lambda, sampler, counts);
     if (settings_.ambient) L += settings_.ambient->Sample(lambda) * bsdf.DiffuseReflectance(si.wo);
   }
-  SpecularLobe lobes[2];
+  SpecularLobe lobes[kMaxSpecularLobes];
   const int n = bsdf.SpecularLobes(si.wo, lobes);
   for (int i = 0; i < n; ++i) {
     const SampledSpectrum w = weight * lobes[i].weight;

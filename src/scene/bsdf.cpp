@@ -14,6 +14,7 @@ Overloaded(Ts...) -> Overloaded<Ts...>;
 SampledSpectrum BSDF::f(const Vec3f& wo_world, const Vec3f& wi_world, TransportMode mode) const {
   Vec3f wo = frame_.ToLocal(wo_world), wi = frame_.ToLocal(wi_world);
   if (wo.z == 0 || !SidesAgree(wo_world, wo.z) || !SidesAgree(wi_world, wi.z)) return {};
+  if (mix_) return MixF(wo_world, wi_world, mode);
   if (two_sided_ && wo.z < 0 && IsOpaque()) {
     wo.z = -wo.z;
     wi.z = -wi.z;
@@ -26,6 +27,11 @@ SampledSpectrum BSDF::f(const Vec3f& wo_world, const Vec3f& wi_world, TransportM
 std::optional<BSDFSample> BSDF::Sample(const Vec3f& wo_world, float uc, Vec2f u, TransportMode mode) const {
   Vec3f wo = frame_.ToLocal(wo_world);
   if (!SidesAgree(wo_world, wo.z)) return std::nullopt;
+  if (mix_) {
+    std::optional<BSDFSample> s = wo.z == 0 ? std::nullopt : MixSample(wo_world, uc, u, mode);
+    if (s && (s->pdf == 0 || s->f.IsBlack() || !SidesAgree(s->wi, Dot(s->wi, frame_.n)))) s.reset();
+    return s;
+  }
   bool flipped = two_sided_ && wo.z < 0 && IsOpaque();
   if (flipped) wo.z = -wo.z;
   // One returned name on every path, so that the sample is built in the caller's slot (a
@@ -48,6 +54,7 @@ std::optional<BSDFSample> BSDF::Sample(const Vec3f& wo_world, float uc, Vec2f u,
 float BSDF::Pdf(const Vec3f& wo_world, const Vec3f& wi_world, TransportMode mode) const {
   Vec3f wo = frame_.ToLocal(wo_world), wi = frame_.ToLocal(wi_world);
   if (wo.z == 0 || !SidesAgree(wo_world, wo.z) || !SidesAgree(wi_world, wi.z)) return 0;
+  if (mix_) return MixEval(wo_world, wi_world, mode).pdf;
   if (two_sided_ && wo.z < 0 && IsOpaque()) {
     wo.z = -wo.z;
     wi.z = -wi.z;
@@ -60,6 +67,7 @@ float BSDF::Pdf(const Vec3f& wo_world, const Vec3f& wi_world, TransportMode mode
 BSDF::Evaluation BSDF::EvalWithPdf(const Vec3f& wo_world, const Vec3f& wi_world, TransportMode mode) const {
   Vec3f wo = frame_.ToLocal(wo_world), wi = frame_.ToLocal(wi_world);
   if (wo.z == 0 || !SidesAgree(wo_world, wo.z) || !SidesAgree(wi_world, wi.z)) return {};
+  if (mix_) return MixEval(wo_world, wi_world, mode);
   if (two_sided_ && wo.z < 0 && IsOpaque()) {
     wo.z = -wo.z;
     wi.z = -wi.z;
@@ -70,6 +78,7 @@ BSDF::Evaluation BSDF::EvalWithPdf(const Vec3f& wo_world, const Vec3f& wi_world,
 }
 
 int BSDF::Flags() const {
+  if (mix_) return MixFlags();
   return std::visit([](const auto& b) { return b.Flags(); }, bxdf_);
 }
 

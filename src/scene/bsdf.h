@@ -1,5 +1,6 @@
 // A BSDF at a surface point: one BxDF in the shading frame, in world-space directions.
 #pragma once
+#include <memory>
 #include <variant>
 
 #include "base/frame.h"
@@ -7,7 +8,13 @@
 
 namespace objektiv {
 
-using BxDF = std::variant<DiffuseBxDF, DielectricBxDF, ConductorBxDF, PlasticBxDF, PhongBxDF, ThinDielectricBxDF>;
+using BxDF = std::variant<DiffuseBxDF, DielectricBxDF, ConductorBxDF, PlasticBxDF, PhongBxDF, ThinDielectricBxDF,
+                          RoughPlasticBxDF>;
+
+// The most delta lobes a BSDF has at one wo: a smooth dielectric's two, for each of the (at
+// most kMaxBlendLeaves) BSDFs a blend mixes.
+constexpr int kMaxBlendLeaves = 4;
+constexpr int kMaxSpecularLobes = 2 * kMaxBlendLeaves;
 
 // A delta lobe of a BSDF at wo (scene/bsdf_lobes.cpp): the one direction it sends light to and
 // the share it sends (f |cos theta_i| of the lobe: Fresnel reflectance or transmittance with
@@ -25,6 +32,11 @@ class BSDF {
   // same on both sides. Dielectrics are always two-sided.
   BSDF(const Frame& shading, BxDF bxdf, bool two_sided)
       : frame_(shading), bxdf_(std::move(bxdf)), two_sided_(two_sided) {}
+  // Mitsuba's blendbsdf: (1 - weight) a + weight b, weight in [0, 1], at one surface point
+  // (scene/bsdf_blend.cpp). a and b keep their own frames (either may be bump-mapped); the
+  // blend's frame is `shading`, the one the integrators take the cosine with, and each part's
+  // f is scaled by its own cosine over that one, so that f |cos| is each part's own.
+  static BSDF Blend(const Frame& shading, BSDF a, BSDF b, float weight);
 
   SampledSpectrum f(const Vec3f& wo_world, const Vec3f& wi_world, TransportMode mode = TransportMode::kRadiance) const;
   std::optional<BSDFSample> Sample(const Vec3f& wo_world, float uc, Vec2f u,
@@ -42,15 +54,17 @@ class BSDF {
   // Whether Sample uses its 1D number (to choose between lobes); single-lobe BxDFs do not,
   // so integrators need not draw it.
   bool UsesLobeChoice() const {
-    return std::holds_alternative<DielectricBxDF>(bxdf_) || std::holds_alternative<PlasticBxDF>(bxdf_) ||
+    return mix_ || std::holds_alternative<RoughPlasticBxDF>(bxdf_) || std::holds_alternative<DielectricBxDF>(bxdf_) || std::holds_alternative<PlasticBxDF>(bxdf_) ||
            std::holds_alternative<PhongBxDF>(bxdf_) || std::holds_alternative<ThinDielectricBxDF>(bxdf_);
   }
-  // Every delta lobe at wo, written to out (at most two: a smooth dielectric's reflection and
-  // refraction), for tracers that follow each of them instead of sampling one (whitted).
-  int SpecularLobes(const Vec3f& wo_world, SpecularLobe out[2], TransportMode mode = TransportMode::kRadiance) const;
+  // Every delta lobe at wo, written to out (at most two for one BxDF: a smooth dielectric's
+  // reflection and refraction; a blend's parts' together), for tracers that follow each of
+  // them instead of sampling one (whitted).
+  int SpecularLobes(const Vec3f& wo_world, SpecularLobe out[kMaxSpecularLobes],
+                    TransportMode mode = TransportMode::kRadiance) const;
   // The reflectance of the BSDF's diffuse part seen from wo, the share of a uniform ambient
-  // light it returns: Lambert's R, Phong's kd, plastic's base through its coat (pi f toward the
-  // shading normal); zero for the others.
+  // light it returns: Lambert's R, Phong's kd, plastic's and rough plastic's base through
+  // their coat (pi f toward the shading normal), a blend's parts' weighted; zero for the others.
   SampledSpectrum DiffuseReflectance(const Vec3f& wo_world) const;
   const Frame& frame() const { return frame_; }
   // For a perturbed shading frame (bump and normal maps): a direction wo or wi on different
@@ -63,6 +77,14 @@ class BSDF {
   }
 
  private:
+  struct Mix;
+  // The blend's versions of the public calls (scene/bsdf_blend.cpp).
+  SampledSpectrum MixF(const Vec3f& wo_world, const Vec3f& wi_world, TransportMode mode) const;
+  std::optional<BSDFSample> MixSample(const Vec3f& wo_world, float uc, Vec2f u, TransportMode mode) const;
+  Evaluation MixEval(const Vec3f& wo_world, const Vec3f& wi_world, TransportMode mode) const;
+  int MixFlags() const;
+  int MixSpecularLobes(const Vec3f& wo_world, SpecularLobe out[kMaxSpecularLobes], TransportMode mode) const;
+  SampledSpectrum MixDiffuseReflectance(const Vec3f& wo_world) const;
   bool IsOpaque() const {
     return !std::holds_alternative<DielectricBxDF>(bxdf_) && !std::holds_alternative<ThinDielectricBxDF>(bxdf_);
   }
@@ -73,6 +95,7 @@ class BSDF {
   bool two_sided_ = false;
   bool check_side_ = false;
   Vec3f side_n_;
+  std::shared_ptr<const Mix> mix_;  // set for a blend (bxdf_ then unused)
 };
 
 }  // namespace objektiv

@@ -44,9 +44,10 @@ int Lobes(const PlasticBxDF& b, const Vec3f& wo, SpecularLobe out[2]) {
 
 }  // namespace
 
-int BSDF::SpecularLobes(const Vec3f& wo_world, SpecularLobe out[2], TransportMode mode) const {
+int BSDF::SpecularLobes(const Vec3f& wo_world, SpecularLobe out[kMaxSpecularLobes], TransportMode mode) const {
   Vec3f wo = frame_.ToLocal(wo_world);
   if (wo.z == 0 || !SidesAgree(wo_world, wo.z)) return 0;
+  if (mix_) return MixSpecularLobes(wo_world, out, mode);
   const bool flipped = two_sided_ && wo.z < 0 && IsOpaque();
   if (flipped) wo.z = -wo.z;
   int n = 0;
@@ -67,11 +68,13 @@ int BSDF::SpecularLobes(const Vec3f& wo_world, SpecularLobe out[2], TransportMod
 SampledSpectrum BSDF::DiffuseReflectance(const Vec3f& wo_world) const {
   Vec3f wo = frame_.ToLocal(wo_world);
   if (!SidesAgree(wo_world, wo.z)) return {};
+  if (mix_) return MixDiffuseReflectance(wo_world);
   if (two_sided_ && wo.z < 0 && IsOpaque()) wo.z = -wo.z;
   if (wo.z <= 0) return {};
   if (const auto* d = std::get_if<DiffuseBxDF>(&bxdf_)) return d->R;
   if (const auto* p = std::get_if<PhongBxDF>(&bxdf_)) return p->kd;
   if (const auto* p = std::get_if<PlasticBxDF>(&bxdf_)) return p->f(wo, Vec3f(0, 0, 1)) * kPi;
+  if (const auto* p = std::get_if<RoughPlasticBxDF>(&bxdf_)) return p->DiffusePart(wo, Vec3f(0, 0, 1)) * kPi;
   return {};
 }
 

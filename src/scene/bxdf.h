@@ -6,6 +6,7 @@
 
 #include "base/sampled_spectrum.h"
 #include "scene/microfacet.h"
+#include "scene/rough_coat.h"
 
 namespace objektiv {
 
@@ -72,6 +73,34 @@ struct PlasticBxDF {
   std::optional<BSDFSample> Sample(const Vec3f& wo, float uc, Vec2f u) const;
   float Pdf(const Vec3f& wo, const Vec3f& wi) const;
   int Flags() const { return kReflection | kDiffuse | kSpecular; }
+};
+
+// Rough plastic (Mitsuba 3's `roughplastic`): a Lambertian base under a rough dielectric coat
+// (scene/rough_plastic_bxdf.cpp). The coat reflects its GGX microfacet lobe, specular * F D G /
+// (4 cos_o cos_i); the base's light enters and leaves through it, scaled by what the coat lets
+// through at each end, T(mu_i) T(mu_o), and bounces between base and coat (a geometric series
+// in the coat's internal reflectance): diffuse / (1 - Fdr) T_i T_o / (pi eta^2). With the
+// internal reflectance RoughCoat derives, the albedo is at most 1 and exactly 1 for a white
+// base (and specular 1); as alpha -> 0 it becomes PlasticBxDF. Front side only.
+struct RoughPlasticBxDF {
+  const RoughCoat* coat = nullptr;  // not owned (the material's)
+  float specular_sampling_weight = 0.5f;
+  SampledSpectrum diffuse, specular{1.f};
+  bool nonlinear = false;
+  SampledSpectrum f(const Vec3f& wo, const Vec3f& wi) const;
+  std::optional<BSDFSample> Sample(const Vec3f& wo, float uc, Vec2f u) const;
+  float Pdf(const Vec3f& wo, const Vec3f& wi) const;
+  int Flags() const { return kReflection | kGlossy | (diffuse.IsBlack() ? 0 : kDiffuse); }
+  // The base's part alone (what the classic tracer's ambient term multiplies).
+  SampledSpectrum DiffusePart(const Vec3f& wo, const Vec3f& wi) const;
+  float SpecularProbability(float cos_o) const;  // of sampling the coat's lobe at wo
+
+ private:
+  struct Evaluation {
+    SampledSpectrum f;
+    float pdf = 0;
+  };
+  Evaluation Evaluate(const Vec3f& wo, const Vec3f& wi) const;
 };
 
 // A thin dielectric sheet (Mitsuba 3's `thindielectric`: a window pane): light reflects off it or

@@ -71,6 +71,32 @@ BSDF PlasticMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& 
   return BSDF(si.shading, b, two_sided_);
 }
 
+namespace {
+// The share of sampling given to the coat: its colour's mean against the base's (as Mitsuba).
+float SpecularSamplingWeight(const SpectrumTexture& diffuse, const SpectrumTexture& specular) {
+  const Vec3f dm = diffuse.MeanRgb(), sm = specular.MeanRgb();
+  const float d = dm.x + dm.y + dm.z, s = sm.x + sm.y + sm.z;
+  return d + s > 0 ? s / (d + s) : 0.5f;
+}
+}  // namespace
+
+RoughPlasticMaterial::RoughPlasticMaterial(float alpha, float int_ior, float ext_ior,
+                                           std::shared_ptr<const SpectrumTexture> diffuse,
+                                           std::shared_ptr<const SpectrumTexture> specular, bool nonlinear)
+    : coat_(alpha, int_ior / ext_ior), specular_weight_(SpecularSamplingWeight(*diffuse, *specular)),
+      diffuse_(std::move(diffuse)), specular_(std::move(specular)), nonlinear_(nonlinear) {}
+
+BSDF RoughPlasticMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const {
+  RoughPlasticBxDF b;
+  b.coat = &coat_;
+  b.specular_sampling_weight = specular_weight_;
+  b.diffuse = diffuse_->Evaluate(si.uv, lambda);
+  for (int i = 0; i < kSpectrumSamples; ++i) b.diffuse[i] = Clamp(b.diffuse[i], 0, 1);
+  b.specular = specular_->Evaluate(si.uv, lambda);
+  b.nonlinear = nonlinear_;
+  return BSDF(si.shading, b, two_sided_);
+}
+
 BSDF PhongMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const {
   PhongBxDF b;
   b.kd = diffuse_->Evaluate(si.uv, lambda);

@@ -21,6 +21,15 @@ class Material {
   // Absorption coefficient (per scene unit) of the medium behind the surface, for
   // Beer-Lambert attenuation of path segments inside closed dielectrics; nullptr if none.
   virtual const Spectrum* Absorption() const { return nullptr; }
+  // The share of the rays meeting the surface at si that it stops (a `mask`'s opacity, in
+  // [0, 1]); the scene lets the rest pass as if it were not there (Scene::Intersect). 1 for
+  // every material but a mask and what holds one.
+  virtual float Opacity(const SurfaceInteraction&) const { return 1; }
+  // Whether Opacity can be below 1 anywhere (the scene tests only such surfaces).
+  virtual bool HasOpacity() const { return false; }
+  // How many BSDFs its BSDF mixes (a blend's parts, counted through wrappers): at most
+  // kMaxBlendLeaves.
+  virtual int Leaves() const { return 1; }
 
  protected:
   bool two_sided_ = false;
@@ -89,6 +98,20 @@ class PlasticMaterial final : public Material {
 
  private:
   float eta_, fdr_int_, specular_weight_;
+  std::shared_ptr<const SpectrumTexture> diffuse_, specular_;
+  bool nonlinear_;
+};
+
+// Mitsuba 3's `roughplastic` (RoughPlasticBxDF): the coat's tables are computed once here.
+class RoughPlasticMaterial final : public Material {
+ public:
+  RoughPlasticMaterial(float alpha, float int_ior, float ext_ior, std::shared_ptr<const SpectrumTexture> diffuse,
+                       std::shared_ptr<const SpectrumTexture> specular, bool nonlinear);
+  BSDF GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const override;
+
+ private:
+  RoughCoat coat_;
+  float specular_weight_;
   std::shared_ptr<const SpectrumTexture> diffuse_, specular_;
   bool nonlinear_;
 };

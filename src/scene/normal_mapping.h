@@ -36,6 +36,9 @@ class PerturbedNormalMaterial : public Material {
   Frame ShadingFrame(const SurfaceInteraction& si) const override;
   void SetTwoSided(bool v) override { inner_->SetTwoSided(v); }
   const Spectrum* Absorption() const override { return inner_->Absorption(); }
+  float Opacity(const SurfaceInteraction& si) const override { return inner_->Opacity(si); }
+  bool HasOpacity() const override { return inner_->HasOpacity(); }
+  int Leaves() const override { return inner_->Leaves(); }
 
  protected:
   virtual Frame Perturb(const SurfaceInteraction& si) const = 0;

@@ -1,10 +1,12 @@
 #include "scene/scene.h"
 
+#include <bit>
 #include <cmath>
 #include <stdexcept>
 #include <unordered_map>
 
 #include "base/log.h"
+#include "base/rng.h"
 
 namespace objektiv {
 
@@ -48,6 +50,7 @@ ShapeRecord& Scene::AddShape(std::unique_ptr<Shape> shape, std::shared_ptr<const
   rtcReleaseGeometry(geom);
   if (id != shapes_.size()) throw std::logic_error("Embree geometry IDs out of step with shapes");
   bounds_.Extend(shape->WorldBounds());
+  if (material && material->HasOpacity()) has_masks_ = true;
   shapes_.push_back(ShapeRecord{std::move(shape), std::move(material), nullptr, -1});
   return shapes_.back();
 }
@@ -67,6 +70,7 @@ void Scene::AddShapeToGroup(int group, std::unique_ptr<Shape> shape, std::shared
   rtcReleaseGeometry(geom);
   if (id != g.shapes.size()) throw std::logic_error("Embree geometry IDs out of step with group shapes");
   g.bounds.Extend(shape->WorldBounds());
+  if (material && material->HasOpacity()) has_masks_ = true;
   g.shapes.push_back(ShapeRecord{std::move(shape), std::move(material), nullptr, -1});
 }
 
@@ -127,7 +131,73 @@ void Scene::Commit() {
   if (!power.empty()) light_distribution_ = Distribution1D(power);
 }
 
+// --- Masks (Mitsuba's `mask`: scene/mask_material.h) ----------------------------------
+//
+// A surface of opacity a stops a ray with probability a and lets it pass with probability
+// 1 - a, decided here, where the ray meets it, for every ray alike (camera and light paths,
+// shadow rays), as pbrt-v4's alpha test: a pass-through carries weight (1 - a) / (1 - a) = 1
+// and a stop weight a / a = 1, so a path's expected light is a L_surface + (1 - a) L_behind,
+// Mitsuba's mask, and a shadow ray agrees with the paths that pass (an estimator that let
+// paths through but stopped shadow rays would darken what lies behind; one that shaded the
+// pass-through as a BSDF lobe would see no point light through the holes). Being part of
+// the intersection, it does not count as a bounce and leaves multiple importance sampling as
+// it is. The decision uses a hash of the ray, so it is a function of the ray alone
+// (deterministic, as everything is), and independent between rays.
+
+namespace {
+
+float RayHashFloat(const Ray& ray) {
+  const uint64_t h = Hash(std::bit_cast<uint32_t>(ray.o.x), std::bit_cast<uint32_t>(ray.o.y),
+                          std::bit_cast<uint32_t>(ray.o.z), std::bit_cast<uint32_t>(ray.d.x),
+                          std::bit_cast<uint32_t>(ray.d.y), std::bit_cast<uint32_t>(ray.d.z));
+  return float(h >> 40) * 0x1p-24f;
+}
+
+// Enough layers of leaves for any scene; a ray that still meets masks after this many stops
+// at the last one (it cannot loop for ever).
+constexpr int kMaxPassThroughs = 1024;
+
+}  // namespace
+
+bool Scene::PassesThrough(const SurfaceInteraction& si, const Ray& ray) const {
+  const Material* m = si.shape ? si.shape->material.get() : nullptr;
+  if (!m || !m->HasOpacity()) return false;
+  const float a = m->Opacity(si);
+  if (a >= 1) return false;
+  return a <= 0 || RayHashFloat(ray) >= a;
+}
+
+// The ray beyond si, on the same line (its direction and its remaining length in the same
+// units); false when nothing of it is left.
+static bool Continuation(const Ray& ray, const SurfaceInteraction& si, Ray* next) {
+  *next = si.SpawnRay(ray.d);
+  if (std::isinf(ray.tmax)) return true;
+  next->tmax = ray.tmax - Dot(next->o - ray.o, ray.d) / Dot(ray.d, ray.d);
+  return next->tmax > 0;
+}
+
 std::optional<SurfaceInteraction> Scene::Intersect(const Ray& ray) const {
+  std::optional<SurfaceInteraction> si = IntersectSurface(ray);
+  if (!has_masks_ || !si) return si;
+  return SkipPassedMasks(ray, std::move(si));
+}
+
+std::optional<SurfaceInteraction> Scene::SkipPassedMasks(const Ray& ray, std::optional<SurfaceInteraction> si) const {
+  Ray segment = ray;
+  bool moved = false;
+  for (int i = 0; i < kMaxPassThroughs && si && PassesThrough(*si, segment); ++i) {
+    Ray next;
+    if (!Continuation(ray, *si, &next)) return std::nullopt;
+    segment = next;
+    si = IntersectSurface(segment);
+    moved = true;
+  }
+  // The hit's parameter along the ray asked about (absorption between surfaces reads it).
+  if (si && moved) si->t = Dot(si->p - ray.o, ray.d) / Dot(ray.d, ray.d);
+  return si;
+}
+
+std::optional<SurfaceInteraction> Scene::IntersectSurface(const Ray& ray) const {
   if (!EmbreeTakes(ray)) {
     skipped_rays_.fetch_add(1, std::memory_order_relaxed);
     return std::nullopt;
@@ -211,6 +281,7 @@ void Scene::IntersectCoherent(std::span<const Ray* const> rays, std::span<std::o
       rh.hit.geomID = packet.hit.geomID[k];
       rh.hit.instID[0] = packet.hit.instID[0][k];
       if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) o = HitInteraction(*rays[start + k], rh);
+      if (has_masks_ && o) o = SkipPassedMasks(*rays[start + k], std::move(o));
     }
   }
 }
@@ -242,6 +313,21 @@ SurfaceInteraction Scene::InstanceInteraction(const Ray& ray, const RTCRayHit& r
 }
 
 bool Scene::Occluded(const Ray& ray) const {
+  if (!has_masks_) return OccludedBySurface(ray);
+  // Through the masks a segment passes, hit by hit (each decided as Intersect decides it).
+  Ray segment = ray;
+  for (int i = 0; i < kMaxPassThroughs; ++i) {
+    const std::optional<SurfaceInteraction> si = IntersectSurface(segment);
+    if (!si) return false;
+    if (!PassesThrough(*si, segment)) return true;
+    Ray next;
+    if (!Continuation(ray, *si, &next)) return false;
+    segment = next;
+  }
+  return true;
+}
+
+bool Scene::OccludedBySurface(const Ray& ray) const {
   if (!EmbreeTakes(ray)) {
     skipped_rays_.fetch_add(1, std::memory_order_relaxed);
     return true;

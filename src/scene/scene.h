@@ -50,6 +50,8 @@ class Scene {
   // packets of eight, which Embree does several times faster per ray than one by one.
   // out[i] stays empty where rays[i] is null.
   void IntersectCoherent(std::span<const Ray* const> rays, std::span<std::optional<SurfaceInteraction>> out) const;
+  // Both honour masks (materials with an opacity): a ray passes such a surface with
+  // probability 1 - opacity, the same way for both (scene.cpp).
   bool Occluded(const Ray& ray) const;
   // Rays that Embree could not take (an origin or direction non-finite or beyond its range,
   // a NaN length), skipped rather than traced: a miss for Intersect, occluded for Occluded.
@@ -78,6 +80,13 @@ class Scene {
   // The interaction for Embree's answer rh to `ray` (empty for a miss).
   std::optional<SurfaceInteraction> HitInteraction(const Ray& ray, const RTCRayHit& rh) const;
   SurfaceInteraction InstanceInteraction(const Ray& ray, const RTCRayHit& rh) const;
+  // The nearest surface, mask or not, and whether a ray occludes ignoring masks.
+  std::optional<SurfaceInteraction> IntersectSurface(const Ray& ray) const;
+  bool OccludedBySurface(const Ray& ray) const;
+  // Whether `ray` passes the mask it meets at si; and the first hit along `ray`, from `si` on,
+  // that it does not pass.
+  bool PassesThrough(const SurfaceInteraction& si, const Ray& ray) const;
+  std::optional<SurfaceInteraction> SkipPassedMasks(const Ray& ray, std::optional<SurfaceInteraction> si) const;
 
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
@@ -88,6 +97,7 @@ class Scene {
   std::vector<const InfiniteLight*> infinite_lights_;
   Distribution1D light_distribution_;
   Bounds3f bounds_;
+  bool has_masks_ = false;  // whether any shape's material has an opacity
   mutable std::atomic<uint64_t> skipped_rays_{0};
 };
 
