@@ -4,7 +4,8 @@
 // what a preview needs; what it leaves out is every other path of light (the light a diffuse
 // surface passes on, caustics), as the classic tracers do.
 //
-// At a surface: its emission; for the BSDF's non-specular part (Lambert, Phong, plastic's base,
+// At a surface: its emission; for the BSDF's non-specular part (Lambert, Phong, plastic's and
+// rough plastic's base and coat, blends' parts,
 // rough metal and glass), the light of each light source, found by shadow rays: one for a
 // point, spot or directional light (hard shadows), an n x n grid over an area or environment
 // light, turned by one random offset per surface point (stratified and unbiased: soft shadows
