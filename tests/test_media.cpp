@@ -78,9 +78,11 @@ TEST(Media, PhaseSamplingMatchesItsDensity) {
 
 // --- free-flight sampling -----------------------------------------------------------------
 
-// With albedo 0 a path through a segment of length d survives with the weight T / P(t >= d) or
-// dies: its mean is the transmittance exp(-sigma_t d), at every wavelength of the bundle, also
-// where sigma_t differs by orders of magnitude between them or is 0 at some.
+// With albedo 0 a path through a segment of length d survives or dies, and a survivor's
+// estimate is its weight over the mean of its density ratios (the spectral MIS, scene/medium.h),
+// the sampling wavelength chosen at random: its mean is the transmittance exp(-sigma_t d), at
+// every wavelength of the bundle on its own, also where sigma_t differs by orders of magnitude
+// between them or is 0 at some.
 TEST(Media, FreeFlightEstimatesTheTransmittanceOfEveryWavelength) {
   // sigma_t: 0 below 450 nm, rising to 6 per unit at 700 nm.
   const Spectrum sigma_t = Spectrum::Tabulated({360, 450, 700, 830}, {0, 0, 6, 6});
@@ -89,12 +91,14 @@ TEST(Media, FreeFlightEstimatesTheTransmittanceOfEveryWavelength) {
   for (float d : {0.1f, 0.5f, 2.f}) {
     for (int trial = 0; trial < 4; ++trial) {
       const SampledWavelengths lambda = SampledWavelengths::SampleUniform(rng.UniformFloat());
-      constexpr int kN = 200000;
+      constexpr int kN = 1000000;
       double sum[kSpectrumSamples] = {}, sum2[kSpectrumSamples] = {};
       for (int i = 0; i < kN; ++i) {
-        const MediumSample ms = medium.SampleDistance(d, lambda, rng.UniformFloat());
-        ASSERT_FALSE(ms.weight.HasNaN() || ms.weight.HasInf());
-        const SampledSpectrum w = ms.scattered ? SampledSpectrum(0.f) : ms.weight;
+        const int channel = std::min(int(rng.UniformFloat() * kSpectrumSamples), kSpectrumSamples - 1);
+        const MediumSample ms = medium.SampleDistance(d, lambda, channel, rng.UniformFloat());
+        ASSERT_FALSE(ms.weight.HasNaN() || ms.weight.HasInf() || ms.ratio.HasNaN() || ms.ratio.HasInf());
+        ASSERT_GT(ms.ratio.Average(), 0.f);
+        const SampledSpectrum w = ms.scattered ? SampledSpectrum(0.f) : ms.weight / ms.ratio.Average();
         for (int k = 0; k < kSpectrumSamples; ++k) sum[k] += w[k], sum2[k] += double(w[k]) * w[k];
       }
       const SampledSpectrum st = sigma_t.Sample(lambda);
@@ -102,8 +106,8 @@ TEST(Media, FreeFlightEstimatesTheTransmittanceOfEveryWavelength) {
         const double mean = sum[k] / kN, se = std::sqrt(std::max(0.0, sum2[k] / kN - mean * mean) / kN);
         const double expected = std::exp(-double(st[k]) * d);
         EXPECT_NEAR(mean, expected, 5 * se + 1e-6) << "lambda " << lambda[k] << " sigma_t " << st[k] << " d " << d;
-        // The estimate is exact for one sigma_t; here it must still resolve 2% of it.
-        EXPECT_LT(5 * se, 0.02 * expected + 1e-6);
+        // Able to tell an error of 1% of the light that enters.
+        EXPECT_LT(5 * se, 0.01);
       }
     }
   }
@@ -141,13 +145,13 @@ TEST(Media, CameraSeesALampThroughFogAttenuatedByItsTransmittance) {
     <medium type="homogeneous" name="interior"><float name="sigma_t" value="{}"/><float name="albedo" value="0"/></medium>
   </shape>
 </scene>)",
-                                        Sensor(64, 16), sigma);
+                                        Sensor(256, 16), sigma);
     const test::RenderResult r = RenderXml(xml);
     for (int c = 0; c < 3; ++c) {
       const test::MeanSe m = ChannelMean(r.image, c);
       // 3e-3: the RGB round trip of the constant illuminant (as the furnace tests).
       EXPECT_NEAR(m.mean, std::exp(-sigma), 4 * m.se + 3e-3) << "sigma_t " << sigma << " channel " << c;
-      EXPECT_LT(4 * m.se, 0.03 * std::exp(-sigma));
+      EXPECT_LT(4 * m.se, 0.05 * std::exp(-sigma));
     }
     EXPECT_EQ(r.stats.nan_count, 0u);
   }
@@ -207,7 +211,7 @@ TEST(Media, WhiteFurnaceOfScatteringFogConservesEnergy) {
   <emitter type="constant"><float name="radiance" value="1"/></emitter>
   <shape type="sphere"><float name="radius" value="{}"/><bsdf type="null"/><ref name="interior" id="fog"/></shape>
 </scene>)",
-                                        medium, Sensor(64, 16, c.inside ? R"(<ref id="fog"/>)" : ""),
+                                        medium, Sensor(512, 16, c.inside ? R"(<ref id="fog"/>)" : ""),
                                         c.inside ? 5 : 1);
     const test::RenderResult r = RenderXml(xml);
     for (int ch = 0; ch < 3; ++ch) {
@@ -234,8 +238,7 @@ TEST(Media, FurnaceSeesAbsorption) {
 }
 
 // Next-event estimation with MIS and phase sampling alone estimate the same image: a box of
-// fog around a lamp and a diffuse floor, lit by an area light (and, for NEE's sake, an
-// environment), seen from inside the fog.
+// fog around a lamp and a diffuse floor, lit by an area light, seen from inside the fog.
 TEST(Media, NextEventEstimationAgreesWithPhaseSamplingAlone) {
   SKIP_UNDER_SANITIZERS("WhiteFurnaceOfScatteringFogConservesEnergy (with and without NEE)");
   auto scene = [](bool nee) {
@@ -244,14 +247,13 @@ TEST(Media, NextEventEstimationAgreesWithPhaseSamplingAlone) {
   <medium type="homogeneous" id="fog"><rgb name="sigma_t" value="0.4, 0.6, 0.9"/><float name="albedo" value="0.85"/>
     <boolean name="sample_emitters" value="{}"/><phase type="hg"><float name="g" value="0.5"/></phase></medium>
   {}
-  <shape type="rectangle"><transform name="to_world"><scale value="0.6"/><rotate x="1" angle="90"/><translate y="1.2"/></transform>
-    <emitter type="area"><rgb name="radiance" value="6, 5, 4"/></emitter></shape>
+  <shape type="rectangle"><transform name="to_world"><scale value="1.2"/><rotate x="1" angle="90"/><translate y="1.2"/></transform>
+    <emitter type="area"><rgb name="radiance" value="2, 1.7, 1.3"/></emitter></shape>
   <shape type="rectangle"><transform name="to_world"><scale value="3"/><rotate x="1" angle="-90"/><translate y="-1"/></transform>
     <bsdf type="diffuse"><rgb name="reflectance" value="0.6, 0.5, 0.4"/></bsdf></shape>
-  <emitter type="constant"><float name="radiance" value="0.2"/></emitter>
-  <shape type="sphere"><float name="radius" value="8"/><bsdf type="null"/><ref name="interior" id="fog"/></shape>
+  <shape type="sphere"><float name="radius" value="5"/><bsdf type="null"/><ref name="interior" id="fog"/></shape>
 </scene>)",
-                         nee, Sensor(nee ? 16 : 64, test::kSize, R"(<ref id="fog"/>)", seed, 60));
+                         nee, Sensor(nee ? 48 : 192, test::kSize, R"(<ref id="fog"/>)", seed, 60));
     };
   };
   const test::Estimate with_nee = test::Estimated(scene(true));
@@ -284,9 +286,9 @@ TEST(Media, BadInputIsAnErrorAtItsLine) {
     int line;
   };
   const Case cases[] = {
-      {fog(R"(<float name="sigma_t" value="-1"/>)"), "", "sigma_t must be finite and not negative", body + 1},
-      {fog(R"(<rgb name="sigma_t" value="1, -0.5, 1"/>)"), "", "sigma_t must be finite and not negative", body + 1},
-      {fog(R"(<float name="sigma_s" value="1e39"/>)"), "", "sigma_s must be finite", body + 1},
+      {fog(R"(<float name="sigma_t" value="-1"/>)"), "", "'sigma_t' must be finite and not negative", body + 1},
+      {fog(R"(<rgb name="sigma_t" value="1, -0.5, 1"/>)"), "", "'sigma_t' must be finite and not negative", body + 1},
+      {fog(R"(<float name="sigma_s" value="1e39"/>)"), "", "'sigma_s' = 1e+39 is too large", body + 1},
       {fog(R"(<float name="albedo" value="1.5"/>)"), "", "albedo must lie in [0, 1]", body + 1},
       {fog(R"(<float name="scale" value="-2"/>)"), "", "scale must be finite and not negative", body + 1},
       {fog(R"(<float name="sigma_t" value="1e30"/><float name="scale" value="1e20"/>)"), "", "is not finite", body + 1},
@@ -294,8 +296,8 @@ TEST(Media, BadInputIsAnErrorAtItsLine) {
       {fog(R"(<phase type="hg"><float name="g" value="1"/></phase>)"), "", "g must lie strictly between -1 and 1",
        body + 1},
       {fog(R"(<phase type="hg"><float name="g" value="-1.5"/></phase>)"), "", "g must lie strictly between", body + 1},
-      {fog(R"(<phase type="rayleigh"/>)"), "", "unknown <phase> type 'rayleigh'", body + 1},
-      {R"(<medium type="heterogeneous" id="m"/>)", "", "unknown <medium> type 'heterogeneous'", body},
+      {fog(R"(<phase type="rayleigh"/>)"), "", "unknown phase type 'rayleigh'", body + 1},
+      {R"(<medium type="heterogeneous" id="m"/>)", "", "unknown medium type 'heterogeneous'", body},
       {R"(<medium type="homogeneous" id="m"/>)", "", "this <medium> fills nothing", body},
       {R"(<shape type="sphere"><medium type="homogeneous"/></shape>)", "", "needs name=\"interior\"", body},
       {R"(<shape type="sphere"><medium type="homogeneous" name="inside"/></shape>)", "", "not 'inside'", body},

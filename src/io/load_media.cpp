@@ -1,14 +1,15 @@
 // The <medium> plugins (participating media) and the <phase> plugins of their phase functions.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "io/loader_context.h"
 
 namespace objektiv {
 namespace {
 
-// Finite and non-negative at every value the spectrum is written with (and at most 1 for an
-// albedo); a coefficient's value times the medium's scale must stay finite too.
+// Properties check that every value is finite and not negative; an albedo must also be at most 1,
+// and a coefficient times the medium's scale must stay within single precision.
 void CheckCoefficients(const Properties& p, const std::string& name, const SpectrumValue& v, bool albedo,
                        double scale) {
   std::vector<float> values;
@@ -29,7 +30,7 @@ void CheckCoefficients(const Properties& p, const std::string& name, const Spect
     if (!std::isfinite(x) || x < 0)
       throw ErrorAt(p.LocOf(name), "homogeneous: {} must be finite and not negative, got {}", name, x);
     if (albedo && x > 1) throw ErrorAt(p.LocOf(name), "homogeneous: albedo must lie in [0, 1], got {}", x);
-    if (!albedo && !std::isfinite(x * scale))
+    if (!albedo && !(double(x) * scale <= std::numeric_limits<float>::max()))
       throw ErrorAt(p.LocOf(name), "homogeneous: {} times scale ({} x {}) is not finite", name, x, scale);
   }
 }

@@ -3,6 +3,7 @@
 #include "render/light_paths.h"
 #include "render/medium_transport.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace objektiv {
@@ -26,6 +27,12 @@ SampledSpectrum PathIntegrator::Li(const Ray& camera_ray, const std::optional<Su
   const bool media = scene_.HasMedia();
   const Medium* medium = scene_.camera_medium();
   bool sampled_emitters = true;
+  // Spectral MIS over the distance sampling (scene/medium.h): the wavelength whose sigma_t
+  // samples the path's distances (chosen at its first medium), and the ratios p_j / p_c of the
+  // path's densities, kept with mean 1 (beta divided by their mean as they change, so that
+  // beta is the estimate's own weight and neither grows beyond range).
+  int channel = -1;
+  SampledSpectrum ratio(1.f);
   // `depth` is the number of path segments traced so far, including the current ray. Steps
   // over null surfaces (medium boundaries) continue the segment and do not count.
   for (int depth = 1;; ++depth) {
@@ -42,8 +49,14 @@ SampledSpectrum PathIntegrator::Li(const Ray& camera_ray, const std::optional<Su
         if (medium) {
           const float length = Length(ray.d);
           const float d_max = si ? si->t * length : std::numeric_limits<float>::infinity();
-          const MediumSample ms = medium->SampleDistance(d_max, lambda, sampler.Get1D());
-          beta *= ms.weight;
+          if (channel < 0) channel = std::min(int(sampler.Get1D() * kSpectrumSamples), kSpectrumSamples - 1);
+          const MediumSample ms = medium->SampleDistance(d_max, lambda, channel, sampler.Get1D());
+          const SampledSpectrum r = ratio * ms.ratio;
+          const float mean = r.Average();
+          // (Positive but for underflow after a long run of unlikely events: the path ends.)
+          if (!(mean > 0) || !std::isfinite(mean)) return L;
+          beta *= ms.weight / mean;
+          ratio = r / mean;
           if (ms.scattered) {
             scattered = true;
             scatter_p = ray.o + ray.d * (ms.distance / length);

@@ -18,37 +18,29 @@ SampledSpectrum HomogeneousMedium::Transmittance(float d, const SampledWavelengt
   return tr;
 }
 
-MediumSample HomogeneousMedium::SampleDistance(float d_max, const SampledWavelengths& lambda, float u) const {
+MediumSample HomogeneousMedium::SampleDistance(float d_max, const SampledWavelengths& lambda, int channel,
+                                               float u) const {
   const SampledSpectrum st = SigmaT(lambda);
-  // The wavelength that samples, and the number left for its distance.
-  const int c = std::min(int(u * kSpectrumSamples), kSpectrumSamples - 1);
-  const float u_t = std::min(u * kSpectrumSamples - c, 0x1.fffffep-1f);
+  const int c = channel;
+  const float u_t = std::min(u, 0x1.fffffep-1f);
   const float t = st[c] > 0 ? -std::log1p(-u_t) / st[c] : std::numeric_limits<float>::infinity();
   MediumSample ms;
   SampledSpectrum tr;
   if (t < d_max) {
-    // pdf(t) = mean of sigma_t,j T_j(t); its sampling wavelength's term alone is
-    // sigma_t,c (1 - u_t) > 0, so the mean is positive.
-    float pdf = 0;
-    for (int i = 0; i < kSpectrumSamples; ++i) {
-      tr[i] = Attenuation(st[i], t);
-      pdf += st[i] * tr[i];
-    }
-    pdf /= kSpectrumSamples;
+    for (int i = 0; i < kSpectrumSamples; ++i) tr[i] = Attenuation(st[i], t);
+    // sigma_t,c T_c(t) = sigma_t,c (1 - u_t) > 0.
+    const float pdf_c = st[c] * tr[c];
     ms.scattered = true;
     ms.distance = t;
-    ms.weight = SigmaS(lambda) * tr / pdf;
+    ms.weight = SigmaS(lambda) * tr / pdf_c;
+    ms.ratio = st * tr / pdf_c;
     return ms;
   }
-  // P(t >= d_max) = mean of T_j(d_max); positive since the sampling wavelength reached d_max.
-  float p = 0;
-  for (int i = 0; i < kSpectrumSamples; ++i) {
-    tr[i] = Attenuation(st[i], d_max);
-    p += tr[i];
-  }
-  p /= kSpectrumSamples;
+  // P_c(t >= d_max) = T_c(d_max) >= 1 - u_t > 0: wavelength c reached d_max.
+  for (int i = 0; i < kSpectrumSamples; ++i) tr[i] = Attenuation(st[i], d_max);
   ms.distance = d_max;
-  ms.weight = p > 0 ? tr / p : SampledSpectrum(0.f);
+  ms.weight = tr / tr[c];
+  ms.ratio = ms.weight;
   return ms;
 }
 

@@ -10,12 +10,19 @@
 //
 // Spectral: sigma_t differs between the wavelengths a path carries, and sampling by one of them
 // alone would leave the others' estimates with unbounded weights (or none where that one is 0).
-// The distance is sampled with one wavelength's sigma_t, that wavelength chosen uniformly among
-// the bundle's, and every wavelength is weighted by the one-sample MIS density of all of them
-// (the balance heuristic over the wavelengths, Wilkie et al. 2014's spectral MIS):
-//   pdf(t) = (1/n) sum_j sigma_t,j exp(-sigma_t,j t),   P(t >= D) = (1/n) sum_j exp(-sigma_t,j D).
-// Each weight is then at most n sigma_s / sigma_t (scattering) or n (passing): unbiased at every
-// wavelength, bounded, and never 0/0 (a wavelength with sigma_t = 0 passes with T = 1).
+// A path samples all its distances with the sigma_t of one wavelength c, chosen uniformly among
+// the bundle's when the path first enters a medium, and every wavelength's estimate is weighted
+// by the balance heuristic over the n choices of c for the whole path (one-sample spectral MIS,
+// as pbrt-v4's volumetric path tracer, with c chosen at random rather than the hero, which keeps
+// every wavelength unbiased on its own):
+//   estimate_i = f_i(path) / ((1/n) sum_j p_j(path)),
+// p_j the density of the path's distances when sampled with wavelength j. The integrator
+// carries f_i / p_c and the ratios p_j / p_c as products of each event's factors (MediumSample's
+// weight and ratio); per event, with T_j = exp(-sigma_t,j t):
+//   scattered at t:      weight_i = sigma_s,i T_i / (sigma_t,c T_c),   ratio_j = sigma_t,j T_j / (sigma_t,c T_c);
+//   passed to d_max:     weight_i = T_i / T_c,                         ratio_j = T_j / T_c.
+// The denominators are positive (sigma_t,c T_c = sigma_t,c (1 - u) at a sampled t; T_c >= 1 - u
+// at a passed d_max), and a wavelength with sigma_t = 0 passes with T = 1.
 #pragma once
 #include "base/sampled_spectrum.h"
 #include "base/spectrum.h"
@@ -28,9 +35,8 @@ namespace objektiv {
 struct MediumSample {
   bool scattered = false;  // a scattering event at `distance` (< d_max); else the segment's end
   float distance = 0;
-  // The factor of the path throughput: sigma_s T(t) / pdf(t) when scattered, T(d_max) /
-  // P(t >= d_max) when not.
-  SampledSpectrum weight;
+  // This event's factors of f_i / p_c and of p_j / p_c (see above).
+  SampledSpectrum weight, ratio;
 };
 
 class HomogeneousMedium {
@@ -55,8 +61,9 @@ class HomogeneousMedium {
   }
   // exp(-sigma_t d) per wavelength; d may be infinite (then 0 where sigma_t > 0, 1 where 0).
   SampledSpectrum Transmittance(float d, const SampledWavelengths& lambda) const;
-  // Free-flight sampling over [0, d_max) with the number u in [0, 1) (see above).
-  MediumSample SampleDistance(float d_max, const SampledWavelengths& lambda, float u) const;
+  // Free-flight sampling over [0, d_max) by the sigma_t of wavelength `channel`, with the number
+  // u in [0, 1) (see above).
+  MediumSample SampleDistance(float d_max, const SampledWavelengths& lambda, int channel, float u) const;
   const HGPhaseFunction& phase() const { return phase_; }
   // Whether paths scattered inside sample the emitters (next-event estimation with MIS), as
   // Mitsuba 3's sample_emitters; without, only phase sampling finds them.
