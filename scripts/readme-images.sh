@@ -71,9 +71,9 @@ classic() {
 }
 media() {
   # Light shafts through fog, and a glass of milk.
-  render scenes/media/fog-light-shafts.xml -D spp=64 -D width=640 -D height=400 -o "$tmp/fog.exr"
+  render scenes/media/fog-light-shafts.xml -D spp=48 -D width=480 -D height=300 -o "$tmp/fog.exr"
   cp "$tmp/fog.png" "$out/media-fog-light-shafts.png"
-  render scenes/media/milk-glass.xml -D spp=64 -D width=400 -D height=400 -o "$tmp/milk.exr"
+  render scenes/media/milk-glass.xml -D spp=128 -D width=320 -D height=320 -o "$tmp/milk.exr"
   cp "$tmp/milk.png" "$out/media-milk-glass.png"
 }
 case "${1:-}" in

@@ -90,10 +90,16 @@ SampledSpectrum PathIntegrator::Li(const Ray& camera_ray, const std::optional<Su
       prev_p = scatter_p;
       ray = Ray{scatter_p, ps.wi};
       if (beta.HasNaN() || beta.HasInf()) return SampledSpectrum(std::numeric_limits<float>::quiet_NaN());
+      // Russian roulette on the throughput as at surfaces, but with no floor of 5% for paths
+      // that carry all their light (pbrt-v4's rule): in a dense, barely absorbing medium a path
+      // scatters hundreds of times, and a 5% chance to end at each would leave the survivors
+      // weighted by 1 / 0.95^n (fireflies in a glass of milk).
       if (depth >= rr_depth_) {
-        float q = std::min((beta * eta_scale).Max(), 0.95f);
-        if (sampler.Get1D() >= q) break;
-        beta = beta / q;
+        const float q = std::min((beta * eta_scale).Max(), 1.f);
+        if (q < 1) {
+          if (sampler.Get1D() >= q) break;
+          beta = beta / q;
+        }
       }
       continue;
     }
