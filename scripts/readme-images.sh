@@ -6,7 +6,8 @@
 # light-traced caustics (docs/images/caustics-*.png), `readme-images.sh bump` the bump-mapped
 # floor (docs/images/bump-*.png), `readme-images.sh stereo` the stereo rig's anaglyph
 # (docs/images/stereo-*.png), `readme-images.sh classic` the classic tracer's picture
-# (docs/images/classic-*.png).
+# (docs/images/classic-*.png), `readme-images.sh media` the participating media's pictures
+# (docs/images/media-*.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/objektiv
@@ -68,8 +69,15 @@ classic() {
   cp "$tmp/classic-1.png" "$out/classic-spheres-1spp.png"
   cp "$tmp/classic-16.png" "$out/classic-spheres.png"
 }
+media() {
+  # Light shafts through fog, and a glass of milk.
+  render scenes/media/fog-light-shafts.xml -D spp=48 -D width=480 -D height=300 -o "$tmp/fog.exr"
+  cp "$tmp/fog.png" "$out/media-fog-light-shafts.png"
+  render scenes/media/milk-glass.xml -D spp=128 -D width=320 -D height=320 -o "$tmp/milk.exr"
+  cp "$tmp/milk.png" "$out/media-milk-glass.png"
+}
 case "${1:-}" in
-  flare | caustics | bump | stereo | classic)
+  flare | caustics | bump | stereo | classic | media)
     "$1"
     echo "wrote $out/$1-*.png"
     exit 0
@@ -104,5 +112,5 @@ for f in 0.85 2.25 6.05; do
   render scenes/lens/focus-series.xml -D spp=256 -D focus=$f -D width=420 -D height=280 -o "$tmp/focus-$f.exr"
 done
 oiiotool "$tmp/focus-0.85.png" "$tmp/focus-2.25.png" "$tmp/focus-6.05.png" --mosaic:pad=6 3x1 -o "$out/lens-focus-series.png"
-for part in flare caustics bump stereo classic; do "$part"; done
+for part in flare caustics bump stereo classic media; do "$part"; done
 echo "wrote $out/*.png"

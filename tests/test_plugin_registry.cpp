@@ -135,8 +135,8 @@ TEST(PluginRegistry, RejectsATypeOrADeclarationGivenTwice) {
 TEST(PluginRegistry, EveryKindOfSceneObjectHasOne) {
   std::set<std::string> tags;
   for (const PluginKind& kind : ScenePluginKinds()) tags.insert(kind.tag);
-  EXPECT_EQ(tags, (std::set<std::string>{"bsdf", "emitter", "film", "integrator", "rfilter", "sampler", "sensor",
-                                         "shape", "texture"}));
+  EXPECT_EQ(tags, (std::set<std::string>{"bsdf", "emitter", "film", "integrator", "medium", "phase", "rfilter",
+                                         "sampler", "sensor", "shape", "texture"}));
 }
 
 TEST(Samplers, TheTypeIsTheSamplersKind) {

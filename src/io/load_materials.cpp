@@ -262,7 +262,9 @@ std::shared_ptr<Material> MakeTwoSided(const Properties& p, LoaderContext& ctx) 
 std::shared_ptr<Material> WrappedMaterial(const Properties& p, LoaderContext& ctx) {
   auto inner = p.Children("bsdf");
   if (inner.size() != 1) throw ErrorAt(p.loc(), "{} needs exactly one nested <bsdf> to wrap, got {}", p.type(), inner.size());
-  return MaterialPlugins().Build(*inner[0], ctx);
+  std::shared_ptr<Material> m = MaterialPlugins().Build(*inner[0], ctx);
+  if (m->IsNull()) throw ErrorAt(inner[0]->loc, "{} cannot wrap a null BSDF (it has no surface to perturb)", p.type());
+  return m;
 }
 
 // Mitsuba 3's bumpmap: heights from one texture (named 'arg', or unnamed), times 'scale'.
@@ -303,6 +305,8 @@ const MaterialRegistry& MaterialPlugins() {
       "bsdf", {},
       {
           {"diffuse", {{"reflectance", PropType::kSpectrumOrTexture}}, MakeDiffuse},
+          // Mitsuba 3's `null`: no surface, only a medium boundary (Material::IsNull).
+          {"null", {}, [](P, LoaderContext&) -> std::shared_ptr<Material> { return std::make_shared<NullMaterial>(); }},
           {"dielectric", kDielectric, [](P p, LoaderContext& ctx) { return MakeDielectric(p, ctx, false); }},
           {"roughdielectric", Join(kDielectric, kRoughness),
            [](P p, LoaderContext& ctx) { return MakeDielectric(p, ctx, true); }},

@@ -107,7 +107,8 @@ const SensorRegistry& SensorPlugins() {
       {{"to_world", PropType::kTransform},
        {"far_clip", PropType::kFloat},
        {"film", PropType::kObject},
-       {"sampler", PropType::kObject}},
+       {"sampler", PropType::kObject},
+       {"medium", PropType::kMedium}},
       {
           {"perspective", kPerspectiveProperties,
            [](const Properties& p, const SensorBase& b) { return BuildPerspective(p, b, false); }},
@@ -128,7 +129,8 @@ const SensorRegistry& SensorPlugins() {
   return registry;
 }
 
-void BuildSensor(const ObjectNode& node, const GlassCatalog& glasses, RenderSetup& setup) {
+void BuildSensor(const ObjectNode& node, LoaderContext& ctx, RenderSetup& setup) {
+  const GlassCatalog& glasses = ctx.glasses;
   const SensorRegistry& registry = SensorPlugins();
   const SensorRegistry::PluginType& plugin = registry.Find(node);
   Properties p = registry.Open(node, plugin);
@@ -140,6 +142,7 @@ void BuildSensor(const ObjectNode& node, const GlassCatalog& glasses, RenderSetu
                   float(p.FloatIn("far_clip", 1e4, 1e-30, 1e30)), &glasses};
   CheckWithinSceneLimit(base.to_world.Point(Vec3f(0.f)), p.LocOf("to_world"), "the sensor");
   setup.camera = plugin.make(p, base);
+  ctx.scene.SetCameraMedium(MediumProperty(p, "medium", ctx));
   p.WarnUnused();
   // A camera that tiles the film with several images (stereo) takes the film as one image's
   // size and makes it larger; a crop window of it would be ambiguous (--crop crops the whole).

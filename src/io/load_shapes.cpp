@@ -47,7 +47,9 @@ Transform CylinderFrame(const Vec3d& p0, const Vec3d& p1, double radius, const L
 const std::vector<PropertyDecl> kSurfaceProperties = {{"to_world", PropType::kTransform},
                                                       {"flip_normals", PropType::kBoolean},
                                                       {"bsdf", PropType::kObject},
-                                                      {"emitter", PropType::kObject}};
+                                                      {"emitter", PropType::kObject},
+                                                      {"interior", PropType::kMedium},
+                                                      {"exterior", PropType::kMedium}};
 
 // Adds the surfaces a shape made to the scene (group < 0) or to a shape group, with the
 // shape's BSDF and area emitter.
@@ -74,7 +76,16 @@ void AddSurfaces(const Properties& props, ShapeList shapes, LoaderContext& ctx, 
   // Light sampling picks points over the whole surface; rays would pass a mask's holes.
   if (radiance && material->HasOpacity())
     throw ErrorAt(emitters[0]->loc, "an area emitter cannot be on a shape whose BSDF is a mask (or holds one)");
+  if (radiance && material->IsNull())
+    throw ErrorAt(emitters[0]->loc, "a shape with a null BSDF (a medium boundary) cannot emit light");
+  // The media on its two sides (ShapeRecord::interior, exterior).
+  const Medium* interior = MediumProperty(props, "interior", ctx);
+  const Medium* exterior = MediumProperty(props, "exterior", ctx);
+  const bool medium_interface = props.Has("interior") || props.Has("exterior");
   if (group >= 0) {
+    if (medium_interface)
+      throw ErrorAt(props.LocOf(props.Has("interior") ? "interior" : "exterior"),
+                    "shapes inside a shapegroup cannot bound media");
     if (radiance) throw ErrorAt(emitters[0]->loc, "shapes inside a shapegroup cannot emit light");
     // An instance's bounds are its group's, transformed: the plane's would leave Embree's range.
     if (props.type() == "plane") throw ErrorAt(props.loc(), "an infinite plane cannot be part of a shapegroup");
@@ -87,6 +98,9 @@ void AddSurfaces(const Properties& props, ShapeList shapes, LoaderContext& ctx, 
     if (radiance && !(shape->Area() > 0))
       throw ErrorAt(props.loc(), "an area emitter needs a shape with positive area");
     ShapeRecord& rec = ctx.scene.AddShape(std::move(shape), material);
+    rec.interior = interior;
+    rec.exterior = exterior;
+    rec.medium_interface = medium_interface;
     if (radiance) ctx.scene.AddAreaLight(rec, radiance, emission.two_sided);
   }
 }

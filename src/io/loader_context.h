@@ -2,6 +2,7 @@
 // registry (defined in the kind's load_*.cpp).
 #pragma once
 #include <map>
+#include <set>
 
 #include "camera/stereo_camera.h"
 #include "io/plugin_registry.h"
@@ -16,6 +17,8 @@ struct LoaderContext {
   std::map<const ObjectNode*, std::shared_ptr<const Material>> materials;
   std::map<std::pair<const ObjectNode*, int>, std::shared_ptr<const SpectrumTexture>> textures;
   std::map<const ObjectNode*, int> shape_groups;  // built <shape type="shapegroup">s
+  std::map<const ObjectNode*, const Medium*> media;
+  std::set<const ObjectNode*> attached_media;  // media a shape or the sensor uses
 };
 
 // Throws "LOC: WHAT at (x, y, z) lies beyond the scene's coordinate limit" (kMaxSceneCoordinate).
@@ -40,8 +43,13 @@ std::shared_ptr<const Material> BuildMaterial(const ObjectNode& node, LoaderCont
 // makes (a shapegroup, built once however often referenced), else -1.
 int BuildShape(const ObjectNode& node, LoaderContext& ctx, int group = -1);
 std::unique_ptr<Light> BuildEmitter(const ObjectNode& node, LoaderContext& ctx);
-// The camera, film settings and sampler settings from a <sensor>.
-void BuildSensor(const ObjectNode& node, const GlassCatalog& glasses, RenderSetup& setup);
+// The camera, film settings and sampler settings from a <sensor> (and the medium it sits in).
+void BuildSensor(const ObjectNode& node, LoaderContext& ctx, RenderSetup& setup);
+// A <medium>, built once however often referenced (load_media.cpp).
+const Medium* BuildMedium(const ObjectNode& node, LoaderContext& ctx);
+// The medium property `name` of a shape or sensor (nullptr if absent), marked attached; an
+// error if it is not a <medium>.
+const Medium* MediumProperty(const Properties& p, const std::string& name, LoaderContext& ctx);
 // The film (with its reconstruction filter) and the sampler; the defaults without a node.
 FilmSettings BuildFilm(const ObjectNode* node);
 SamplerSettings BuildSamplerSettings(const ObjectNode* node);
@@ -75,6 +83,8 @@ using ShapeRegistry = PluginRegistry<int, LoaderContext&, int>;  // as BuildShap
 using MaterialRegistry = PluginRegistry<std::shared_ptr<Material>, LoaderContext&>;
 using TextureRegistry = PluginRegistry<std::shared_ptr<const SpectrumTexture>, SpectrumUsage, LoaderContext&>;
 using EmitterRegistry = PluginRegistry<Emission, LoaderContext&>;
+using MediumRegistry = PluginRegistry<std::shared_ptr<const Medium>, LoaderContext&>;
+using PhaseRegistry = PluginRegistry<HGPhaseFunction>;
 
 const SensorRegistry& SensorPlugins();
 const FilmRegistry& FilmPlugins();
@@ -85,6 +95,8 @@ const ShapeRegistry& ShapePlugins();
 const MaterialRegistry& MaterialPlugins();
 const TextureRegistry& TexturePlugins();
 const EmitterRegistry& EmitterPlugins();
+const MediumRegistry& MediumPlugins();
+const PhaseRegistry& PhasePlugins();
 
 // <sensor type="realistic">: a camera with a real lens prescription (load_lens_sensor.cpp).
 SensorRegistry::PluginType RealisticSensorPlugin();

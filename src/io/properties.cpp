@@ -34,6 +34,8 @@ const char* PropTypeName(PropType t) {
       return "transform";
     case PropType::kObject:
       return "object";
+    case PropType::kMedium:
+      return "medium";
   }
   return "?";
 }
@@ -208,7 +210,7 @@ std::optional<SpectrumValue> Properties::SpectrumProp(const std::string& name) c
 }
 
 std::shared_ptr<ObjectNode> Properties::Object(const std::string& name) const {
-  const Property* p = Find(name, {PropType::kSpectrumOrTexture});
+  const Property* p = Find(name, {PropType::kSpectrumOrTexture, PropType::kMedium});
   if (!p) return nullptr;
   if (auto* o = std::get_if<std::shared_ptr<ObjectNode>>(&p->data)) return *o;
   return nullptr;

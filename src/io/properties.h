@@ -30,6 +30,7 @@ enum class PropType {
   kVector,             // <vector>
   kTransform,          // <transform>
   kObject,             // an unnamed nested object, declared by its tag (<film>, <bsdf>, ...)
+  kMedium,             // a nested or referenced <medium> bound by name (interior, exterior)
 };
 // The word the scene-format reference uses for it ("float", "spectrum or texture", ...).
 const char* PropTypeName(PropType t);
@@ -100,7 +101,8 @@ class Properties {
   Transform GetTransform(const std::string& name) const;  // identity if absent
   // A float, rgb or spectrum property.
   std::optional<SpectrumValue> SpectrumProp(const std::string& name) const;
-  // A named nested object (e.g. a texture given as <texture name="reflectance">).
+  // A named nested object (a texture given as <texture name="reflectance">, a medium as
+  // <medium name="interior">).
   std::shared_ptr<ObjectNode> Object(const std::string& name) const;
   // Unnamed nested objects with this tag (marks them used).
   std::vector<std::shared_ptr<ObjectNode>> Children(const std::string& tag) const;

@@ -4,6 +4,7 @@
 
 #include "base/log.h"
 #include "base/text_file.h"
+#include "camera/realistic_camera.h"
 #include "io/loader_context.h"
 
 namespace objektiv {
@@ -47,10 +48,31 @@ std::unique_ptr<Sampler> MakeSampler(const SamplerSettings& s) {
 std::vector<PluginKind> ScenePluginKinds() {
   return {IntegratorPlugins().Describe(), SensorPlugins().Describe(),  FilmPlugins().Describe(),
           FilterPlugins().Describe(),     SamplerPlugins().Describe(), ShapePlugins().Describe(),
-          MaterialPlugins().Describe(),   TexturePlugins().Describe(), EmitterPlugins().Describe()};
+          MaterialPlugins().Describe(),   TexturePlugins().Describe(), EmitterPlugins().Describe(),
+          MediumPlugins().Describe(),     PhasePlugins().Describe()};
 }
 
 namespace {
+
+// Media (and null medium boundaries) are followed by the path tracer only: the other
+// integrators, the path tracer's light paths (caustics) and the realistic camera's light-traced
+// lens effects would render such a scene without them, so they refuse it.
+void CheckMediaSupport(const RenderSetup& setup, const ObjectNode* integrator, const ObjectNode* sensor,
+                       const ObjectNode& root) {
+  if (!setup.scene->HasMedia()) return;
+  const Location& at = integrator ? integrator->loc : root.loc;
+  const std::string type = integrator ? integrator->type : "path";
+  if (!setup.integrator->RendersMedia())
+    throw ErrorAt(at, "the scene has participating media or null BSDFs, which the '{}' integrator does not render "
+                  "(only 'path' follows light through media, and not with caustics)", type);
+  if (type == "aov")
+    spdlog::warn("{}:{}: aov: the image follows the media, but the AOVs describe the first surface a camera ray "
+                 "hits (a null medium boundary included) and see no medium", at.file, at.line);
+  const auto* real = dynamic_cast<const RealisticCamera*>(setup.camera.get());
+  if (real && real->effects().Any())
+    throw ErrorAt(sensor->loc, "the lens's ghosts and diffraction (realistic sensor) trace light without the scene's "
+                  "participating media and null BSDFs: turn them off in a scene with media");
+}
 
 RenderSetup Build(const SceneDocument& doc, const GlassCatalog& glasses) {
   RenderSetup setup;
@@ -75,6 +97,9 @@ RenderSetup Build(const SceneDocument& doc, const GlassCatalog& glasses) {
       BuildMaterial(*child, ctx);
     } else if (child->tag == "texture") {
       BuildTexture(*child, SpectrumUsage::kAlbedo, ctx);
+    } else if (child->tag == "medium") {
+      // Declared for the <ref>s of shapes and the sensor; built (and checked) now.
+      BuildMedium(*child, ctx);
     } else {
       throw ErrorAt(child->loc, "<{}> cannot appear directly in <scene>", child->tag);
     }
@@ -82,9 +107,14 @@ RenderSetup Build(const SceneDocument& doc, const GlassCatalog& glasses) {
   for (const Property& p : root.props)
     throw ErrorAt(p.loc, "property '{}' cannot appear directly in <scene>", p.name);
   if (!sensor) throw ErrorAt(root.loc, "the scene has no <sensor>");
-  BuildSensor(*sensor, glasses, setup);
+  BuildSensor(*sensor, ctx, setup);
+  for (const auto& child : root.children)
+    if (child->tag == "medium" && !ctx.attached_media.count(child.get()))
+      throw ErrorAt(child->loc, "this <medium> fills nothing: attach it to a shape (<ref name=\"interior\" id=\"...\"/> "
+                    "or name=\"exterior\") or to the <sensor> (<ref id=\"...\"/>)");
   setup.scene->Commit();
   setup.integrator = BuildIntegrator(integrator, *setup.scene);
+  CheckMediaSupport(setup, integrator, sensor, root);
   if (setup.integrator->TracesLightToCamera() && !setup.camera->HasImportance())
     throw ErrorAt(integrator->loc,
                   "this integrator carries light paths to the camera (ptracer, or path with caustics), and light "

@@ -368,7 +368,8 @@ class Parser {
   }
 
   static bool IsObjectTag(const std::string& t) {
-    static const char* tags[] = {"bsdf", "texture", "shape", "emitter", "sensor", "film", "sampler", "rfilter", "integrator"};
+    static const char* tags[] = {"bsdf",    "texture", "shape",   "emitter",    "sensor", "film",
+                                 "sampler", "rfilter", "integrator", "medium", "phase"};
     return std::any_of(std::begin(tags), std::end(tags), [&](const char* x) { return t == x; });
   }
 
@@ -380,6 +381,29 @@ class Parser {
     parent.height = std::max(parent.height, obj->height + 1);
     if (parent.height > kMaxObjectNesting)
       throw ErrorAt(loc, "objects nested more than {} levels deep (counting those <ref>s bring in)", kMaxObjectNesting);
+    // A medium is bound by name as Mitsuba 3 binds it: a shape's interior or exterior, the
+    // sensor's (named or not) medium; elsewhere it has no meaning. A phase function belongs in
+    // a medium.
+    if (obj->tag == "medium") {
+      if (parent.tag == "shape") {
+        if (name != "interior" && name != "exterior")
+          throw ErrorAt(loc, "a <medium> in a <shape> needs name=\"interior\" or name=\"exterior\"{}",
+                        name.empty() ? "" : fmt::format(", not '{}'", name));
+        AddProperty(parent, Property{name, std::move(obj), "object", loc});
+        return;
+      }
+      if (parent.tag == "sensor") {
+        if (!name.empty() && name != "medium")
+          throw ErrorAt(loc, "the <medium> of a <sensor> is unnamed (or named 'medium'), not '{}'", name);
+        AddProperty(parent, Property{"medium", std::move(obj), "object", loc});
+        return;
+      }
+      if (parent.tag != "scene")
+        throw ErrorAt(loc, "a <medium> belongs in a <shape> (its interior or exterior), in the <sensor> or in the "
+                      "<scene> (with an id, for <ref>s), not in a <{}>", parent.tag);
+    }
+    if (obj->tag == "phase" && parent.tag != "medium")
+      throw ErrorAt(loc, "a <phase> belongs in a <medium>, not in a <{}>", parent.tag);
     if (name.empty() || obj->tag != "texture") {
       parent.children.push_back(std::move(obj));
     } else {

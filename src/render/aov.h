@@ -51,6 +51,9 @@ class AovIntegrator final : public CameraPathIntegrator {
   void TraceLightPaths(Sampler& sampler, BlockContext& ctx) const override { inner_->TraceLightPaths(sampler, ctx); }
   bool TracesLightToCamera() const override { return inner_->TracesLightToCamera(); }
   bool LightsTheSceneItself() const override { return inner_->LightsTheSceneItself(); }
+  // The image is the inner integrator's; the AOVs stay those of the first surface hit (a null
+  // medium boundary included), which the loader warns about.
+  bool RendersMedia() const override { return inner_->RendersMedia(); }
   int AovChannels() const override;
   void EvaluateAovs(const Ray& ray, const std::optional<SurfaceInteraction>& hit, const SampledWavelengths& lambda,
                     uint64_t seed, float* out) const override;

@@ -1,10 +1,12 @@
 #include "render/direct_lighting.h"
 
+#include "render/medium_transport.h"
+
 namespace objektiv {
 
 SampledSpectrum SampleLightMIS(const Scene& scene, const SurfaceInteraction& si, const BSDF& bsdf,
                                const SampledWavelengths& lambda, float u_light, Vec2f u, RayCounts& counts,
-                               float light_count, float bsdf_count) {
+                               float light_count, float bsdf_count, const Medium* medium) {
   float pmf;
   const Light* light = scene.SampleLight(u_light, &pmf);
   if (!light) return {};
@@ -19,8 +21,13 @@ SampledSpectrum SampleLightMIS(const Scene& scene, const SurfaceInteraction& si,
   } else {
     shadow = si.SpawnRayTo(ls->p, ls->p_error, ls->n);
   }
-  ++counts.shadow;
-  if (scene.Occluded(shadow)) return {};
+  if (scene.HasMedia()) {
+    f *= Transmittance(scene, shadow, si.shape->MediumToward(si.n, ls->wi, medium), lambda, counts);
+    if (f.IsBlack()) return {};
+  } else {
+    ++counts.shadow;
+    if (scene.Occluded(shadow)) return {};
+  }
   float light_pdf = pmf * ls->pdf;
   if (light->IsDelta() || bsdf_count == 0) return f * ls->L / (light_pdf * light_count);
   float w = PowerHeuristic(light_count * light_pdf, bsdf_count * eval.pdf);

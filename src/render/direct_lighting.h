@@ -6,10 +6,13 @@ namespace objektiv {
 
 // Next-event estimate at si: one light chosen by power, one point on it, a shadow ray.
 // The MIS weight against BSDF sampling uses the power heuristic with the given sample
-// counts (1 and 1 for the path tracer); bsdf_count = 0 disables MIS.
+// counts (1 and 1 for the path tracer); bsdf_count = 0 disables MIS. In a scene with media
+// (Scene::HasMedia) the shadow ray carries their transmittance (render/medium_transport.h),
+// starting in the medium on the light's side of the surface (`medium`: the one the path
+// arrived in).
 SampledSpectrum SampleLightMIS(const Scene& scene, const SurfaceInteraction& si, const BSDF& bsdf,
                                const SampledWavelengths& lambda, float u_light, Vec2f u, RayCounts& counts,
-                               float light_count = 1, float bsdf_count = 1);
+                               float light_count = 1, float bsdf_count = 1, const Medium* medium = nullptr);
 
 // Radiance emitted by the surface at si toward the ray's origin (zero if not an emitter).
 SampledSpectrum EmittedRadiance(const SurfaceInteraction& si, const SampledWavelengths& lambda);

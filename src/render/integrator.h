@@ -20,6 +20,9 @@ class Integrator {
   virtual bool TracesLightToCamera() const { return false; }
   // Whether it lights the scene without emitters (whitted's ambient term).
   virtual bool LightsTheSceneItself() const { return false; }
+  // Whether it follows light through participating media and across null surfaces
+  // (Scene::HasMedia): the scene loader refuses such scenes to integrators that do not.
+  virtual bool RendersMedia() const { return false; }
   const Scene& scene() const { return scene_; }
 
  protected:
@@ -68,6 +71,15 @@ class CameraPathIntegrator : public Integrator {
 // camera paths drop an emitter they reach after a non-specular bounce at their first hit
 // followed by specular bounces only. The two halves are disjoint and together are every path:
 // the image converges to the same as without (test_light_tracer.cpp).
+//
+// Participating media (scene/medium.h): the path tracks the medium its ray travels in (the
+// camera's, then changed where it leaves a surface that bounds media, by the side of the
+// geometric normal it leaves toward), samples a free-flight distance in it, and where it
+// scatters there estimates the direct light (next-event estimation through the media's
+// transmittance, combined with phase-function sampling by the power heuristic) and samples the
+// phase function for the next segment; Russian roulette as at surfaces. Surfaces with a `null`
+// BSDF are stepped over without counting toward max_depth. Light paths (caustics) do not
+// follow media: with caustics, a scene with media is refused.
 class PathIntegrator final : public CameraPathIntegrator {
  public:
   PathIntegrator(const Scene& scene, int max_depth, int rr_depth, bool caustics = false)
@@ -76,6 +88,7 @@ class PathIntegrator final : public CameraPathIntegrator {
                      Sampler& sampler, BlockContext& ctx) const override;
   void TraceLightPaths(Sampler& sampler, BlockContext& ctx) const override;
   bool TracesLightToCamera() const override { return caustics_; }
+  bool RendersMedia() const override { return !caustics_; }
 
  private:
   int max_depth_, rr_depth_;

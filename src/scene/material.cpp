@@ -4,6 +4,10 @@
 
 namespace objektiv {
 
+BSDF NullMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths&) const {
+  return BSDF(si.shading, DiffuseBxDF{SampledSpectrum(0.f)}, false);
+}
+
 BSDF DiffuseMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const {
   SampledSpectrum r = reflectance_->Evaluate(si.uv, lambda);
   for (int i = 0; i < kSpectrumSamples; ++i) r[i] = Clamp(r[i], 0, 1);

@@ -30,9 +30,20 @@ class Material {
   // How many BSDFs its BSDF mixes (a blend's parts, counted through wrappers): at most
   // kMaxBlendLeaves.
   virtual int Leaves() const { return 1; }
+  // Mitsuba 3's `null`: not a surface at all, only the boundary of a medium, which rays pass
+  // straight through (the path tracer steps over it; it has no BSDF to sample).
+  virtual bool IsNull() const { return false; }
 
  protected:
   bool two_sided_ = false;
+};
+
+// The `null` BSDF (see Material::IsNull). GetBSDF gives a black diffuse BSDF: nothing that
+// asks for one should (integrators that do not step over null surfaces refuse such scenes).
+class NullMaterial final : public Material {
+ public:
+  BSDF GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const override;
+  bool IsNull() const override { return true; }
 };
 
 class DiffuseMaterial final : public Material {

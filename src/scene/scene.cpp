@@ -51,6 +51,7 @@ ShapeRecord& Scene::AddShape(std::unique_ptr<Shape> shape, std::shared_ptr<const
   if (id != shapes_.size()) throw std::logic_error("Embree geometry IDs out of step with shapes");
   bounds_.Extend(shape->WorldBounds());
   if (material && material->HasOpacity()) has_masks_ = true;
+  has_null_surfaces_ |= material && material->IsNull();
   shapes_.push_back(ShapeRecord{std::move(shape), std::move(material), nullptr, -1});
   return shapes_.back();
 }
@@ -63,6 +64,11 @@ int Scene::AddShapeGroup() {
   return int(groups_.size()) - 1;
 }
 
+const Medium* Scene::AddMedium(std::shared_ptr<const Medium> medium) {
+  media_.push_back(std::move(medium));
+  return media_.back().get();
+}
+
 void Scene::AddShapeToGroup(int group, std::unique_ptr<Shape> shape, std::shared_ptr<const Material> material) {
   ShapeGroup& g = groups_.at(group);
   RTCGeometry geom = shape->CreateGeometry(device_);
@@ -71,6 +77,7 @@ void Scene::AddShapeToGroup(int group, std::unique_ptr<Shape> shape, std::shared
   if (id != g.shapes.size()) throw std::logic_error("Embree geometry IDs out of step with group shapes");
   g.bounds.Extend(shape->WorldBounds());
   if (material && material->HasOpacity()) has_masks_ = true;
+  has_null_surfaces_ |= material && material->IsNull();
   g.shapes.push_back(ShapeRecord{std::move(shape), std::move(material), nullptr, -1});
 }
 

@@ -12,6 +12,7 @@
 #include "scene/infinite_light.h"
 #include "scene/light.h"
 #include "scene/material.h"
+#include "scene/medium.h"
 #include "scene/shape.h"
 
 namespace objektiv {
@@ -21,6 +22,18 @@ struct ShapeRecord {
   std::shared_ptr<const Material> material;
   const AreaLight* area_light = nullptr;
   int instance = -1;  // for a top-level instance: index into the scene's instances
+  // The media on the two sides of the surface (as Mitsuba 3): a shape that names either is a
+  // boundary between media, and a ray leaving it toward the side of the geometric normal
+  // travels in `exterior`, else in `interior` (nullptr: vacuum). A shape that names neither
+  // leaves the medium a ray travels in unchanged.
+  const Medium* interior = nullptr;
+  const Medium* exterior = nullptr;
+  bool medium_interface = false;
+  // The medium a ray leaving the surface in direction w travels in, coming from `current`.
+  const Medium* MediumToward(const Vec3f& n, const Vec3f& w, const Medium* current) const {
+    if (!medium_interface) return current;
+    return Dot(w, n) > 0 ? exterior : interior;
+  }
 };
 
 class Scene {
@@ -35,6 +48,10 @@ class Scene {
   // Makes the shape record an emitter.
   void AddAreaLight(ShapeRecord& record, std::shared_ptr<const SpectrumTexture> radiance, bool two_sided);
   void AddLight(std::unique_ptr<Light> light);
+  // Participating media: the scene keeps them; shapes (ShapeRecord::interior, exterior) and
+  // the camera point to them.
+  const Medium* AddMedium(std::shared_ptr<const Medium> medium);
+  void SetCameraMedium(const Medium* medium) { camera_medium_ = medium; }
   // Instancing: shapes added to a group live in its own BVH (in object space); each instance
   // places the whole group with a transform. Instanced shapes cannot emit.
   int AddShapeGroup();
@@ -65,6 +82,11 @@ class Scene {
   const Light* SampleLight(float u, float* pmf) const;
   float LightPmf(const Light* light) const;
   const Bounds3f& bounds() const { return bounds_; }
+  // The medium the camera sits in (nullptr: vacuum).
+  const Medium* camera_medium() const { return camera_medium_; }
+  // Whether rays may travel through media or pass surfaces with a `null` BSDF: integrators
+  // that follow neither must refuse the scene (Integrator::RendersMedia).
+  bool HasMedia() const { return !media_.empty() || has_null_surfaces_; }
   size_t ShapeCount() const { return shapes_.size(); }
 
  private:
@@ -98,6 +120,9 @@ class Scene {
   Distribution1D light_distribution_;
   Bounds3f bounds_;
   bool has_masks_ = false;  // whether any shape's material has an opacity
+  std::vector<std::shared_ptr<const Medium>> media_;
+  const Medium* camera_medium_ = nullptr;
+  bool has_null_surfaces_ = false;
   mutable std::atomic<uint64_t> skipped_rays_{0};
 };
 

@@ -1,0 +1,330 @@
+// Homogeneous participating media (scene/medium.h) and their phase functions, in the path
+// tracer: the phase functions' normalisation and sampling, the spectral free-flight estimator
+// against exp(-sigma_t d) per wavelength, a camera looking at a lamp through a slab of fog, the
+// white furnace, next-event estimation against phase sampling alone, a glass of milk against
+// the same scene with its boundary made null, and the loader's errors.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "base/error.h"
+#include "base/rng.h"
+#include "chi2.h"
+#include "image_estimates.h"
+#include "render_helpers.h"
+#include "sanitizer_build.h"
+#include "scene/medium.h"
+
+namespace objektiv {
+namespace {
+
+using test::ChannelMean;
+using test::RenderXml;
+
+// --- phase functions --------------------------------------------------------------------
+
+// Integral of p(wo, .) over the sphere by the midpoint rule in cos theta (p depends on theta
+// alone; the peak of g = 0.9 needs the fine grid).
+double PhaseIntegral(float g) {
+  constexpr int kSteps = 200000;
+  double sum = 0;
+  for (int i = 0; i < kSteps; ++i) {
+    const double cos_theta = -1 + (i + 0.5) * 2.0 / kSteps;
+    sum += HenyeyGreenstein(float(cos_theta), g) * 2 * M_PI * (2.0 / kSteps);
+  }
+  return sum;
+}
+
+TEST(Media, PhaseFunctionsIntegrateToOne) {
+  for (float g : {0.f, 0.3f, -0.5f, 0.7f, 0.9f, -0.9f}) EXPECT_NEAR(PhaseIntegral(g), 1.0, 1e-4) << "g " << g;
+  // Isotropic is 1 / (4 pi) everywhere; g > 0 scatters forward (along -wo).
+  const HGPhaseFunction iso(0), fwd(0.7f);
+  const Vec3f wo = Normalize(Vec3f(0.3f, -0.4f, 0.8f));
+  EXPECT_NEAR(iso.p(wo, Vec3f(0, 0, 1)), 1 / (4 * M_PI), 1e-7);
+  EXPECT_GT(fwd.p(wo, -wo), 10 * fwd.p(wo, wo));
+  // Reciprocal.
+  const Vec3f wi = Normalize(Vec3f(-0.2f, 0.9f, 0.1f));
+  EXPECT_FLOAT_EQ(fwd.p(wo, wi), fwd.p(wi, wo));
+}
+
+TEST(Media, PhaseSamplingMatchesItsDensity) {
+  for (float g : {0.f, 0.4f, -0.6f, 0.85f}) {
+    const HGPhaseFunction phase(g);
+    // wo points back along the arriving ray: here the ray travels toward +x, the chi-square
+    // grid's pole, so the forward peak sits in its first bins.
+    const Vec3f wo(-1, 0, 0);
+    bool consistent = true;
+    auto sample = [&](PCG32& rng) -> std::optional<Vec3f> {
+      const PhaseSample s = phase.Sample(wo, Vec2f(rng.UniformFloat(), rng.UniformFloat()));
+      if (std::abs(s.p - phase.p(wo, s.wi)) > 1e-3f * s.p + 1e-6f) consistent = false;
+      return s.wi;
+    };
+    auto pdf = [&](const Vec3f& wi) { return double(phase.Pdf(wo, wi)); };
+    const test::Chi2Result r = test::Chi2TestDirections(sample, pdf, 200000, 16, 16);
+    EXPECT_GT(r.p_value, 1e-3) << "g " << g << ": " << r.Describe();
+    EXPECT_NEAR(r.pdf_integral, 1.0, 0.02) << "g " << g;
+    EXPECT_TRUE(consistent) << "g " << g << ": the sample's p is not p(wo, wi)";
+  }
+  // The test can fail: a sampler of the isotropic directions against the pdf of g = 0.5.
+  const HGPhaseFunction iso(0), hg(0.5f);
+  auto wrong = [&](PCG32& rng) -> std::optional<Vec3f> {
+    return iso.Sample(Vec3f(-1, 0, 0), Vec2f(rng.UniformFloat(), rng.UniformFloat())).wi;
+  };
+  auto pdf = [&](const Vec3f& wi) { return double(hg.Pdf(Vec3f(-1, 0, 0), wi)); };
+  EXPECT_LT(test::Chi2TestDirections(wrong, pdf, 200000, 16, 16).p_value, 1e-6);
+}
+
+// --- free-flight sampling -----------------------------------------------------------------
+
+// With albedo 0 a path through a segment of length d survives or dies, and a survivor's
+// estimate is its weight over the mean of its density ratios (the spectral MIS, scene/medium.h),
+// the sampling wavelength chosen at random: its mean is the transmittance exp(-sigma_t d), at
+// every wavelength of the bundle on its own, also where sigma_t differs by orders of magnitude
+// between them or is 0 at some.
+TEST(Media, FreeFlightEstimatesTheTransmittanceOfEveryWavelength) {
+  // sigma_t: 0 below 450 nm, rising to 6 per unit at 700 nm.
+  const Spectrum sigma_t = Spectrum::Tabulated({360, 450, 700, 830}, {0, 0, 6, 6});
+  const HomogeneousMedium medium = HomogeneousMedium::FromExtinction(sigma_t, Spectrum(0.f), 1, HGPhaseFunction(0));
+  PCG32 rng(7, 3);
+  for (float d : {0.1f, 0.5f, 2.f}) {
+    for (int trial = 0; trial < 4; ++trial) {
+      const SampledWavelengths lambda = SampledWavelengths::SampleUniform(rng.UniformFloat());
+      constexpr int kN = 1000000;
+      double sum[kSpectrumSamples] = {}, sum2[kSpectrumSamples] = {};
+      for (int i = 0; i < kN; ++i) {
+        const int channel = std::min(int(rng.UniformFloat() * kSpectrumSamples), kSpectrumSamples - 1);
+        const MediumSample ms = medium.SampleDistance(d, lambda, channel, rng.UniformFloat());
+        ASSERT_FALSE(ms.weight.HasNaN() || ms.weight.HasInf() || ms.ratio.HasNaN() || ms.ratio.HasInf());
+        ASSERT_GT(ms.ratio.Average(), 0.f);
+        const SampledSpectrum w = ms.scattered ? SampledSpectrum(0.f) : ms.weight / ms.ratio.Average();
+        for (int k = 0; k < kSpectrumSamples; ++k) sum[k] += w[k], sum2[k] += double(w[k]) * w[k];
+      }
+      const SampledSpectrum st = sigma_t.Sample(lambda);
+      for (int k = 0; k < kSpectrumSamples; ++k) {
+        const double mean = sum[k] / kN, se = std::sqrt(std::max(0.0, sum2[k] / kN - mean * mean) / kN);
+        const double expected = std::exp(-double(st[k]) * d);
+        EXPECT_NEAR(mean, expected, 5 * se + 1e-6) << "lambda " << lambda[k] << " sigma_t " << st[k] << " d " << d;
+        // Able to tell an error of 1% of the light that enters.
+        EXPECT_LT(5 * se, 0.01);
+      }
+    }
+  }
+  // The closed form itself.
+  const SampledWavelengths lambda = SampledWavelengths::SampleUniform(0.3f);
+  const SampledSpectrum tr = medium.Transmittance(1.5f, lambda), st = medium.SigmaT(lambda);
+  for (int k = 0; k < kSpectrumSamples; ++k) EXPECT_FLOAT_EQ(tr[k], std::exp(-st[k] * 1.5f));
+  const SampledSpectrum far = medium.Transmittance(std::numeric_limits<float>::infinity(), lambda);
+  for (int k = 0; k < kSpectrumSamples; ++k) EXPECT_EQ(far[k], st[k] > 0 ? 0.f : 1.f);
+}
+
+// --- whole renders --------------------------------------------------------------------------
+
+std::string Sensor(int spp, int size = 24, const std::string& extra = "", int seed = 0, float fov = 30) {
+  return fmt::format(R"(
+  <sensor type="perspective">
+    <float name="fov" value="{}"/>
+    <transform name="to_world"><lookat origin="0, 0, 4" target="0, 0, 0" up="0, 1, 0"/></transform>
+    <sampler type="independent"><integer name="sample_count" value="{}"/><integer name="seed" value="{}"/></sampler>
+    <film type="hdrfilm"><integer name="width" value="{}"/><integer name="height" value="{}"/>
+      <rfilter type="box"/></film>{}
+  </sensor>)",
+                     fov, spp, seed, size, size, extra);
+}
+
+// A camera sees a lamp of radiance 1 through a unit slab of fog (a cube with a null boundary)
+// that absorbs only: every pixel reads exp(-sigma_t).
+TEST(Media, CameraSeesALampThroughFogAttenuatedByItsTransmittance) {
+  for (float sigma : {0.4f, 1.5f}) {
+    const std::string xml = fmt::format(R"(<scene version="3.0.0">{}
+  <shape type="rectangle"><transform name="to_world"><scale value="10"/><translate z="-3"/></transform>
+    <emitter type="area"><float name="radiance" value="1"/></emitter></shape>
+  <shape type="cube"><transform name="to_world"><scale x="5" y="5" z="0.5"/></transform>
+    <bsdf type="null"/>
+    <medium type="homogeneous" name="interior"><float name="sigma_t" value="{}"/><float name="albedo" value="0"/></medium>
+  </shape>
+</scene>)",
+                                        Sensor(256, 16), sigma);
+    const test::RenderResult r = RenderXml(xml);
+    for (int c = 0; c < 3; ++c) {
+      const test::MeanSe m = ChannelMean(r.image, c);
+      // 3e-3: the RGB round trip of the constant illuminant (as the furnace tests).
+      EXPECT_NEAR(m.mean, std::exp(-sigma), 4 * m.se + 3e-3) << "sigma_t " << sigma << " channel " << c;
+      EXPECT_LT(4 * m.se, 0.05 * std::exp(-sigma));
+    }
+    EXPECT_EQ(r.stats.nan_count, 0u);
+  }
+}
+
+// The same slab with a coloured sigma_t, against Beer-Lambert absorption inside a dielectric
+// that does not refract (int_ior = ext_ior): the same exp(-sigma_t(lambda) d) per wavelength
+// from a different code path (render/direct_lighting.h, SegmentTransmittance).
+TEST(Media, ColouredFogSlabIsAnAbsorbingSlabOfTheSameCoefficients) {
+  SKIP_UNDER_SANITIZERS("CameraSeesALampThroughFogAttenuatedByItsTransmittance");
+  auto scene = [](const std::string& slab) {
+    return [slab](int seed) {
+      return fmt::format(R"(<scene version="3.0.0">{}
+  <shape type="rectangle"><transform name="to_world"><scale value="10"/><translate z="-3"/></transform>
+    <emitter type="area"><rgb name="radiance" value="1, 0.8, 0.6"/></emitter></shape>
+  <shape type="cube"><transform name="to_world"><scale x="5" y="5" z="0.5"/></transform>{}</shape>
+</scene>)",
+                         Sensor(32, test::kSize, "", seed), slab);
+    };
+  };
+  const std::string rgb = R"(<rgb name="{}" value="0.3, 1.2, 2.5"/>)";
+  const test::Estimate fog = test::Estimated(scene(R"(<bsdf type="null"/><medium type="homogeneous" name="interior">)" +
+                                                   fmt::format(fmt::runtime(rgb), "sigma_t") +
+                                                   R"(<float name="albedo" value="0"/></medium>)"));
+  const test::Estimate glass = test::Estimated(
+      scene(R"(<bsdf type="dielectric"><float name="int_ior" value="1.000277"/><float name="ext_ior" value="1.000277"/>)" +
+            fmt::format(fmt::runtime(rgb), "absorption") + "</bsdf>"));
+  test::ExpectSameImage(glass, fog, 0.02, "fog slab against absorbing dielectric slab");
+}
+
+// A white furnace: a sphere of fog that scatters and never absorbs (albedo 1), under an
+// environment of radiance 1, seen from outside and from inside, with a coloured sigma_t (the
+// spectral free-flight weights), forward and backward scattering, with and without next-event
+// estimation: every pixel reads 1.
+TEST(Media, WhiteFurnaceOfScatteringFogConservesEnergy) {
+  struct Case {
+    const char* what;
+    std::string sigma, phase;
+    bool inside, nee;
+  };
+  const Case cases[] = {
+      {"isotropic, grey", R"(<float name="sigma_t" value="2"/>)", R"(<phase type="isotropic"/>)", false, true},
+      {"hg 0.7, coloured", R"(<rgb name="sigma_t" value="0.5, 2, 6"/>)",
+       R"(<phase type="hg"><float name="g" value="0.7"/></phase>)", false, true},
+      {"hg -0.4, coloured, phase sampling only", R"(<rgb name="sigma_t" value="3, 1, 0.2"/>)",
+       R"(<phase type="hg"><float name="g" value="-0.4"/></phase>)", false, false},
+      {"camera inside, hg 0.5", R"(<float name="sigma_t" value="1.5"/>)",
+       R"(<phase type="hg"><float name="g" value="0.5"/></phase>)", true, true},
+  };
+  for (const Case& c : cases) {
+    const std::string medium = fmt::format(
+        R"(<medium type="homogeneous" id="fog">{}<float name="albedo" value="1"/><boolean name="sample_emitters" value="{}"/>{}</medium>)",
+        c.sigma, c.nee, c.phase);
+    const std::string xml = fmt::format(R"(<scene version="3.0.0">
+  <integrator type="path"><integer name="max_depth" value="-1"/></integrator>{}
+  {}
+  <emitter type="constant"><float name="radiance" value="1"/></emitter>
+  <shape type="sphere"><float name="radius" value="{}"/><bsdf type="null"/><ref name="interior" id="fog"/></shape>
+</scene>)",
+                                        medium, Sensor(512, 16, c.inside ? R"(<ref id="fog"/>)" : ""),
+                                        c.inside ? 5 : 1);
+    const test::RenderResult r = RenderXml(xml);
+    for (int ch = 0; ch < 3; ++ch) {
+      const test::MeanSe m = ChannelMean(r.image, ch);
+      EXPECT_NEAR(m.mean, 1.0, 4 * m.se + 3e-3) << c.what << " channel " << ch << " se " << m.se;
+      EXPECT_LT(4 * m.se, 0.03) << c.what;
+    }
+    EXPECT_EQ(r.stats.nan_count, 0u) << c.what;
+    EXPECT_EQ(r.stats.inf_count, 0u) << c.what;
+  }
+}
+
+// The furnace can fail: fog that absorbs a little (albedo 0.9) is visibly darker than 1.
+TEST(Media, FurnaceSeesAbsorption) {
+  const std::string xml = fmt::format(R"(<scene version="3.0.0">{}
+  <emitter type="constant"><float name="radiance" value="1"/></emitter>
+  <shape type="sphere"><float name="radius" value="1"/><bsdf type="null"/>
+    <medium type="homogeneous" name="interior"><float name="sigma_t" value="2"/><float name="albedo" value="0.9"/></medium>
+  </shape>
+</scene>)",
+                                      Sensor(64, 16, "", 0, 20));
+  const test::MeanSe m = ChannelMean(RenderXml(xml).image, 1);
+  EXPECT_LT(m.mean + 4 * m.se, 0.95);
+}
+
+// Next-event estimation with MIS and phase sampling alone estimate the same image: a box of
+// fog around a lamp and a diffuse floor, lit by an area light, seen from inside the fog.
+TEST(Media, NextEventEstimationAgreesWithPhaseSamplingAlone) {
+  SKIP_UNDER_SANITIZERS("WhiteFurnaceOfScatteringFogConservesEnergy (with and without NEE)");
+  auto scene = [](bool nee) {
+    return [nee](int seed) {
+      return fmt::format(R"(<scene version="3.0.0">
+  <medium type="homogeneous" id="fog"><rgb name="sigma_t" value="0.4, 0.6, 0.9"/><float name="albedo" value="0.85"/>
+    <boolean name="sample_emitters" value="{}"/><phase type="hg"><float name="g" value="0.5"/></phase></medium>
+  {}
+  <shape type="rectangle"><transform name="to_world"><scale value="1.2"/><rotate x="1" angle="90"/><translate y="1.2"/></transform>
+    <emitter type="area"><rgb name="radiance" value="2, 1.7, 1.3"/></emitter></shape>
+  <shape type="rectangle"><transform name="to_world"><scale value="3"/><rotate x="1" angle="-90"/><translate y="-1"/></transform>
+    <bsdf type="diffuse"><rgb name="reflectance" value="0.6, 0.5, 0.4"/></bsdf></shape>
+  <shape type="sphere"><float name="radius" value="5"/><bsdf type="null"/><ref name="interior" id="fog"/></shape>
+</scene>)",
+                         nee, Sensor(nee ? 48 : 192, test::kSize, R"(<ref id="fog"/>)", seed, 60));
+    };
+  };
+  const test::Estimate with_nee = test::Estimated(scene(true));
+  const test::Estimate phase_only = test::Estimated(scene(false));
+  test::ExpectSameImage(with_nee, phase_only, 0.03, "fog lit by an area light: NEE+MIS against phase sampling");
+}
+
+// --- the loader ---------------------------------------------------------------------------
+
+std::string ErrorOf(const std::string& body, const std::string& integrator = "") {
+  const std::string xml = "<scene version=\"3.0.0\">" + integrator + Sensor(1, 4) + "\n" + body + "\n</scene>";
+  try {
+    LoadSceneFromString(xml, "test.xml", {});
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+const char* kFogShape = R"(<shape type="sphere"><bsdf type="null"/>
+  <medium type="homogeneous" name="interior">{}</medium></shape>)";
+
+TEST(Media, BadInputIsAnErrorAtItsLine) {
+  // The line of the body's first line: after <scene> and the sensor.
+  const std::string sensor = Sensor(1, 4);
+  const int body = 2 + int(std::count(sensor.begin(), sensor.end(), '\n'));
+  auto fog = [](const std::string& props) { return fmt::format(fmt::runtime(kFogShape), props); };
+  struct Case {
+    std::string body, integrator, expected;
+    int line;
+  };
+  const Case cases[] = {
+      {fog(R"(<float name="sigma_t" value="-1"/>)"), "", "'sigma_t' must be finite and not negative", body + 1},
+      {fog(R"(<rgb name="sigma_t" value="1, -0.5, 1"/>)"), "", "'sigma_t' must be finite and not negative", body + 1},
+      {fog(R"(<float name="sigma_s" value="1e39"/>)"), "", "'sigma_s' = 1e+39 is too large", body + 1},
+      {fog(R"(<float name="albedo" value="1.5"/>)"), "", "albedo must lie in [0, 1]", body + 1},
+      {fog(R"(<float name="scale" value="-2"/>)"), "", "scale must be finite and not negative", body + 1},
+      {fog(R"(<float name="sigma_t" value="1e30"/><float name="scale" value="1e20"/>)"), "", "is not finite", body + 1},
+      {fog(R"(<float name="sigma_t" value="1"/><float name="sigma_a" value="1"/>)"), "", "not both", body + 1},
+      {fog(R"(<phase type="hg"><float name="g" value="1"/></phase>)"), "", "g must lie strictly between -1 and 1",
+       body + 1},
+      {fog(R"(<phase type="hg"><float name="g" value="-1.5"/></phase>)"), "", "g must lie strictly between", body + 1},
+      {fog(R"(<phase type="rayleigh"/>)"), "", "unknown phase type 'rayleigh'", body + 1},
+      {R"(<medium type="heterogeneous" id="m"/>)", "", "unknown medium type 'heterogeneous'", body},
+      {R"(<medium type="homogeneous" id="m"/>)", "", "this <medium> fills nothing", body},
+      {R"(<shape type="sphere"><medium type="homogeneous"/></shape>)", "", "needs name=\"interior\"", body},
+      {R"(<shape type="sphere"><medium type="homogeneous" name="inside"/></shape>)", "", "not 'inside'", body},
+      {R"(<bsdf type="diffuse"><medium type="homogeneous"/></bsdf>)", "", "a <medium> belongs in", body},
+      {R"(<shape type="sphere"><phase type="isotropic"/></shape>)", "", "a <phase> belongs in a <medium>", body},
+      {R"(<shape type="sphere"><float name="interior" value="1"/></shape>)", "", "must be a <medium>", body},
+      {R"(<shape type="sphere"><bsdf type="null"/><emitter type="area"/></shape>)", "", "cannot emit", body},
+      {fog(""), R"(<integrator type="whitted"/>)", "'whitted' integrator does not render", 1},
+      {fog(""), R"(<integrator type="direct"/>)", "'direct' integrator does not render", 1},
+      {fog(""), R"(<integrator type="ptracer"/>)", "'ptracer' integrator does not render", 1},
+      {fog(""), R"(<integrator type="path"><boolean name="caustics" value="true"/></integrator>)", "not with caustics",
+       1},
+      {R"(<shape type="sphere"><bsdf type="null"/></shape>)", R"(<integrator type="whitted"/>)", "null BSDFs", 1},
+  };
+  for (const Case& c : cases) {
+    const std::string msg = ErrorOf(c.body, c.integrator);
+    EXPECT_EQ(msg.rfind(fmt::format("test.xml:{}:", c.line), 0), 0u) << msg << "\nfor " << c.body;
+    EXPECT_NE(msg.find(c.expected), std::string::npos) << msg << "\nfor " << c.body;
+  }
+  // And what is right loads: both ways of giving the coefficients, a medium the sensor and a
+  // shape share, a shape with a medium on either side.
+  EXPECT_EQ(ErrorOf(fog(R"(<rgb name="sigma_a" value="0.1, 0.2, 0.3"/><spectrum name="sigma_s" value="400:1, 700:2"/>)")),
+            "no error");
+  EXPECT_EQ(ErrorOf(R"(<medium type="homogeneous" id="m"/>
+    <shape type="sphere"><bsdf type="null"/><ref name="exterior" id="m"/></shape>)"),
+            "no error");
+}
+
+}  // namespace
+}  // namespace objektiv
