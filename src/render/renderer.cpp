@@ -52,7 +52,7 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
   stats.height = crop.Height();
   stats.pixels = uint64_t(crop.Width()) * crop.Height();
   stats.skipped_rays = integrator.scene().SkippedRays() - skipped_before;
-  stats.pixels_completed = film.PixelsWithSamplesTo(options.spp_end);
+  stats.pixels_completed = PixelsDone(film, sampler, options.spp_end);
   for (const RenderCounters& c : counters) {
     stats.samples += c.samples;
     stats.rays += c.rays.closest + c.rays.shadow;
