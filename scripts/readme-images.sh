@@ -6,7 +6,8 @@
 # light-traced caustics (docs/images/caustics-*.png), `readme-images.sh bump` the bump-mapped
 # floor (docs/images/bump-*.png), `readme-images.sh stereo` the stereo rig's anaglyph
 # (docs/images/stereo-*.png), `readme-images.sh classic` the classic tracer's picture
-# (docs/images/classic-*.png).
+# (docs/images/classic-*.png), `readme-images.sh sampling` adaptive sampling's picture and
+# sample counts (docs/images/sampling-*.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/objektiv
@@ -68,8 +69,17 @@ classic() {
   cp "$tmp/classic-1.png" "$out/classic-spheres-1spp.png"
   cp "$tmp/classic-16.png" "$out/classic-spheres.png"
 }
+sampling() {
+  # The Cornell box by statistical adaptive sampling, beside its sample counts (16 to 1024:
+  # black to yellow).
+  render scenes/cornell-box/cornell-box.xml -D spp=1024 --adaptive statistical --adaptive-threshold 0.02 \
+    --sample-count-layer -o "$tmp/adaptive.exr"
+  oiiotool "$tmp/adaptive.exr" --ch sample_count --mulc 0.0009765625 --clamp:min=0:max=1 --colormap inferno \
+    -o "$tmp/counts.png"
+  oiiotool "$tmp/adaptive.png" "$tmp/counts.png" --mosaic:pad=4 2x1 -o "$out/sampling-cornell-adaptive.png"
+}
 case "${1:-}" in
-  flare | caustics | bump | stereo | classic)
+  flare | caustics | bump | stereo | classic | sampling)
     "$1"
     echo "wrote $out/$1-*.png"
     exit 0

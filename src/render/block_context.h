@@ -36,6 +36,7 @@ struct RenderCounters {
   CameraRayCount camera;
   uint64_t nan = 0, inf = 0;  // radiance samples and splats dropped
   uint64_t samples = 0;       // pixel samples taken
+  uint64_t whole_pixels = 0;  // pixels taken whole (AdaptiveMode::kWhitted: progress counts these)
 };
 
 // A tile of pixels (half-open bounds on the full film, inside the crop window) and the sample
@@ -112,6 +113,7 @@ class BlockContext {
         const int n = fn(pixel);
         film_.AddSampleCount(pixel, n);
         counters_.samples += uint64_t(n);
+        ++counters_.whole_pixels;
       }
   }
   bool Stopped() const { return stop_ && stop_->load(std::memory_order_relaxed); }
