@@ -180,7 +180,10 @@ LensLayers WriteRenderImages(const RenderSetup& setup, const Film& film, int thr
   AddLensLayers(layers, *fs.color_space, fs.exposure, linear, header);
   if (const auto* aov = dynamic_cast<const AovIntegrator*>(setup.integrator.get()))
     AddAovChannels(*aov, film, *fs.color_space, linear);
-  if (sample_count_layer) {
+  const auto* rig = dynamic_cast<const StereoCamera*>(setup.camera.get());
+  if (sample_count_layer && rig && rig->layout() == StereoLayout::kAnaglyph)
+    spdlog::warn("--sample-count-layer: an anaglyph's pixels mix both eyes' film, which holds the counts: not written");
+  else if (sample_count_layer) {
     std::vector<float> counts;
     counts.reserve(size_t(fs.crop.Width()) * fs.crop.Height());
     for (int y = fs.crop.y0; y < fs.crop.y1; ++y)

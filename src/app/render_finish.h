@@ -38,8 +38,8 @@ Film MakeRenderFilm(const RenderSetup& setup, double budget_gib, int threads);
 // passes did) and the tone-mapped PNG, both atomically. Ctrl-C during the passes (they stop
 // early) marks the image objektiv:partial = 1, render_end "interrupted". Returns the layers.
 // With `sample_count_layer`, a channel `sample_count` after the others: each pixel's camera
-// samples (where adaptive sampling spent them; an anaglyph's image has none: it has no pixels
-// of its own).
+// samples (where adaptive sampling spent them; not for an anaglyph, whose pixels mix both eyes':
+// warned).
 LensLayers WriteRenderImages(const RenderSetup& setup, const Film& film, int threads, const std::string& exr,
                              const std::string& png, std::vector<ImageAttribute> header,
                              bool sample_count_layer = false);

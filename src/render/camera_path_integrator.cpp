@@ -198,7 +198,8 @@ void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
       for (int k = 0; k < n; ++k) start(k, pixel, s0 + k, nullptr, nullptr);
       trace(pixel, n);
       for (int k = 0; k < n; ++k)
-        write(pixel, b.L[k], b.lambdas[k], b.Le[k], b.lambdas_emitted[k], b.rays[k].has_value(), &b.aovs[size_t(k) * aov_channels],
+        write(pixel, b.L[k], b.lambdas[k], b.Le[k], b.lambdas_emitted[k], b.rays[k].has_value(),
+              b.aovs.data() + size_t(k) * aov_channels,
               b.weights[k]);
     }
   });
