@@ -70,11 +70,11 @@ classic() {
   cp "$tmp/classic-16.png" "$out/classic-spheres.png"
 }
 sampling() {
-  # The Cornell box by statistical adaptive sampling, beside its sample counts (16 to 1024:
+  # The Cornell box by statistical adaptive sampling, beside its sample counts (16 to 512:
   # black to yellow).
-  render scenes/cornell-box/cornell-box.xml -D spp=1024 --adaptive statistical --adaptive-threshold 0.02 \
+  render scenes/cornell-box/cornell-box.xml -D spp=512 -D res=256 --adaptive statistical --adaptive-threshold 0.06 \
     --sample-count-layer -o "$tmp/adaptive.exr"
-  oiiotool "$tmp/adaptive.exr" --ch sample_count --mulc 0.0009765625 --clamp:min=0:max=1 --colormap inferno \
+  oiiotool "$tmp/adaptive.exr" --ch sample_count --mulc 0.001953125 --clamp:min=0:max=1 --colormap inferno \
     -o "$tmp/counts.png"
   oiiotool "$tmp/adaptive.png" "$tmp/counts.png" --mosaic:pad=4 2x1 -o "$out/sampling-cornell-adaptive.png"
 }
