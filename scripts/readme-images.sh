@@ -7,7 +7,8 @@
 # floor (docs/images/bump-*.png), `readme-images.sh stereo` the stereo rig's anaglyph
 # (docs/images/stereo-*.png), `readme-images.sh classic` the classic tracer's picture
 # (docs/images/classic-*.png), `readme-images.sh media` the participating media's pictures
-# (docs/images/media-*.png).
+# (docs/images/media-*.png), `readme-images.sh sampling` adaptive sampling's picture and
+# sample counts (docs/images/sampling-*.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/objektiv
@@ -76,8 +77,17 @@ media() {
   render scenes/media/milk-glass.xml -D spp=128 -D width=320 -D height=320 -o "$tmp/milk.exr"
   cp "$tmp/milk.png" "$out/media-milk-glass.png"
 }
+sampling() {
+  # The Cornell box by statistical adaptive sampling, beside its sample counts (16 to 512:
+  # black to yellow).
+  render scenes/cornell-box/cornell-box.xml -D spp=512 -D res=256 --adaptive statistical --adaptive-threshold 0.06 \
+    --sample-count-layer -o "$tmp/adaptive.exr"
+  oiiotool "$tmp/adaptive.exr" --ch sample_count --mulc 0.001953125 --clamp:min=0:max=1 --colormap inferno \
+    -o "$tmp/counts.png"
+  oiiotool "$tmp/adaptive.png" "$tmp/counts.png" --mosaic:pad=4 2x1 -o "$out/sampling-cornell-adaptive.png"
+}
 case "${1:-}" in
-  flare | caustics | bump | stereo | classic | media)
+  flare | caustics | bump | stereo | classic | media | sampling)
     "$1"
     echo "wrote $out/$1-*.png"
     exit 0

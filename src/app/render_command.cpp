@@ -18,7 +18,9 @@
 #include "base/output_file.h"
 #include "camera/stereo_camera.h"
 #include "io/render_part.h"
+#include "render/adaptive_sampling.h"
 #include "render/progressive_render.h"
+#include "render/whitted_integrator.h"
 
 namespace objektiv {
 namespace {
@@ -32,7 +34,39 @@ struct RenderArgs {
   bool quiet = false, verbose = false;
   bool part = false, resume = false;
   double checkpoint = 0, time_limit = 0, noise_target = 0;
+  std::string sampler, adaptive;
+  double adaptive_threshold = 0;
+  int adaptive_min = 0;
+  bool sample_count_layer = false;
 };
+
+// --sampler, --adaptive, --adaptive-threshold, --adaptive-min-samples over the scene's sampler.
+void ApplySamplingOptions(const RenderArgs& a, SamplerSettings& s) {
+  static const std::map<std::string, std::pair<SamplerKind, PixelPattern>> kTypes = {
+      {"independent", {SamplerKind::kIndependent, PixelPattern::kSampler}},
+      {"stratified", {SamplerKind::kStratified, PixelPattern::kSampler}},
+      {"sobol", {SamplerKind::kSobol, PixelPattern::kSampler}},
+      {"grid", {SamplerKind::kSobol, PixelPattern::kGrid}},
+      {"rgss", {SamplerKind::kSobol, PixelPattern::kRgss}},
+      {"quincunx", {SamplerKind::kSobol, PixelPattern::kQuincunx}}};
+  if (!a.sampler.empty()) {
+    const auto& t = kTypes.at(a.sampler);  // (checked by its option)
+    s.kind = t.first, s.pattern = t.second;
+  }
+  if (a.adaptive == "none") s.adaptive.mode = AdaptiveMode::kNone;
+  if (a.adaptive == "statistical") s.adaptive.mode = AdaptiveMode::kStatistical;
+  if (a.adaptive == "whitted") s.adaptive.mode = AdaptiveMode::kWhitted;
+  if (a.adaptive_threshold > 0) s.adaptive.threshold = a.adaptive_threshold;
+  if (a.adaptive_min > 0) s.adaptive.min_samples = a.adaptive_min;
+  if (a.adaptive_min > 0 && s.adaptive.mode != AdaptiveMode::kStatistical)
+    throw CLI::ValidationError("--adaptive-min-samples", "applies to statistical adaptive sampling only (--adaptive statistical)");
+  if (a.adaptive_threshold > 0 && s.adaptive.mode == AdaptiveMode::kNone)
+    throw CLI::ValidationError("--adaptive-threshold", "applies to adaptive sampling only (--adaptive statistical or whitted)");
+  if (s.adaptive.mode == AdaptiveMode::kWhitted && s.pattern != PixelPattern::kSampler)
+    throw CLI::ValidationError("--adaptive", fmt::format("whitted places its own samples; it cannot take the {} pattern "
+                                                         "(use a sobol, stratified or independent sampler)",
+                                                         PixelPatternName(s.pattern)));
+}
 
 void WriteStatsJson(const std::string& path, const RenderStats& s, int threads, const LensLayers& layers,
                     const ProgressiveResult& r) {
@@ -128,6 +162,29 @@ int RunRender(const RenderArgs& a) {
   CheckOutputsWritable(outputs);
   RenderSetup setup = LoadScene(a.scene, defines, GlassCatalog::Default());
   if (a.spp > 0) setup.sampler.spp = a.spp;
+  ApplySamplingOptions(a, setup.sampler);
+  if (!a.sampler.empty() || !a.adaptive.empty() || a.adaptive_min > 0 || a.spp > 0)
+    CheckSamplerSettings(setup.sampler, "the command line");
+  const AdaptiveMode adaptive = setup.sampler.adaptive.mode;
+  // A pixel's adaptive sample count is decided from all of its samples: a sample range alone
+  // cannot decide it, and the parts would not add up to one render.
+  if (adaptive != AdaptiveMode::kNone && part)
+    throw InputError(fmt::format("{}: adaptive sampling ({}) decides each pixel's samples from the samples before them; "
+                                 "a part (--part, --spp-range) cannot: render it whole (--checkpoint and --resume work)",
+                                 a.scene, AdaptiveModeName(adaptive)));
+  if (adaptive == AdaptiveMode::kWhitted && (a.time_limit > 0 || a.noise_target > 0))
+    throw InputError(fmt::format("{}: adaptive whitted takes each pixel whole in one go, so it has no passes to stop "
+                                 "after: --time-limit and --noise-target cannot apply (--adaptive statistical can)",
+                                 a.scene));
+  if (adaptive == AdaptiveMode::kWhitted && a.spp > 0)
+    spdlog::warn("--spp does not apply to adaptive whitted: a pixel takes 5 to {} samples as its contrast asks",
+                 WhittedMaxSamples(setup.sampler.adaptive.max_depth));
+  if (adaptive == AdaptiveMode::kWhitted && !dynamic_cast<const WhittedIntegrator*>(setup.integrator.get()))
+    spdlog::warn("{}: adaptive whitted subdivides where a pixel's samples differ; this integrator's noise makes them "
+                 "differ everywhere (--adaptive statistical is meant for it)", a.scene);
+  if (adaptive != AdaptiveMode::kNone && setup.integrator->TracesLightToCamera())
+    spdlog::warn("{}: adaptive sampling sees the camera samples only; the light paths (one per camera sample) follow "
+                 "them, their noise on the film does not steer them", a.scene);
   // The noise estimate reads the camera samples' spread; light paths add theirs as splats,
   // which it cannot see (it would call a light-traced image clean after its first pass).
   if (a.noise_target > 0 && setup.integrator->TracesLightToCamera())
@@ -152,8 +209,10 @@ int RunRender(const RenderArgs& a) {
                                                        info.render_crop.x0, info.render_crop.y0, info.render_crop.x1,
                                                        info.render_crop.y1));
   }
+  // Whitted's adaptive pixels are taken whole: one "sample index" per pixel stands for them all.
+  const int spp = adaptive == AdaptiveMode::kWhitted ? 1 : setup.sampler.spp;
   const std::pair<int, int> range =
-      a.spp_range_given ? ParseSppRange(a.spp_range, setup.sampler.spp) : std::pair<int, int>(0, setup.sampler.spp);
+      a.spp_range_given ? ParseSppRange(a.spp_range, spp) : std::pair<int, int>(0, spp);
   const int spp_begin = range.first, spp_end = range.second;  // (lambdas below capture them: no structured binding)
   info.crop = fs_.crop;
   info.spp_begin = spp_begin, info.spp_end = spp_end;
@@ -187,7 +246,7 @@ int RunRender(const RenderArgs& a) {
     RenderPartInfo i = info;
     i.checkpoint = is_checkpoint;
     i.seconds = seconds;
-    i.pixels_completed = film.PixelsWithSamplesTo(spp_end);
+    i.pixels_completed = PixelsDone(film, *sampler, spp_end);
     WriteRenderPart(path, film.ToImage(*fs_.color_space, fs_.exposure), film, i);
   };
 
@@ -230,10 +289,12 @@ int RunRender(const RenderArgs& a) {
                                           {"objektiv:render_end", std::string(RenderEndName(result.end))},
                                           {"objektiv:samples_per_pixel", film.samples_per_pixel()},
                                           {"objektiv:seconds", result.elapsed}};
+    if (const std::string sampling = DescribeSampling(setup.sampler); !sampling.empty())
+      header.push_back({"objektiv:sampling", sampling});
     if (a.time_limit > 0) header.push_back({"objektiv:time_limit", a.time_limit});
     if (a.noise_target > 0) header.push_back({"objektiv:noise_target", a.noise_target});
     if (result.noise >= 0) header.push_back({"objektiv:noise", result.noise});
-    layers = WriteRenderImages(setup, film, a.threads, exr.string(), png.string(), header);
+    layers = WriteRenderImages(setup, film, a.threads, exr.string(), png.string(), header, a.sample_count_layer);
   }
   // Ctrl-C during the lens's passes leaves the samples whole but the image not: partial too.
   const bool stopped = interrupted || InterruptSignal() != 0;
@@ -252,6 +313,20 @@ int RunRender(const RenderArgs& a) {
                                        : "no camera ray traced",
                 (unsigned long long)stats.nan_count, (unsigned long long)stats.inf_count, exr.string().c_str(),
                 part ? "" : (", " + png.string()).c_str(), stopped ? " (partial)" : "");
+  if (!a.quiet && adaptive != AdaptiveMode::kNone) {
+    uint32_t lo = UINT32_MAX, hi = 0;
+    uint64_t total = 0;
+    for (int y = fs_.crop.y0; y < fs_.crop.y1; ++y)
+      for (int x = fs_.crop.x0; x < fs_.crop.x1; ++x) {
+        const uint32_t n = film.SampleCount(Vec2i(x, y));
+        lo = std::min(lo, n), hi = std::max(hi, n), total += n;
+      }
+    std::printf("adaptive %s: %llu camera samples, %u to %u per pixel (mean %.4g)%s\n", AdaptiveModeName(adaptive),
+                (unsigned long long)total, lo, hi, film.samples_per_pixel(),
+                a.sample_count_layer ? ", channel sample_count" : "");
+  } else if (!a.quiet && a.sample_count_layer) {
+    std::printf("%llu camera samples in all, channel sample_count\n", (unsigned long long)stats.samples);
+  }
   if (result.end == RenderEnd::kTimeLimit || result.end == RenderEnd::kNoiseTarget)
     spdlog::info("stopped at the {} after {:.1f} s: {:.4g} samples per pixel of {}{}", RenderEndName(result.end),
                  result.elapsed, film.samples_per_pixel(), spp_end - spp_begin,
@@ -305,6 +380,21 @@ std::function<int()> AddRenderCommand(CLI::App& app) {
   cmd->add_option("--noise-target", args->noise_target,
                   "Stop once 95% of the pixels have a relative error below this (e.g. 0.02), or at the spp")
       ->check(FinitePositive(1.0));
+  cmd->add_option("--sampler", args->sampler,
+                  "Sampler type over the scene's: independent, stratified, sobol, or a pixel pattern grid, rgss, "
+                  "quincunx (Sobol' numbers for the rest)")
+      ->check(CLI::IsMember({"independent", "stratified", "sobol", "grid", "rgss", "quincunx"}));
+  cmd->add_option("--adaptive", args->adaptive,
+                  "Adaptive sampling over the scene's: none, statistical (samples until a pixel's relative standard "
+                  "error is below the threshold, the spp the cap), whitted (classic subdivision)")
+      ->check(CLI::IsMember({"none", "statistical", "whitted"}));
+  cmd->add_option("--adaptive-threshold", args->adaptive_threshold,
+                  "statistical: a pixel's relative standard error to reach (0.05); whitted: the contrast that subdivides (0.1)")
+      ->check(FinitePositive());
+  cmd->add_option("--adaptive-min-samples", args->adaptive_min, "statistical: samples every pixel takes first (16)")
+      ->check(CLI::Range(2, 1 << 24));
+  cmd->add_flag("--sample-count-layer", args->sample_count_layer,
+                "Add a channel sample_count to the EXR: each pixel's camera samples");
   CLI::Option* quiet = cmd->add_flag("-q,--quiet", args->quiet, "No progress bar, no summary, warnings only");
   cmd->add_flag("-v,--verbose", args->verbose, "Debug logging")->excludes(quiet);
   return [args, crop, range] {

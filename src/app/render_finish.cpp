@@ -111,6 +111,12 @@ void AddAovChannels(const AovIntegrator& integrator, const Film& film, const Col
       const Vec3f rgb = cs.ToRGB(Vec3f(values[i + a], values[i + a + 1], values[i + a + 2]));
       values[i + a] = rgb.x, values[i + a + 1] = rgb.y, values[i + a + 2] = rgb.z;
     }
+  AppendChannels(names, values, image);
+}
+
+}  // namespace
+
+void AppendChannels(const std::vector<std::string>& names, const std::vector<float>& values, Image& image) {
   const size_t base = image.channels.size(), n = names.size(), pixels = size_t(image.width) * image.height;
   Image out(image.width, image.height, image.channels);
   for (const std::string& name : names) out.channels.push_back(name);
@@ -121,8 +127,6 @@ void AddAovChannels(const AovIntegrator& integrator, const Film& film, const Col
   }
   image = std::move(out);
 }
-
-}  // namespace
 
 void CheckOutputsWritable(const std::vector<Output>& outputs) {
   namespace fs = std::filesystem;
@@ -158,7 +162,7 @@ Film MakeRenderFilm(const RenderSetup& setup, double budget_gib, int threads) {
 }
 
 LensLayers WriteRenderImages(const RenderSetup& setup, const Film& film, int threads, const std::string& exr,
-                             const std::string& png, std::vector<ImageAttribute> header) {
+                             const std::string& png, std::vector<ImageAttribute> header, bool sample_count_layer) {
   const FilmSettings& fs = setup.film;
   LensLayers layers;
   {
@@ -176,6 +180,16 @@ LensLayers WriteRenderImages(const RenderSetup& setup, const Film& film, int thr
   AddLensLayers(layers, *fs.color_space, fs.exposure, linear, header);
   if (const auto* aov = dynamic_cast<const AovIntegrator*>(setup.integrator.get()))
     AddAovChannels(*aov, film, *fs.color_space, linear);
+  const auto* rig = dynamic_cast<const StereoCamera*>(setup.camera.get());
+  if (sample_count_layer && rig && rig->layout() == StereoLayout::kAnaglyph)
+    spdlog::warn("--sample-count-layer: an anaglyph's pixels mix both eyes' film, which holds the counts: not written");
+  else if (sample_count_layer) {
+    std::vector<float> counts;
+    counts.reserve(size_t(fs.crop.Width()) * fs.crop.Height());
+    for (int y = fs.crop.y0; y < fs.crop.y1; ++y)
+      for (int x = fs.crop.x0; x < fs.crop.x1; ++x) counts.push_back(float(film.SampleCount(Vec2i(x, y))));
+    AppendChannels({"sample_count"}, counts, linear);
+  }
   if (const auto* stereo = dynamic_cast<const StereoCamera*>(setup.camera.get())) {
     if (stereo->layout() == StereoLayout::kAnaglyph) {
       // Both eyes whole (render_command refuses --crop for an anaglyph's image).
@@ -226,6 +240,7 @@ RenderPartInfo DescribeRender(const std::string& scene, const std::map<std::stri
   i.defines = nlohmann::json(defines).dump();
   i.spp = setup.sampler.spp;
   i.seed = setup.sampler.seed;
+  i.sampling = DescribeSampling(setup.sampler);
   i.width = setup.film.width, i.height = setup.film.height;
   i.render_crop = setup.film.crop;
   return i;

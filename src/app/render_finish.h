@@ -37,8 +37,14 @@ Film MakeRenderFilm(const RenderSetup& setup, double budget_gib, int threads);
 // (0: all), and writes the linear EXR (the picture, the layers, the AOVs; `header` and what the
 // passes did) and the tone-mapped PNG, both atomically. Ctrl-C during the passes (they stop
 // early) marks the image objektiv:partial = 1, render_end "interrupted". Returns the layers.
+// With `sample_count_layer`, a channel `sample_count` after the others: each pixel's camera
+// samples (where adaptive sampling spent them; not for an anaglyph, whose pixels mix both eyes':
+// warned).
 LensLayers WriteRenderImages(const RenderSetup& setup, const Film& film, int threads, const std::string& exr,
-                             const std::string& png, std::vector<ImageAttribute> header);
+                             const std::string& png, std::vector<ImageAttribute> header,
+                             bool sample_count_layer = false);
+// Channels `names` (values interleaved per pixel) after the image's own.
+void AppendChannels(const std::vector<std::string>& names, const std::vector<float>& values, Image& image);
 
 // The lens passes' times after the render's, for the summary line: " + bright points and
 // ghosts 3.40 s + diffraction 1.15 s".

@@ -77,7 +77,12 @@ struct Emission {
 using SensorRegistry = PluginRegistry<std::unique_ptr<Camera>, const SensorBase&>;
 using FilmRegistry = PluginRegistry<FilmSettings>;
 using FilterRegistry = PluginRegistry<std::shared_ptr<const Filter>>;
-using SamplerRegistry = PluginRegistry<SamplerKind>;
+// A sampler plugin makes the kind of its numbers and the pattern of its film positions.
+struct SamplerType {
+  SamplerKind kind;
+  PixelPattern pattern = PixelPattern::kSampler;
+};
+using SamplerRegistry = PluginRegistry<SamplerType>;
 using IntegratorRegistry = PluginRegistry<std::unique_ptr<Integrator>, const Scene&>;
 using ShapeRegistry = PluginRegistry<int, LoaderContext&, int>;  // as BuildShape
 using MaterialRegistry = PluginRegistry<std::shared_ptr<Material>, LoaderContext&>;

@@ -41,6 +41,7 @@ std::string RenderPartInfo::Mismatch(const RenderPartInfo& o) const {
   for (const std::string& m :
        {differ("objektiv version", version, o.version), differ("scene contents (hash)", scene_hash, o.scene_hash),
         differ("-D values", defines, o.defines), differ("samples per pixel", spp, o.spp), differ("seed", seed, o.seed),
+        differ("sampling", sampling.empty() ? std::string("plain") : sampling, o.sampling.empty() ? std::string("plain") : o.sampling),
         differ("film", fmt::format("{}x{}", width, height), fmt::format("{}x{}", o.width, o.height)),
         differ("render crop", CropText(render_crop), CropText(o.render_crop))})
     if (!m.empty()) return m;
@@ -93,6 +94,7 @@ void WriteRenderPart(const std::string& path, const Image& rgb, const Film& film
   spec.attribute("objektiv:inputs", info.inputs);
   spec.attribute("objektiv:film", fmt::format("{}x{}", info.width, info.height));
   spec.attribute("objektiv:defines", info.defines);
+  if (!info.sampling.empty()) spec.attribute("objektiv:sampling", info.sampling);
   spec.attribute("objektiv:spp", info.spp);
   spec.attribute("objektiv:seed", std::to_string(info.seed));
   spec.attribute("objektiv:render_crop", CropText(info.render_crop));
@@ -161,6 +163,7 @@ RenderPartInfo OpenPart(const std::string& path, std::unique_ptr<OIIO::ImageInpu
   i.scene_hash = text("objektiv:scene_hash");
   i.inputs = s.get_string_attribute("objektiv:inputs", "");  // (an empty list is not written)
   i.defines = text("objektiv:defines");
+  i.sampling = s.get_string_attribute("objektiv:sampling", "");  // (a plain sampler's is not written)
   i.spp = integer("objektiv:spp");
   i.spp_begin = integer("objektiv:spp_begin");
   i.spp_end = integer("objektiv:spp_end");

@@ -27,6 +27,7 @@ struct RenderPartInfo {
   std::string defines;      // the -D values, as a JSON object
   int spp = 0;              // the render's samples per pixel
   uint64_t seed = 0;        // the sampler's
+  std::string sampling;     // its pattern and adaptive settings (DescribeSampling; "" for none)
   int width = 0, height = 0;  // the film
   CropWindow render_crop;   // the render's pixels (the scene's crop window: all parts together)
   // This part.

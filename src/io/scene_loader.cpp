@@ -42,7 +42,7 @@ const ObjectNode* OneChild(const Properties& p, const std::string& tag) {
 }
 
 std::unique_ptr<Sampler> MakeSampler(const SamplerSettings& s) {
-  return std::make_unique<Sampler>(s.kind, s.spp, s.seed);
+  return std::make_unique<Sampler>(s.kind, s.spp, s.seed, s.pattern, s.adaptive);
 }
 
 std::vector<PluginKind> ScenePluginKinds() {

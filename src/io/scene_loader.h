@@ -27,9 +27,17 @@ struct FilmSettings {
 
 struct SamplerSettings {
   SamplerKind kind = SamplerKind::kIndependent;
+  PixelPattern pattern = PixelPattern::kSampler;
   int spp = 4;
   uint64_t seed = 0;
+  AdaptiveSettings adaptive;
 };
+// The sampler's pattern and adaptive settings in words, for headers and checkpoints (a render
+// resumed with others is refused): "" for a plain sampler.
+std::string DescribeSampling(const SamplerSettings& s);
+// Refuses (InputError naming `where`) adaptive settings that cannot hold together, and warns
+// of those that do not apply; `spp` the samples per pixel the render will take.
+void CheckSamplerSettings(const SamplerSettings& s, const std::string& where);
 
 struct RenderSetup {
   std::unique_ptr<Scene> scene;

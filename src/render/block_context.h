@@ -20,6 +20,7 @@
 #include <cstdint>
 
 #include "camera/camera.h"
+#include "render/adaptive_sampling.h"
 #include "render/film.h"
 #include "render/sampler.h"
 
@@ -35,6 +36,7 @@ struct RenderCounters {
   CameraRayCount camera;
   uint64_t nan = 0, inf = 0;  // radiance samples and splats dropped
   uint64_t samples = 0;       // pixel samples taken
+  uint64_t whole_pixels = 0;  // pixels taken whole (AdaptiveMode::kWhitted: progress counts these)
 };
 
 // A tile of pixels (half-open bounds on the full film, inside the crop window) and the sample
@@ -70,17 +72,48 @@ class BlockContext {
   // Once the render is stopped (Ctrl-C, a checkpoint, a time limit) no pixel is started any
   // more; a pixel's samples are counted once its fn returns, so a stopped film holds whole
   // pixels only and goes on from there.
+  //
+  // With statistical adaptive sampling (render/adaptive_sampling.h) fn is called for a pixel
+  // once per batch, up to the rule's next look, until the rule says the pixel is done or the
+  // block's samples end; each batch is in the film (and counted) before the rule looks.
   template <class PixelFn>
   void ForEachPixel(PixelFn&& fn) {
+    const bool adaptive = sampler_.adaptive().mode == AdaptiveMode::kStatistical;
     for (int y = block_.p0.y; y < block_.p1.y; ++y)
       for (int x = block_.p0.x; x < block_.p1.x; ++x) {
         if (Stopped()) return;
         const Vec2i pixel(x, y);
+        if (adaptive) {
+          int next = std::max(block_.sample_begin, film_.NextSample(pixel));
+          while (next < block_.sample_end && !PixelSamplingDone(film_, pixel, sampler_, sampler_.spp())) {
+            const SampleRange batch{next, std::min(block_.sample_end, NextAdaptiveCheck(sampler_.adaptive(), next))};
+            fn(pixel, batch);
+            film_.AddSampleCount(pixel, batch.size());
+            counters_.samples += uint64_t(batch.size());
+            next = batch.end;
+          }
+          continue;
+        }
         const SampleRange samples{std::max(block_.sample_begin, film_.NextSample(pixel)), block_.sample_end};
         if (samples.size() <= 0) continue;
         fn(pixel, samples);
         film_.AddSampleCount(pixel, samples.size());
         counters_.samples += uint64_t(samples.size());
+      }
+  }
+  // The pixel loop of whole-pixel adaptive sampling (AdaptiveMode::kWhitted): fn(pixel) takes
+  // all of a pixel's samples at once and returns how many; a pixel that has any is done.
+  template <class PixelFn>
+  void ForEachWholePixel(PixelFn&& fn) {
+    for (int y = block_.p0.y; y < block_.p1.y; ++y)
+      for (int x = block_.p0.x; x < block_.p1.x; ++x) {
+        if (Stopped()) return;
+        const Vec2i pixel(x, y);
+        if (film_.SampleCount(pixel) > 0 || block_.sample_end <= 0) continue;
+        const int n = fn(pixel);
+        film_.AddSampleCount(pixel, n);
+        counters_.samples += uint64_t(n);
+        ++counters_.whole_pixels;
       }
   }
   bool Stopped() const { return stop_ && stop_->load(std::memory_order_relaxed); }

@@ -107,6 +107,7 @@ class Film {
     double mean, variance;
   };
   LuminanceMoments Moments(size_t pixel_index) const;
+  LuminanceMoments Moments(Vec2i pixel) const { return Moments(Index(pixel)); }
   size_t PixelCount() const { return pixels_.size(); }
 
   // What the film holds, and adding what another film of the same settings held (same planes,

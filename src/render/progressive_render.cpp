@@ -141,7 +141,7 @@ ProgressiveResult RenderProgressive(const Camera& camera, const Integrator& inte
   out.stats.spp = ro.spp_end - ro.spp_begin;
   out.stats.width = crop.Width(), out.stats.height = crop.Height();
   out.stats.pixels = uint64_t(crop.Width()) * crop.Height();
-  out.stats.pixels_completed = film.PixelsWithSamplesTo(ro.spp_end);
+  out.stats.pixels_completed = PixelsDone(film, sampler, ro.spp_end);
   if (out.end == RenderEnd::kInterrupted && options.checkpoint) {
     options.checkpoint(out.elapsed);
     ++out.checkpoints;

@@ -25,6 +25,7 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
     limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, options.threads);
 
   tbb::enumerable_thread_specific<RenderCounters> counters;
+  const bool whole = sampler.adaptive().mode == AdaptiveMode::kWhitted;
   std::optional<Progress> own_progress;
   Progress* progress = options.progress_bar;
   if (!progress) progress = &own_progress.emplace("Rendering", pixel_samples_left, options.progress);
@@ -38,10 +39,12 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
     block.sample_begin = options.spp_begin;
     block.sample_end = options.spp_end;
     RenderCounters& c = counters.local();
-    const uint64_t before = c.samples;
+    // Progress in samples; a whitted-adaptive pixel (one "sample index" for all of its
+    // samples: Film::SamplesLeft counts it once) in pixels.
+    const uint64_t before = whole ? c.whole_pixels : c.samples;
     BlockContext ctx(block, camera, sampler, film, c, options.stop);
     integrator.RenderBlock(ctx);
-    progress->Update(int64_t(c.samples - before));
+    progress->Update(int64_t((whole ? c.whole_pixels : c.samples) - before));
   });
   if (own_progress) own_progress->Done();
 
@@ -52,7 +55,7 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
   stats.height = crop.Height();
   stats.pixels = uint64_t(crop.Width()) * crop.Height();
   stats.skipped_rays = integrator.scene().SkippedRays() - skipped_before;
-  stats.pixels_completed = film.PixelsWithSamplesTo(options.spp_end);
+  stats.pixels_completed = PixelsDone(film, sampler, options.spp_end);
   for (const RenderCounters& c : counters) {
     stats.samples += c.samples;
     stats.rays += c.rays.closest + c.rays.shadow;

@@ -4,7 +4,17 @@
 
 namespace objektiv {
 
-Sampler::Sampler(SamplerKind kind, int spp, uint64_t seed) : kind_(kind), spp_(spp), seed_(seed) {
+const char* AdaptiveModeName(AdaptiveMode m) {
+  switch (m) {
+    case AdaptiveMode::kNone: return "none";
+    case AdaptiveMode::kStatistical: return "statistical";
+    case AdaptiveMode::kWhitted: return "whitted";
+  }
+  return "?";
+}
+
+Sampler::Sampler(SamplerKind kind, int spp, uint64_t seed, PixelPattern pattern, AdaptiveSettings adaptive)
+    : kind_(kind), pattern_(pattern), adaptive_(adaptive), spp_(spp), seed_(seed) {
   if (kind == SamplerKind::kStratified) {
     side_ = int(std::ceil(std::sqrt(double(spp))));
     spp_ = side_ * side_;

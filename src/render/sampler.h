@@ -7,6 +7,7 @@
 
 #include "base/lowdiscrepancy.h"
 #include "base/rng.h"
+#include "render/pixel_pattern.h"
 
 namespace objektiv {
 
@@ -18,9 +19,30 @@ enum class SamplerKind {
                  // shuffled, scrambled 2D net; the first 2^m points of a pair are a (0,m,2)-net
 };
 
+// How many samples each pixel takes (render/adaptive_sampling.h says what the modes do).
+enum class AdaptiveMode {
+  kNone,         // every pixel takes the render's samples
+  kStatistical,  // samples until the pixel's estimated relative standard error is below threshold
+  kWhitted,      // classic adaptive supersampling: corners and centre, quadrants subdivided
+};
+const char* AdaptiveModeName(AdaptiveMode m);
+
+struct AdaptiveSettings {
+  AdaptiveMode mode = AdaptiveMode::kNone;
+  // statistical: the relative standard error of the pixel's mean luminance to reach;
+  // whitted: the luminance contrast (max - min) / (max + min + floor) that subdivides.
+  double threshold = 0.05;
+  int min_samples = 16;  // statistical: the pilot every pixel takes (the cap is the sample count)
+  // Luminance (the film's linear Y, before exposure) under which a pixel counts as dark: the
+  // relative error is taken against max(|mean|, floor), the contrast's denominator adds it.
+  double floor = 0.01;
+  int max_depth = 2;  // whitted: subdivision levels below the pixel (0: corners and centre only)
+};
+
 class Sampler {
  public:
-  Sampler(SamplerKind kind, int spp, uint64_t seed);
+  Sampler(SamplerKind kind, int spp, uint64_t seed, PixelPattern pattern = PixelPattern::kSampler,
+          AdaptiveSettings adaptive = {});
   std::unique_ptr<Sampler> Clone() const { return std::make_unique<Sampler>(*this); }
 
   void StartPixelSample(Vec2i pixel, int index) {
@@ -62,10 +84,21 @@ class Sampler {
     }
   }
 
-  // The film position within the pixel (the first dimensions, best stratified).
-  Vec2f GetPixel2D() { return Get2D(); }
+  // The film position within the pixel (the first dimensions, best stratified), in the
+  // filter's sample space, and the sample's weight: the sampler's own numbers (weight 1), or the
+  // pattern's position (render/pixel_pattern.h; the dimensions are taken all the same, so that
+  // the path's numbers are those of the sampler either way).
+  PatternSample GetPixelSample() {
+    const Vec2f u = Get2D();
+    if (pattern_ == PixelPattern::kSampler) return {u, 1.f};
+    return PatternPosition(pattern_, spp_, index_, pixel_hash_);
+  }
+  Vec2f GetPixel2D() { return GetPixelSample().u; }
   int spp() const { return spp_; }
+  int index() const { return index_; }  // of the sample started
   SamplerKind kind() const { return kind_; }
+  PixelPattern pattern() const { return pattern_; }
+  const AdaptiveSettings& adaptive() const { return adaptive_; }
 
  private:
   // Per-dimension seed: a function of (pixel, seed), hashed once per sample, and the dimension.
@@ -74,6 +107,8 @@ class Sampler {
   Vec2f Stratified2D();
 
   SamplerKind kind_;
+  PixelPattern pattern_;
+  AdaptiveSettings adaptive_;
   int spp_;
   uint64_t seed_;
   int side_ = 1;  // stratified: strata per axis
