@@ -80,7 +80,7 @@ media() {
 sampling() {
   # The Cornell box by statistical adaptive sampling, beside its sample counts (16 to 512:
   # black to yellow).
-  render scenes/cornell-box/cornell-box.xml -D spp=512 -D res=256 --adaptive statistical --adaptive-threshold 0.06 \
+  render scenes/cornell-box/cornell-box.xml -D spp=512 -D res=256 --adaptive statistical --adaptive-threshold 0.06 --adaptive-min-samples 64 \
     --sample-count-layer -o "$tmp/adaptive.exr"
   oiiotool "$tmp/adaptive.exr" --ch sample_count --mulc 0.001953125 --clamp:min=0:max=1 --colormap inferno \
     -o "$tmp/counts.png"
