@@ -26,8 +26,12 @@ fi
 
 sanitizer_build() {
   scripts/setup.sh --sanitizers
+  # Unity sources (16 files a unit) for the libraries and the harnesses: the instrumented build
+  # spent most of its time compiling the same headers' templates once per file (objektiv_io and
+  # what it needs: 488 s of CPU one by one, 298 s as unity sources). The tests stay one by one.
   cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ -DOBJEKTIV_FUZZ=ON \
-    -DOBJEKTIV_BUILD_BENCH=OFF -DOBJEKTIV_ARCH="${OBJEKTIV_ARCH:-x86-64-v3}" >/dev/null
+    -DOBJEKTIV_BUILD_BENCH=OFF -DOBJEKTIV_ARCH="${OBJEKTIV_ARCH:-x86-64-v3}" \
+    -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=16 >/dev/null
   cmake --build build-fuzz -j "$jobs"
 }
 sanitizer_tests() {

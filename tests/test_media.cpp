@@ -311,6 +311,19 @@ TEST(Media, BadInputIsAnErrorAtItsLine) {
       {fog(""), R"(<integrator type="path"><boolean name="caustics" value="true"/></integrator>)", "not with caustics",
        1},
       {R"(<shape type="sphere"><bsdf type="null"/></shape>)", R"(<integrator type="whitted"/>)", "null BSDFs", 1},
+      {fog(""), R"(<integrator type="path"><boolean name="caustics" value="true"/></integrator>)",
+       "'path' integrator with caustics does not render", 1},
+      // Rays through a mask's holes would pass its boundary without entering the medium.
+      {R"(<shape type="sphere"><bsdf type="mask"><float name="opacity" value="0.5"/><bsdf type="diffuse"/></bsdf>
+<medium type="homogeneous" name="interior"/></shape>)",
+       "", "cannot have a mask BSDF", body + 1},
+      // A null part of a blend or mask: neither a surface nor a boundary.
+      {R"(<shape type="sphere"><bsdf type="mask">
+<bsdf type="null"/></bsdf></shape>)",
+       "", "mask cannot hold a null BSDF", body + 1},
+      {R"(<shape type="sphere"><bsdf type="blendbsdf"><bsdf type="diffuse"/>
+<bsdf type="null"/></bsdf></shape>)",
+       "", "blendbsdf cannot hold a null BSDF", body + 1},
   };
   for (const Case& c : cases) {
     const std::string msg = ErrorOf(c.body, c.integrator);

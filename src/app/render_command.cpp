@@ -302,7 +302,8 @@ int RunRender(const RenderArgs& a) {
   if (!a.stats_json.empty()) WriteStatsJson(a.stats_json, stats, threads, layers, result);
   // An anaglyph's film holds both eyes side by side; its image is one eye wide.
   const auto* rig = dynamic_cast<const StereoCamera*>(setup.camera.get());
-  const std::string eyes = rig && rig->layout() == StereoLayout::kAnaglyph && !part
+  const bool anaglyph = rig && rig->layout() == StereoLayout::kAnaglyph;
+  const std::string eyes = anaglyph && !part
                                ? fmt::format(" (both eyes; the anaglyph {}x{})", stats.width / 2, stats.height)
                                : "";
   if (!a.quiet)
@@ -323,8 +324,8 @@ int RunRender(const RenderArgs& a) {
       }
     std::printf("adaptive %s: %llu camera samples, %u to %u per pixel (mean %.4g)%s\n", AdaptiveModeName(adaptive),
                 (unsigned long long)total, lo, hi, film.samples_per_pixel(),
-                a.sample_count_layer ? ", channel sample_count" : "");
-  } else if (!a.quiet && a.sample_count_layer) {
+                a.sample_count_layer && !anaglyph ? ", channel sample_count" : "");
+  } else if (!a.quiet && a.sample_count_layer && !anaglyph) {
     std::printf("%llu camera samples in all, channel sample_count\n", (unsigned long long)stats.samples);
   }
   if (result.end == RenderEnd::kTimeLimit || result.end == RenderEnd::kNoiseTarget)

@@ -198,6 +198,10 @@ std::vector<std::shared_ptr<Material>> NestedMaterials(const Properties& p, Load
     if (m->Absorption())
       throw ErrorAt(n->loc, "{} cannot hold a dielectric with absorption (the medium behind a blend or mask has no one "
                     "interior)", p.type());
+    // (A null part would be a surface that is not there on part of it: that is a mask's
+    // opacity, and rays passing it would not enter the medium it bounds.)
+    if (m->IsNull())
+      throw ErrorAt(n->loc, "{} cannot hold a null BSDF (for a surface with holes, use a mask's opacity)", p.type());
     out.push_back(std::move(m));
   }
   return out;

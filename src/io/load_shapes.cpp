@@ -82,6 +82,12 @@ void AddSurfaces(const Properties& props, ShapeList shapes, LoaderContext& ctx, 
   const Medium* interior = MediumProperty(props, "interior", ctx);
   const Medium* exterior = MediumProperty(props, "exterior", ctx);
   const bool medium_interface = props.Has("interior") || props.Has("exterior");
+  // Rays through a mask's holes pass the surface as if it were not there: they would not enter
+  // or leave the medium it bounds.
+  if (medium_interface && material->HasOpacity())
+    throw ErrorAt(props.LocOf(props.Has("interior") ? "interior" : "exterior"),
+                  "a shape that bounds a medium cannot have a mask BSDF (rays through its holes would not enter the "
+                  "medium): bound the medium by a null or a closed surface of its own");
   if (group >= 0) {
     if (medium_interface)
       throw ErrorAt(props.LocOf(props.Has("interior") ? "interior" : "exterior"),

@@ -63,8 +63,9 @@ void CheckMediaSupport(const RenderSetup& setup, const ObjectNode* integrator, c
   const Location& at = integrator ? integrator->loc : root.loc;
   const std::string type = integrator ? integrator->type : "path";
   if (!setup.integrator->RendersMedia())
-    throw ErrorAt(at, "the scene has participating media or null BSDFs, which the '{}' integrator does not render "
-                  "(only 'path' follows light through media, and not with caustics)", type);
+    throw ErrorAt(at, "the scene has participating media or null BSDFs, which the '{}' integrator{} does not render "
+                  "(only 'path' follows light through media, and not with caustics)", type,
+                  setup.integrator->TracesLightToCamera() && type == "path" ? " with caustics" : "");
   if (type == "aov")
     spdlog::warn("{}:{}: aov: the image follows the media, but the AOVs describe the first surface a camera ray "
                  "hits (a null medium boundary included) and see no medium", at.file, at.line);
