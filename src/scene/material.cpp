@@ -53,14 +53,20 @@ BSDF ConductorMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths
   return BSDF(si.shading, b, two_sided_);
 }
 
+namespace {
+// The share of sampling given to the coat: its colour's mean against the base's (as Mitsuba).
+float SpecularSamplingWeight(const SpectrumTexture& diffuse, const SpectrumTexture& specular) {
+  const Vec3f dm = diffuse.MeanRgb(), sm = specular.MeanRgb();
+  const float d = dm.x + dm.y + dm.z, s = sm.x + sm.y + sm.z;
+  return d + s > 0 ? s / (d + s) : 0.5f;
+}
+}  // namespace
+
 PlasticMaterial::PlasticMaterial(float int_ior, float ext_ior, std::shared_ptr<const SpectrumTexture> diffuse,
                                  std::shared_ptr<const SpectrumTexture> specular, bool nonlinear)
     : eta_(int_ior / ext_ior), diffuse_(std::move(diffuse)), specular_(std::move(specular)), nonlinear_(nonlinear) {
   fdr_int_ = FresnelDiffuseReflectance(1 / eta_);
-  // Sample the coat in proportion to the mean specular and diffuse albedos (as Mitsuba).
-  float d = diffuse_->MeanRgb().x + diffuse_->MeanRgb().y + diffuse_->MeanRgb().z;
-  float s = specular_->MeanRgb().x + specular_->MeanRgb().y + specular_->MeanRgb().z;
-  specular_weight_ = d + s > 0 ? s / (d + s) : 0.5f;
+  specular_weight_ = SpecularSamplingWeight(*diffuse_, *specular_);
 }
 
 BSDF PlasticMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const {
@@ -74,15 +80,6 @@ BSDF PlasticMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& 
   b.nonlinear = nonlinear_;
   return BSDF(si.shading, b, two_sided_);
 }
-
-namespace {
-// The share of sampling given to the coat: its colour's mean against the base's (as Mitsuba).
-float SpecularSamplingWeight(const SpectrumTexture& diffuse, const SpectrumTexture& specular) {
-  const Vec3f dm = diffuse.MeanRgb(), sm = specular.MeanRgb();
-  const float d = dm.x + dm.y + dm.z, s = sm.x + sm.y + sm.z;
-  return d + s > 0 ? s / (d + s) : 0.5f;
-}
-}  // namespace
 
 RoughPlasticMaterial::RoughPlasticMaterial(float alpha, float int_ior, float ext_ior,
                                            std::shared_ptr<const SpectrumTexture> diffuse,
