@@ -9,6 +9,7 @@
 #include "base/sampling.h"
 #include "chi2.h"
 #include "io/image_io.h"
+#include "log_capture.h"
 #include "render_helpers.h"
 #include "scene/analytic_shape.h"
 #include "scene/normal_mapping.h"
@@ -405,6 +406,33 @@ TEST(BumpMapping, BitmapsForDataAreReadWithoutSrgbDecoding) {
   EXPECT_LT(normal_of(""), 0.5f);  // (128, 128, 255) is (0.004, 0.004, 1): flat
   EXPECT_LT(normal_of(R"(<boolean name="raw" value="true"/>)"), 0.5f);
   EXPECT_GT(normal_of(R"(<boolean name="raw" value="false"/>)"), 30.f);  // decoded as sRGB: 0.216 -> tilted
+  fs::remove(png);
+}
+
+// Mid-grey, or a colour whose 2 c - 1 points into the surface, stores no normal: the loader says
+// how many texels of the map do (the surface keeps its own normal there).
+TEST(BumpMapping, NormalMapTexelsWithoutANormalAreWarned) {
+  namespace fs = std::filesystem;
+  const fs::path png = fs::temp_directory_path() / "objektiv_grey_normals.png";
+  Image img(2, 2, {"R", "G", "B"});
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 2; ++x) img.At(x, y, 0) = img.At(x, y, 1) = 0.5f, img.At(x, y, 2) = 1;
+  img.At(1, 0, 2) = 0.5f;  // grey: (0, 0, 0)
+  img.At(0, 1, 2) = 0.2f;  // (0, 0, -0.6): into the surface
+  WritePng(png.string(), img);
+  auto warnings = [&](const std::string& normals) {
+    test::LogCapture log;
+    LoadSceneFromString(BumpScene(R"(<bsdf type="normalmap">)" + normals + R"(<bsdf type="diffuse"/></bsdf>)"),
+                        "normals.xml", {});
+    return log.Text();
+  };
+  const std::string bitmap = warnings(R"(<texture name="normalmap" type="bitmap"><string name="filename" value=")" +
+                                      png.string() + R"("/></texture>)");
+  EXPECT_NE(bitmap.find("normals.xml:"), std::string::npos) << bitmap;
+  EXPECT_NE(bitmap.find("2 of 4 texels decode to no outward normal"), std::string::npos) << bitmap;
+  const std::string grey = warnings(R"(<rgb name="normalmap" value="0.5, 0.5, 0.5"/>)");
+  EXPECT_NE(grey.find("1 of 1 texels decode to no outward normal"), std::string::npos) << grey;
+  EXPECT_EQ(warnings(R"(<rgb name="normalmap" value="0.5, 0.5, 1"/>)").find("normalmap:"), std::string::npos);
   fs::remove(png);
 }
 

@@ -86,7 +86,9 @@ TEST(Media, PhaseSamplingMatchesItsDensity) {
 TEST(Media, FreeFlightEstimatesTheTransmittanceOfEveryWavelength) {
   // sigma_t: 0 below 450 nm, rising to 6 per unit at 700 nm.
   const Spectrum sigma_t = Spectrum::Tabulated({360, 450, 700, 830}, {0, 0, 6, 6});
-  const HomogeneousMedium medium = HomogeneousMedium::FromExtinction(sigma_t, Spectrum(0.f), 1, HGPhaseFunction(0));
+  // An albedo above 0, or no distance would be sampled at all (the pure absorber, below).
+  const HomogeneousMedium medium = HomogeneousMedium::FromExtinction(sigma_t, Spectrum(0.5f), 1, HGPhaseFunction(0));
+  ASSERT_TRUE(medium.Scatters());
   PCG32 rng(7, 3);
   for (float d : {0.1f, 0.5f, 2.f}) {
     for (int trial = 0; trial < 4; ++trial) {
@@ -117,6 +119,33 @@ TEST(Media, FreeFlightEstimatesTheTransmittanceOfEveryWavelength) {
   for (int k = 0; k < kSpectrumSamples; ++k) EXPECT_FLOAT_EQ(tr[k], std::exp(-st[k] * 1.5f));
   const SampledSpectrum far = medium.Transmittance(std::numeric_limits<float>::infinity(), lambda);
   for (int k = 0; k < kSpectrumSamples; ++k) EXPECT_EQ(far[k], st[k] > 0 ? 0.f : 1.f);
+}
+
+// A medium that only absorbs samples no distance: every segment passes with exactly its
+// transmittance, whatever the random number (albedo 0, or sigma_s 0 given as coefficients).
+TEST(Media, PureAbsorberPassesEverySegmentWithItsTransmittance) {
+  const Spectrum sigma_t = Spectrum::Tabulated({360, 450, 700, 830}, {0, 0, 6, 6});
+  const HomogeneousMedium by_albedo = HomogeneousMedium::FromExtinction(sigma_t, Spectrum(0.f), 1, HGPhaseFunction(0));
+  const HomogeneousMedium by_coefficients =
+      HomogeneousMedium::FromCoefficients(sigma_t, Spectrum(0.f), 2, HGPhaseFunction(0.5f));
+  EXPECT_FALSE(by_albedo.Scatters());
+  EXPECT_FALSE(by_coefficients.Scatters());
+  EXPECT_TRUE(HomogeneousMedium::FromCoefficients(Spectrum(0.f), Spectrum(0.1f), 1, HGPhaseFunction(0)).Scatters());
+  const SampledWavelengths lambda = SampledWavelengths::SampleUniform(0.6f);
+  for (const HomogeneousMedium* m : {&by_albedo, &by_coefficients}) {
+    for (float u : {0.f, 0.5f, 0.999f}) {
+      for (int channel = 0; channel < kSpectrumSamples; ++channel) {
+        const MediumSample ms = m->SampleDistance(0.7f, lambda, channel, u);
+        EXPECT_FALSE(ms.scattered);
+        EXPECT_EQ(ms.distance, 0.7f);
+        const SampledSpectrum tr = m->Transmittance(0.7f, lambda);
+        for (int k = 0; k < kSpectrumSamples; ++k) {
+          EXPECT_EQ(ms.weight[k], tr[k]);
+          EXPECT_EQ(ms.ratio[k], 1.f);
+        }
+      }
+    }
+  }
 }
 
 // --- whole renders --------------------------------------------------------------------------
@@ -155,6 +184,37 @@ TEST(Media, CameraSeesALampThroughFogAttenuatedByItsTransmittance) {
     }
     EXPECT_EQ(r.stats.nan_count, 0u);
   }
+}
+
+// A slab that only absorbs takes no random decision: each pixel of the camera's view of the lamp
+// through it is the same pixel without the slab times exp(-sigma_t) (the same wavelengths and
+// lens samples; only the spectral sampling's colour noise, common to both, is left). Free-flight
+// sampling would let a pixel's samples through all or nothing.
+TEST(Media, PureAbsorberDimsEveryPixelByItsTransmittanceWithoutNoise) {
+  const float sigma = 0.8f;
+  auto render = [&](const std::string& slab) {
+    return RenderXml(fmt::format(R"(<scene version="3.0.0">{}
+  <shape type="rectangle"><transform name="to_world"><scale value="10"/><translate z="-3"/></transform>
+    <emitter type="area"><rgb name="radiance" value="1, 0.7, 0.4"/></emitter></shape>{}
+</scene>)",
+                                 Sensor(4, 12), slab));
+  };
+  const test::RenderResult open = render("");
+  const test::RenderResult slab = render(fmt::format(R"(
+  <shape type="cube"><transform name="to_world"><scale x="5" y="5" z="0.5"/></transform>
+    <bsdf type="null"/>
+    <medium type="homogeneous" name="interior"><float name="sigma_a" value="{}"/></medium>
+  </shape>)",
+                                                     sigma));
+  double worst = 0;
+  for (int y = 0; y < open.image.height; ++y)
+    for (int x = 0; x < open.image.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const float a = open.image.At(x, y, c), b = slab.image.At(x, y, c);
+        ASSERT_GT(a, 0.f);
+        worst = std::max(worst, std::abs(double(b) / a - std::exp(-double(sigma))));
+      }
+  EXPECT_LT(worst, 1e-5) << "largest deviation of a pixel's ratio from exp(-sigma_t)";
 }
 
 // The same slab with a coloured sigma_t, against Beer-Lambert absorption inside a dielectric

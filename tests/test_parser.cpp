@@ -53,6 +53,15 @@ TEST(Parser, BadInputNamesFileAndLine) {
       {Wrap("<shape type=\"sphere\">\n<float name=\"radius\" value=\"-1\"/></shape>"), 5, "radius must be positive"},
       {Wrap("<shape type=\"sphere\"><bsdf type=\"diffuse\">\n<rgb name=\"reflectance\" value=\"1.5, 0, 0\"/></bsdf></shape>"),
        5, "must lie in [0, 1]"},
+      // As a number and as a tabulated spectrum as well.
+      {Wrap("<shape type=\"sphere\"><bsdf type=\"diffuse\">\n<float name=\"reflectance\" value=\"1.2\"/></bsdf></shape>"),
+       5, "reflectance 'reflectance' must lie in [0, 1]"},
+      {Wrap("<shape type=\"sphere\"><bsdf type=\"roughplastic\">\n<spectrum name=\"diffuse_reflectance\" "
+            "value=\"400:0.5, 700:1.3\"/></bsdf></shape>"),
+       5, "reflectance 'diffuse_reflectance' must lie in [0, 1]"},
+      {Wrap("<shape type=\"sphere\"><bsdf type=\"diffuse\">\n<spectrum name=\"reflectance\" value=\"400:0.5, 700:-0.1\"/>"
+            "</bsdf></shape>"),
+       5, "must lie in [0, 1]"},
       {Wrap("<shape type=\"sphere\"><bsdf type=\"dielectric\">\n<string name=\"int_ior\" value=\"unobtainium\"/></bsdf></shape>"),
        5, "unknown index of refraction"},
       {Wrap("<shape type=\"sphere\"><bsdf type=\"dielectric\">\n<string name=\"int_ior\" value=\"SCHOTT:N-NOPE\"/></bsdf></shape>"),

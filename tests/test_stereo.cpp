@@ -87,7 +87,7 @@ TEST(Stereo, FilmLayouts) {
 // further right in the right eye's image by f b (1/C - 1/Z) pixels, a nearer one further left.
 TEST(Stereo, OffAxisConvergencePlaneHasZeroParallax) {
   for (const char* layout : {"side-by-side", "over-under"})
-    for (const std::string inner : {std::string(R"(type="perspective"><float name="fov" value="45"/>)"),
+    for (const std::string& inner : {std::string(R"(type="perspective"><float name="fov" value="45"/>)"),
                                     fmt::format(R"(type="thinlens"><float name="fov" value="45"/>
                                     <float name="aperture_radius" value="0.02"/><float name="focus_distance" value="{}"/>)",
                                                 kConvergence)}) {

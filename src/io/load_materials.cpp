@@ -293,11 +293,37 @@ std::shared_ptr<Material> MakeBumpMap(const Properties& p, LoaderContext& ctx) {
   return std::make_shared<BumpMapMaterial>(std::move(inner), std::move(height), float(scale));
 }
 
+// A normal map's colour c stores the tangent-space normal 2 c - 1, of length 1 and pointing out
+// of the surface (z > 0). Where it decodes to hardly any direction (length below 1/2: mid-grey,
+// a map saved with the wrong encoding or a colour image given by mistake) or into the surface,
+// the surface is shaded with its own normal (scene/normal_mapping.h): warned, with how many texels.
+void WarnOfTexelsWithoutNormal(const Properties& p, const SpectrumTexture& normals) {
+  auto unusable = [](Vec3f c) {
+    const Vec3f n = c * 2.f - Vec3f(1.f);
+    return !(Length(n) >= 0.5f && n.z > 0);
+  };
+  size_t bad = 0, total = 1;
+  if (const auto* bitmap = dynamic_cast<const BitmapTexture*>(&normals)) {
+    const Image& image = bitmap->image();
+    total = size_t(image.width) * image.height;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) bad += unusable(image.Rgb(x, y));
+  } else if (const auto* constant = dynamic_cast<const ConstantTexture*>(&normals)) {
+    bad = unusable(constant->MeanRgb());
+  }
+  if (bad > 0)
+    spdlog::warn("{}:{}: normalmap: {} of {} texels decode to no outward normal (2 c - 1 shorter than 1/2, or "
+                 "pointing into the surface): the surface keeps its own normal there (a tangent-space map is "
+                 "bluish, (0.5, 0.5, 1) where flat)",
+                 p.loc().file, p.loc().line, bad, total);
+}
+
 // Mitsuba 3's normalmap: tangent-space normals from the texture named 'normalmap'.
 std::shared_ptr<Material> MakeNormalMap(const Properties& p, LoaderContext& ctx) {
   if (!p.Has("normalmap"))
     throw ErrorAt(p.loc(), "normalmap needs its texture of normals: a nested <texture name=\"normalmap\" type=\"bitmap\">");
   std::shared_ptr<const SpectrumTexture> normals = GetTexture(p, "normalmap", SpectrumUsage::kData, 0, ctx);
+  WarnOfTexelsWithoutNormal(p, *normals);
   return std::make_shared<NormalMapMaterial>(WrappedMaterial(p, ctx), std::move(normals));
 }
 

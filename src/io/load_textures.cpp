@@ -1,4 +1,6 @@
 // Spectra as written in the scene, and the <texture> plugins (bitmap, checkerboard).
+#include <algorithm>
+
 #include "base/cie.h"
 #include "io/image_io.h"
 #include "io/loader_context.h"
@@ -51,10 +53,18 @@ std::shared_ptr<const SpectrumTexture> GetTexture(const Properties& props, const
       throw ErrorAt(props.LocOf(name), "'{}' holds data (heights or normals): give a texture, a number or an <rgb>, not a spectrum",
                     name);
     }
-    if (usage == SpectrumUsage::kAlbedo && v->kind == SpectrumValue::Kind::kRgb &&
-        (MinComponent(v->rgb) < 0 || MaxComponent(v->rgb) > 1))
+    Spectrum spectrum = MakeSpectrum(*v, usage);
+    // A reflectance above 1 (or below 0) anywhere would create light: checked as written for an
+    // <rgb> or a number, as the spectrum it makes otherwise.
+    const bool in_unit_range = v->kind == SpectrumValue::Kind::kRgb
+                                   ? MinComponent(v->rgb) >= 0 && MaxComponent(v->rgb) <= 1
+                               : v->kind == SpectrumValue::Kind::kConstant ? v->value >= 0 && v->value <= 1
+                               : v->kind == SpectrumValue::Kind::kSampled
+                                   ? std::all_of(v->values.begin(), v->values.end(), [](float x) { return x >= 0; }) && spectrum.MaxValue() <= 1
+                                   : spectrum.MaxValue() <= 1;
+    if (usage == SpectrumUsage::kAlbedo && !in_unit_range)
       throw ErrorAt(props.LocOf(name), "reflectance '{}' must lie in [0, 1]", name);
-    return std::make_shared<ConstantTexture>(MakeSpectrum(*v, usage));
+    return std::make_shared<ConstantTexture>(std::move(spectrum));
   }
   SpectrumValue s;
   s.kind = SpectrumValue::Kind::kConstant;

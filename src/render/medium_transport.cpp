@@ -4,16 +4,6 @@
 
 namespace objektiv {
 
-Ray ContinueRay(const Ray& ray, const SurfaceInteraction& si) {
-  Ray next{OffsetRayOrigin(si.p, si.p_error, si.n, ray.d), ray.d, ray.tmax};
-  if (std::isfinite(ray.tmax)) {
-    // The same end point, from the new origin.
-    const Vec3f end = ray.o + ray.d * ray.tmax;
-    next.tmax = Dot(end - next.o, ray.d) / Dot(ray.d, ray.d);
-  }
-  return next;
-}
-
 SampledSpectrum Transmittance(const Scene& scene, Ray ray, const Medium* medium, const SampledWavelengths& lambda,
                               RayCounts& counts) {
   SampledSpectrum tr(1.f);
@@ -29,7 +19,7 @@ SampledSpectrum Transmittance(const Scene& scene, Ray ray, const Medium* medium,
     }
     if (!si) return tr;
     medium = si->shape->MediumToward(si->n, ray.d, medium);
-    ray = ContinueRay(ray, *si);
+    ray = si->ContinueBeyond(ray);
   }
   return SampledSpectrum(0.f);
 }

@@ -14,9 +14,6 @@ namespace objektiv {
 // and a path ends.
 inline constexpr int kMaxNullCrossings = 1000;
 
-// The ray on beyond si (a null surface it hit) in the same direction, to the same end point.
-Ray ContinueRay(const Ray& ray, const SurfaceInteraction& si);
-
 // Transmittance along `ray` up to ray.tmax (in units of ray.d) that starts in `medium`.
 SampledSpectrum Transmittance(const Scene& scene, Ray ray, const Medium* medium, const SampledWavelengths& lambda,
                               RayCounts& counts);

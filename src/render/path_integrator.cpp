@@ -66,7 +66,7 @@ SampledSpectrum PathIntegrator::Li(const Ray& camera_ray, const std::optional<Su
         if (!si || !(si->shape->material && si->shape->material->IsNull())) break;
         if (++crossings > kMaxNullCrossings) return L;
         medium = si->shape->MediumToward(si->n, ray.d, medium);
-        ray = ContinueRay(ray, *si);
+        ray = si->ContinueBeyond(ray);
         ++counts.closest;
         si = scene_.Intersect(ray);
       }

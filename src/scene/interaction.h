@@ -1,5 +1,7 @@
 // What a ray hit: position with its error bound, normals, shading frame, texture coordinates.
 #pragma once
+#include <cmath>
+
 #include "base/frame.h"
 #include "base/ray.h"
 
@@ -23,6 +25,14 @@ struct SurfaceInteraction {
   const ShapeRecord* shape = nullptr;
 
   Ray SpawnRay(const Vec3f& d) const { return Ray{OffsetRayOrigin(p, p_error, n, d), d}; }
+  // The rest of `ray`, which met this surface and passes it (a medium's null boundary, a mask's
+  // hole): from just beyond it, in the same direction, to the same end point (tmax in units of
+  // ray.d; infinite stays infinite). A tmax <= 0 means nothing of the ray is left.
+  Ray ContinueBeyond(const Ray& ray) const {
+    Ray next = SpawnRay(ray.d);
+    if (std::isfinite(ray.tmax)) next.tmax = ray.tmax - Dot(next.o - ray.o, ray.d) / Dot(ray.d, ray.d);
+    return next;
+  }
   // Shadow ray toward a point (with its own error bound, e.g. on a light); stops just short of it.
   Ray SpawnRayTo(const Vec3f& target, const Vec3f& target_error, const Vec3f& target_n) const {
     Vec3f d0 = target - p;

@@ -20,6 +20,13 @@ SampledSpectrum HomogeneousMedium::Transmittance(float d, const SampledWavelengt
 
 MediumSample HomogeneousMedium::SampleDistance(float d_max, const SampledWavelengths& lambda, int channel,
                                                float u) const {
+  if (!scatters_) {  // a pure absorber: nothing to sample (see the header)
+    MediumSample ms;
+    ms.distance = d_max;
+    ms.weight = Transmittance(d_max, lambda);
+    ms.ratio = SampledSpectrum(1.f);
+    return ms;
+  }
   const SampledSpectrum st = SigmaT(lambda);
   const int c = channel;
   const float u_t = std::min(u, 0x1.fffffep-1f);

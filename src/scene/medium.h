@@ -23,6 +23,12 @@
 //   passed to d_max:     weight_i = T_i / T_c,                         ratio_j = T_j / T_c.
 // The denominators are positive (sigma_t,c T_c = sigma_t,c (1 - u) at a sampled t; T_c >= 1 - u
 // at a passed d_max), and a wavelength with sigma_t = 0 passes with T = 1.
+//
+// A medium that only absorbs (sigma_s = 0 at every wavelength: tinted glass, ink) has nothing to
+// scatter at: a sampled collision could only end the path, turning the smooth exp(-sigma_t d)
+// into a coin toss. There every segment passes, weighted by the transmittance itself
+// (weight_i = T_i, ratio_j = 1: no distance was sampled, every wavelength's density is the same),
+// which is exact, noise-free, and the estimator Beer-Lambert absorption in a dielectric uses.
 #pragma once
 #include "base/sampled_spectrum.h"
 #include "base/spectrum.h"
@@ -68,17 +74,21 @@ class HomogeneousMedium {
   // Whether paths scattered inside sample the emitters (next-event estimation with MIS), as
   // Mitsuba 3's sample_emitters; without, only phase sampling finds them.
   bool SamplesEmitters() const { return sample_emitters_; }
+  // Whether it scatters at any wavelength (sigma_s > 0 somewhere); if not, SampleDistance never
+  // samples a collision and returns the transmittance (see above).
+  bool Scatters() const { return scatters_; }
 
  private:
   HomogeneousMedium(Spectrum a, Spectrum b, bool extinction, float scale, HGPhaseFunction phase, bool sample_emitters)
       : a_(std::move(a)), b_(std::move(b)), extinction_(extinction), scale_(scale), phase_(phase),
-        sample_emitters_(sample_emitters) {}
+        sample_emitters_(sample_emitters), scatters_(b_.MaxValue() > 0 && scale > 0) {}
   // (sigma_t, albedo) if extinction_, else (sigma_a, sigma_s).
   Spectrum a_, b_;
   bool extinction_;
   float scale_;
   HGPhaseFunction phase_;
   bool sample_emitters_;
+  bool scatters_;  // b_ is the albedo or sigma_s: either way zero everywhere means no scattering
 };
 
 using Medium = HomogeneousMedium;

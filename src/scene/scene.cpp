@@ -174,15 +174,6 @@ bool Scene::PassesThrough(const SurfaceInteraction& si, const Ray& ray) const {
   return a <= 0 || RayHashFloat(ray) >= a;
 }
 
-// The ray beyond si, on the same line (its direction and its remaining length in the same
-// units); false when nothing of it is left.
-static bool Continuation(const Ray& ray, const SurfaceInteraction& si, Ray* next) {
-  *next = si.SpawnRay(ray.d);
-  if (std::isinf(ray.tmax)) return true;
-  next->tmax = ray.tmax - Dot(next->o - ray.o, ray.d) / Dot(ray.d, ray.d);
-  return next->tmax > 0;
-}
-
 std::optional<SurfaceInteraction> Scene::Intersect(const Ray& ray) const {
   std::optional<SurfaceInteraction> si = IntersectSurface(ray);
   if (!has_masks_ || !si) return si;
@@ -193,9 +184,8 @@ std::optional<SurfaceInteraction> Scene::SkipPassedMasks(const Ray& ray, std::op
   Ray segment = ray;
   bool moved = false;
   for (int i = 0; i < kMaxPassThroughs && si && PassesThrough(*si, segment); ++i) {
-    Ray next;
-    if (!Continuation(ray, *si, &next)) return std::nullopt;
-    segment = next;
+    segment = si->ContinueBeyond(ray);
+    if (!(segment.tmax > 0)) return std::nullopt;
     si = IntersectSurface(segment);
     moved = true;
   }
@@ -327,9 +317,8 @@ bool Scene::Occluded(const Ray& ray) const {
     const std::optional<SurfaceInteraction> si = IntersectSurface(segment);
     if (!si) return false;
     if (!PassesThrough(*si, segment)) return true;
-    Ray next;
-    if (!Continuation(ray, *si, &next)) return false;
-    segment = next;
+    segment = si->ContinueBeyond(ray);
+    if (!(segment.tmax > 0)) return false;
   }
   return true;
 }

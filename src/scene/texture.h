@@ -98,6 +98,8 @@ class BitmapTexture final : public SpectrumTexture {
   Vec3f Rgb(Vec2f uv) const override { return LookupRgb(uv); }
   Vec2f LuminanceGradient(Vec2f uv) const override;
   bool IsPiecewiseConstant() const override { return filter_ == FilterMode::kNearest; }
+  // The texels as stored after decoding (linear values; what a lookup interpolates).
+  const Image& image() const { return image_; }
 
  private:
   // The texel coordinates (x, y) of uv after to_uv and wrapping (NaN where there are none).
