@@ -400,7 +400,9 @@ RenderStats SppmIntegrator::RenderImage(const Camera& camera, const Sampler& sam
       Vec3f xyz(0.f), emitted(0.f);
       if (px.weight != 0) {
         const double area = std::numbers::pi * px.radius * px.radius;
-        const double photon_scale = area > 0 ? 1 / (emitted_photons * area) : 0;
+        // tau / (N_emitted pi r^2) is the mean over the iterations of w L (w in the visible
+        // point's beta): times the iterations, a sum of w L as the direct part's.
+        const double photon_scale = area > 0 ? done / (emitted_photons * area) : 0;
         for (int k = 0; k < 3; ++k) {
           xyz[k] = float((px.direct[k] + px.tau[k] * photon_scale) / px.weight);
           emitted[k] = float(px.emitted[k] / px.weight);
