@@ -166,6 +166,21 @@ int RunRender(const RenderArgs& a) {
   if (!a.sampler.empty() || !a.adaptive.empty() || a.adaptive_min > 0 || a.spp > 0)
     CheckSamplerSettings(setup.sampler, "the command line");
   const AdaptiveMode adaptive = setup.sampler.adaptive.mode;
+  // sppm's iterations (its samples per pixel) are one render: each starts from the photon
+  // radii and sums the ones before it left, so they cannot be split, paused or cut short.
+  if (dynamic_cast<const WholeImageIntegrator*>(setup.integrator.get())) {
+    const char* what = part                              ? "a part (--part, --spp-range)"
+                       : adaptive != AdaptiveMode::kNone ? "adaptive sampling (--adaptive)"
+                       : a.time_limit > 0                ? "--time-limit"
+                       : a.noise_target > 0              ? "--noise-target"
+                       : a.checkpoint > 0                ? "--checkpoint"
+                       : a.resume                        ? "--resume"
+                                                         : nullptr;
+    if (what)
+      throw InputError(fmt::format("{}: sppm renders its iterations (the samples per pixel) in one go, each shrinking "
+                                   "the photon radii the one before left: {} cannot apply",
+                                   a.scene, what));
+  }
   // A pixel's adaptive sample count is decided from all of its samples: a sample range alone
   // cannot decide it, and the parts would not add up to one render.
   if (adaptive != AdaptiveMode::kNone && part)

@@ -1,7 +1,10 @@
 // The <integrator> plugins: each makes an Integrator from its properties.
 #include "io/loader_context.h"
+
+#include <limits>
 #include "render/aov.h"
 #include "render/light_tracer.h"
+#include "render/sppm_integrator.h"
 #include "render/whitted_integrator.h"
 
 namespace objektiv {
@@ -49,6 +52,20 @@ std::unique_ptr<Integrator> MakeWhitted(const Properties& p, const Scene& scene)
   return std::make_unique<WhittedIntegrator>(scene, std::move(w));
 }
 
+// Stochastic progressive photon mapping (render/sppm_integrator.h).
+std::unique_ptr<Integrator> MakeSppm(const Properties& p, const Scene& scene) {
+  SppmSettings s;
+  const PathDepths d = ParsePathDepths(p);
+  s.max_depth = d.max_depth, s.rr_depth = d.rr_depth;
+  s.photon_count = p.IntIn("photon_count", s.photon_count, 1, SppmSettings::kMaxPhotonCount);
+  s.initial_radius = float(p.FloatIn("initial_radius", 0, 0, std::numeric_limits<float>::max()));
+  // alpha = 1 would never shrink the radius (no convergence); 0 would keep no photon.
+  s.alpha = float(p.FloatIn("alpha", s.alpha, 0, 1));
+  if (!(s.alpha > 0 && s.alpha < 1))
+    throw ErrorAt(p.LocOf("alpha"), "alpha must lie strictly between 0 and 1 (2/3 is usual), got {}", s.alpha);
+  return std::make_unique<SppmIntegrator>(scene, s);
+}
+
 }  // namespace
 
 const IntegratorRegistry& IntegratorPlugins() {
@@ -82,6 +99,13 @@ const IntegratorRegistry& IntegratorPlugins() {
             {"bailout", PropType::kFloat},
             {"ambient", PropType::kSpectrum}},
            MakeWhitted},
+          {"sppm",
+           {{"max_depth", PropType::kInteger},
+            {"rr_depth", PropType::kInteger},
+            {"photon_count", PropType::kInteger},
+            {"initial_radius", PropType::kFloat},
+            {"alpha", PropType::kFloat}},
+           MakeSppm},
           {"aov", {{"aovs", PropType::kString}, {"integrator", PropType::kObject}}, MakeAovIntegrator},
       });
   return registry;

@@ -30,7 +30,10 @@ Vec3f SampledToXYZ(const SampledSpectrum& L, const SampledWavelengths& lambda) {
 }
 
 void Film::AddSample(Vec2i pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float weight) {
-  Vec3f xyz = SampledToXYZ(L, lambda);
+  AddXyzSample(pixel, SampledToXYZ(L, lambda), weight);
+}
+
+void Film::AddXyzSample(Vec2i pixel, const Vec3f& xyz, float weight) {
   Pixel& px = pixels_[Index(pixel)];
   for (int c = 0; c < 3; ++c) px.xyz[c].Add(double(weight) * xyz[c]);
   px.weight.Add(weight);
@@ -63,7 +66,11 @@ void Film::AddSplat(Vec2f p_film, const SampledSpectrum& L, const SampledWavelen
 
 void Film::AddEmitted(Vec2i pixel, const SampledSpectrum& Le, const SampledWavelengths& lambda, float weight) {
   if (emitted_xyz_.empty()) return;
-  const Vec3f xyz = SampledToXYZ(Le, lambda);
+  AddEmittedXyz(pixel, SampledToXYZ(Le, lambda), weight);
+}
+
+void Film::AddEmittedXyz(Vec2i pixel, const Vec3f& xyz, float weight) {
+  if (emitted_xyz_.empty()) return;
   ExactSum* sum = &emitted_xyz_[3 * Index(pixel)];
   for (int c = 0; c < 3; ++c) sum[c].Add(double(weight) * xyz[c]);
 }

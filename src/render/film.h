@@ -57,6 +57,8 @@ class Film {
   // A camera sample of a pixel in the crop window. Not synchronised: one thread writes a pixel
   // at a time (the renderer gives each pixel to one block).
   void AddSample(Vec2i pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float weight);
+  // The same for an estimate already in XYZ (an integrator that sums its samples itself: sppm).
+  void AddXyzSample(Vec2i pixel, const Vec3f& xyz, float weight);
   // The part of a camera sample's radiance that came straight from an emitter (what the first
   // hit emits, or an environment seen directly), kept apart when asked for (KeepEmitted):
   // the light the stop's diffraction spreads (render/diffraction_glare.h). Given with the
@@ -64,6 +66,7 @@ class Film {
   void KeepEmitted() { emitted_xyz_.assign(3 * pixels_.size(), ExactSum()); }
   bool keeps_emitted() const { return !emitted_xyz_.empty(); }
   void AddEmitted(Vec2i pixel, const SampledSpectrum& Le, const SampledWavelengths& lambda, float weight);
+  void AddEmittedXyz(Vec2i pixel, const Vec3f& xyz, float weight);
   // Arbitrary output variables (render/aov.h): `channels` values per camera ray, averaged per
   // pixel with the samples' filter weights over the samples that start a ray (through a real
   // lens, many do not: they describe nothing). Not synchronised, as AddSample.

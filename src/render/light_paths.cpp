@@ -6,15 +6,13 @@
 
 namespace objektiv {
 
-namespace {
-// The adjoint BSDF's cosine for light scattered from wo into wi with a shading normal (the
-// BSDF's, which a bump or normal map may have perturbed): what |wi.n| is where shading and
-// geometry agree; 0 where wo grazes the geometric surface.
 float ImportanceCosine(const SurfaceInteraction& si, const BSDF& bsdf, const Vec3f& wo, const Vec3f& wi) {
   const float wo_ng = AbsDot(wo, si.n);
   if (wo_ng == 0) return 0;
   return AbsDot(wo, bsdf.frame().n) * AbsDot(wi, si.n) / wo_ng;
 }
+
+namespace {
 
 // Splats the light of the vertex si (flux beta, arriving from si.wo) that reaches the camera.
 void JoinCamera(const Scene& scene, const SurfaceInteraction& si, const BSDF& bsdf, const SampledSpectrum& beta,

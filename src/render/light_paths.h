@@ -33,6 +33,12 @@ struct LightPathSettings {
   LightPathVertices join = LightPathVertices::kAll;
 };
 
+// The adjoint BSDF's cosine for light scattered from wo into wi with a shading normal (the
+// BSDF's, which a bump or normal map may have perturbed): what |wi.n| is where shading and
+// geometry agree; 0 where wo grazes the geometric surface. Light paths and photons (sppm)
+// multiply their flux by f times it over the pdf.
+float ImportanceCosine(const SurfaceInteraction& si, const BSDF& bsdf, const Vec3f& wo, const Vec3f& wi);
+
 // Traces one light path with the sampler's next numbers and splats what reaches the camera.
 void TraceLightPath(const Scene& scene, const LightPathSettings& settings, Sampler& sampler, BlockContext& ctx);
 

@@ -7,10 +7,15 @@
 #include <algorithm>
 #include <chrono>
 #include <optional>
+#include <stdexcept>
 
 #include "base/progress.h"
 
 namespace objektiv {
+
+void WholeImageIntegrator::RenderBlock(BlockContext&) const {
+  throw std::logic_error("an integrator of whole-image passes was handed a block");
+}
 
 RenderStats Render(const Camera& camera, const Integrator& integrator, const Sampler& sampler, Film& film,
                    const RenderOptions& options) {
@@ -23,6 +28,8 @@ RenderStats Render(const Camera& camera, const Integrator& integrator, const Sam
   std::unique_ptr<tbb::global_control> limit;
   if (options.threads > 0)
     limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, options.threads);
+  if (const auto* whole = dynamic_cast<const WholeImageIntegrator*>(&integrator))
+    return whole->RenderImage(camera, sampler, film, options);
 
   tbb::enumerable_thread_specific<RenderCounters> counters;
   const bool whole = sampler.adaptive().mode == AdaptiveMode::kWhitted;

@@ -49,6 +49,21 @@ struct RenderOptions {
   const std::atomic<bool>* stop = nullptr;
 };
 
+// Integrators whose passes span the whole image (SPPM: a photon pass between camera passes)
+// cannot work in blocks: Render hands them the whole sample range at once. Their sample indices
+// are iterations of one render: they start at 0 and are taken all together (no parts, no pauses).
+class WholeImageIntegrator : public Integrator {
+ public:
+  using Integrator::Integrator;
+  // Renders the iterations [options.spp_begin, options.spp_end) (spp_begin must be 0) into the
+  // film; stops after an iteration once options.stop turns true (the pixels then count the
+  // iterations done). Threads and progress as for Render.
+  virtual RenderStats RenderImage(const Camera& camera, const Sampler& sampler, Film& film,
+                                  const RenderOptions& options) const = 0;
+  // Never called: Render sends such an integrator to RenderImage.
+  void RenderBlock(BlockContext&) const final;
+};
+
 RenderStats Render(const Camera& camera, const Integrator& integrator, const Sampler& sampler, Film& film,
                    const RenderOptions& options);
 
