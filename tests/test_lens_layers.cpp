@@ -167,6 +167,7 @@ TEST(LensLayers, DiffractionKernelMatchesTheStopsPsf) {
 }
 
 TEST(LensLayers, AnApertureMasksGreyLevelsDimTheLightsImageAndGhosts) {
+  SKIP_UNDER_SANITIZERS("RealisticCamera.ApertureMaskWeightsTheLightThroughTheStop and LensLayers.GhostsFallAsTheCoatingsReflectancesPredict");
   // A uniform grey mask (128 of 255, read raw: 0.502) passes half the light everywhere.
   const std::string mask = (std::filesystem::temp_directory_path() / "objektiv_grey_mask.png").string();
   Image grey(16, 16, {"R", "G", "B"});
@@ -280,6 +281,7 @@ TEST(LensLayers, SettingsTheEffectsCannotFollowAreWarned) {
 // The flare layers are the same, bit for bit, on any number of threads (the bundles are
 // splatted in one order per pixel).
 TEST(LensLayers, FlareIsTheSameOnAnyNumberOfThreads) {
+  SKIP_UNDER_SANITIZERS("GlareLightTracer.SameOnAnyNumberOfThreads and LensLayers.OneWavelengthBandKeepsWhiteLightWhite");
   // Coarse bundles and few wavelengths: the same code paths as fine ones, at a third of the cost.
   const std::string xml = LayerScene(R"(<boolean name="ghosts" value="true"/><string name="diffraction" value="emitters"/>
       <integer name="ghost_grid" value="8"/><integer name="flare_wavelengths" value="3"/>)",

@@ -13,6 +13,7 @@
 #include "base/rng.h"
 #include "image_estimates.h"
 #include "render_helpers.h"
+#include "sanitizer_build.h"
 #include "scene/analytic_shape.h"
 #include "scene/infinite_light.h"
 #include "scene/texture.h"
@@ -80,6 +81,8 @@ TEST(LightTracer, PointSpotAndDirectionalLightsMatchThePathTracer) {
 }
 
 TEST(LightTracer, ThinLensAndRealLensMatchThePathTracer) {
+  SKIP_UNDER_SANITIZERS("CameraImportance.PinholeAndThinLensLightTracedMatchTheirCameraRays and "
+                        "CameraImportance.LightTracedImageMatchesTheCameraRays");
   const char* light = R"(<emitter type="point"><point name="position" x="-0.3" y="1.6" z="0.2"/>
     <rgb name="intensity" value="2, 2, 2"/></emitter>)";
   ExpectSameAsPathTracer(R"(<sensor type="thinlens"><float name="fov" value="45"/>

@@ -163,7 +163,8 @@ std::string Sensor(int spp, int size = 24, const std::string& extra = "", int se
 }
 
 // A camera sees a lamp of radiance 1 through a unit slab of fog (a cube with a null boundary)
-// that absorbs only: every pixel reads exp(-sigma_t).
+// that absorbs only: every pixel reads exp(-sigma_t). A narrow field of view (2 degrees): a ray
+// at angle theta crosses 1 / cos(theta) of the slab, at 30 degrees 2.3% more on the average.
 TEST(Media, CameraSeesALampThroughFogAttenuatedByItsTransmittance) {
   for (float sigma : {0.4f, 1.5f}) {
     const std::string xml = fmt::format(R"(<scene version="3.0.0">{}
@@ -174,7 +175,7 @@ TEST(Media, CameraSeesALampThroughFogAttenuatedByItsTransmittance) {
     <medium type="homogeneous" name="interior"><float name="sigma_t" value="{}"/><float name="albedo" value="0"/></medium>
   </shape>
 </scene>)",
-                                        Sensor(256, 16), sigma);
+                                        Sensor(256, 16, "", 0, 2), sigma);
     const test::RenderResult r = RenderXml(xml);
     for (int c = 0; c < 3; ++c) {
       const test::MeanSe m = ChannelMean(r.image, c);
@@ -189,7 +190,9 @@ TEST(Media, CameraSeesALampThroughFogAttenuatedByItsTransmittance) {
 // A slab that only absorbs takes no random decision: each pixel of the camera's view of the lamp
 // through it is the same pixel without the slab times exp(-sigma_t) (the same wavelengths and
 // lens samples; only the spectral sampling's colour noise, common to both, is left). Free-flight
-// sampling would let a pixel's samples through all or nothing.
+// sampling would let a pixel's 4 samples through all or nothing (ratios 0, 1/4, ...). A field of
+// view of 2 degrees: the rays cross at most 1 / cos(1.4 deg) = 1 + 3e-4 of the slab, which moves
+// the ratio by at most 1.1e-4.
 TEST(Media, PureAbsorberDimsEveryPixelByItsTransmittanceWithoutNoise) {
   const float sigma = 0.8f;
   auto render = [&](const std::string& slab) {
@@ -197,7 +200,7 @@ TEST(Media, PureAbsorberDimsEveryPixelByItsTransmittanceWithoutNoise) {
   <shape type="rectangle"><transform name="to_world"><scale value="10"/><translate z="-3"/></transform>
     <emitter type="area"><rgb name="radiance" value="1, 0.7, 0.4"/></emitter></shape>{}
 </scene>)",
-                                 Sensor(4, 12), slab));
+                                 Sensor(4, 12, "", 0, 2), slab));
   };
   const test::RenderResult open = render("");
   const test::RenderResult slab = render(fmt::format(R"(
@@ -214,7 +217,7 @@ TEST(Media, PureAbsorberDimsEveryPixelByItsTransmittanceWithoutNoise) {
         ASSERT_GT(a, 0.f);
         worst = std::max(worst, std::abs(double(b) / a - std::exp(-double(sigma))));
       }
-  EXPECT_LT(worst, 1e-5) << "largest deviation of a pixel's ratio from exp(-sigma_t)";
+  EXPECT_LT(worst, 1.5e-4) << "largest deviation of a pixel's ratio from exp(-sigma_t)";
 }
 
 // The same slab with a coloured sigma_t, against Beer-Lambert absorption inside a dielectric

@@ -59,9 +59,6 @@ TEST(Parser, BadInputNamesFileAndLine) {
       {Wrap("<shape type=\"sphere\"><bsdf type=\"roughplastic\">\n<spectrum name=\"diffuse_reflectance\" "
             "value=\"400:0.5, 700:1.3\"/></bsdf></shape>"),
        5, "reflectance 'diffuse_reflectance' must lie in [0, 1]"},
-      {Wrap("<shape type=\"sphere\"><bsdf type=\"diffuse\">\n<spectrum name=\"reflectance\" value=\"400:0.5, 700:-0.1\"/>"
-            "</bsdf></shape>"),
-       5, "must lie in [0, 1]"},
       {Wrap("<shape type=\"sphere\"><bsdf type=\"dielectric\">\n<string name=\"int_ior\" value=\"unobtainium\"/></bsdf></shape>"),
        5, "unknown index of refraction"},
       {Wrap("<shape type=\"sphere\"><bsdf type=\"dielectric\">\n<string name=\"int_ior\" value=\"SCHOTT:N-NOPE\"/></bsdf></shape>"),

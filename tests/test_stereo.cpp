@@ -15,6 +15,7 @@
 #include "io/anaglyph.h"
 #include "image_estimates.h"
 #include "render_helpers.h"
+#include "sanitizer_build.h"
 
 namespace objektiv {
 namespace {
@@ -246,6 +247,7 @@ std::vector<double> Blocks(const Image& img, Vec2i origin, int w, int h, bool mi
 // The real lens in a rig renders: nearly every camera ray passes, and the symmetric scene's
 // left image is the right one mirrored (within the noise).
 TEST(Stereo, RealLensRigRendersSymmetricImages) {
+  SKIP_UNDER_SANITIZERS("Stereo.LightTracingThroughTheRigMatchesThePathTracer and Stereo.RealLensEyesConvergeBySensorShift");
   const std::string inner = R"(type="realistic"><string name="lens" value="dgauss.50mm"/><float name="fnumber" value="5.6"/>
       <float name="focus_distance" value="3"/><float name="sensor_width" value="24"/><float name="sensor_height" value="24"/>)";
   const std::string props = R"(<float name="convergence_distance" value="3.2"/>)";

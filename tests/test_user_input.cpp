@@ -108,7 +108,7 @@ TEST(KnownTypes, ErrorsListEveryRegisteredType) {
   EXPECT_NE(unknown("<bsdf type=\"velvet\"/>").find("twosided"), std::string::npos);
   for (const char* type : {"blendbsdf, bumpmap", "mask, normalmap", "roughdielectric, roughplastic"})
     EXPECT_NE(unknown("<bsdf type=\"velvet\"/>").find(type), std::string::npos) << type;
-  EXPECT_NE(unknown("<integrator type=\"bdpt\"/>").find("(known: aov, direct, path, ptracer, whitted)"), std::string::npos);
+  EXPECT_NE(unknown("<integrator type=\"bdpt\"/>").find("(known: aov, direct, path, ptracer, sppm, whitted)"), std::string::npos);
   std::string msg = ErrorOf([] { LoadSceneFromString("<scene>\n<sensor type=\"fisheye\"/>\n</scene>", "k.xml", {}); });
   EXPECT_NE(msg.find("(known: orthographic, perspective, realistic, stereo, thinlens)"), std::string::npos) << msg;
   msg = ErrorOf([] {

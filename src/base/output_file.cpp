@@ -135,7 +135,12 @@ void RemovePendingTemporaryFile() {
 
 void RemoveStaleTemporaries(const std::string& path) {
   const fs::path target = Target(path);
-  const std::string prefix = "." + target.filename().string() + "." + HostName() + "-";
+  // (Built by appending: GCC 12 warns falsely of an overlapping copy in "." + std::string&&.)
+  std::string prefix = ".";
+  prefix += target.filename().string();
+  prefix += '.';
+  prefix += HostName();
+  prefix += '-';
   std::error_code ec;
   for (const fs::directory_entry& e : fs::directory_iterator(DirectoryOf(target), ec)) {
     const std::string name = e.path().filename().string();
