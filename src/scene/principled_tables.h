@@ -1,0 +1,38 @@
+// The directional albedos the `principled` BSDF (scene/principled_bxdf.h) needs to be energy
+// conserving, integrated numerically once and interpolated (scene/principled_tables.cpp).
+//
+// For a GGX lobe of roughness alpha seen at mu = cos(theta_o), with visible normals m drawn from
+// D_wo(m) = G1(wo) D(m) |wo.m| / mu and wi = reflect(wo, m), the albedo
+// int F D G / (4 mu cos_i) cos_i dwi is the mean of F(wo.m) G(wo, wi) / G1(wo). Tabulated:
+//   DielectricAlbedo(mu, alpha): F = the exact dielectric Fresnel of the material's eta;
+//   SchlickScale/SchlickBias(mu, alpha): F = Schlick's F0 + (1 - F0) (1 - c)^5 splits into
+//     F0 * mean((1 - (1 - c)^5) G/G1) + mean((1 - c)^5 G/G1), so a coloured F0 needs no table;
+//   ClearcoatAlbedo(mu, gloss): the clearcoat lobe (GTR1, Schlick F0 = 0.04, separable Smith
+//     G with alpha 0.25) with unit weight, integrated by its own (D cos) sampling;
+//   DiffuseNorm(roughness, sheen): max(1, max_mu A_diff(mu; r) + sheen max_mu A_sheen(mu)), the
+//     largest directional albedo of Disney's diffuse (with retro-reflection) and of the sheen
+//     lobe for a white base, over which the BSDF divides them so that they never reflect more
+//     than arrives. A_diff grows with roughness, so the table is read at the node above r.
+// alpha spans [0, 3.2] (the anisotropic principled stretches r^2 up to r^2 / sqrt(0.1)).
+#pragma once
+#include <vector>
+
+namespace objektiv {
+
+class PrincipledTables {
+ public:
+  explicit PrincipledTables(float eta);  // eta > 1
+
+  float eta() const { return eta_; }
+  float DielectricAlbedo(float mu, float alpha) const;
+  float SchlickScale(float mu, float alpha) const;
+  float SchlickBias(float mu, float alpha) const;
+  static float ClearcoatAlbedo(float mu, float gloss);
+  static float DiffuseNorm(float roughness, float sheen);
+
+ private:
+  float eta_;
+  std::vector<float> dielectric_;  // [alpha node][mu node]
+};
+
+}  // namespace objektiv
