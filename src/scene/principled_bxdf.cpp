@@ -109,13 +109,14 @@ float PrincipledBxDF::SpecularNormalPdf(const Vec3f& wo, const Vec3f& m) const {
 SampledSpectrum PrincipledBxDF::DiffusePart(const Vec3f& wo, const Vec3f& wi) const {
   const float brdf = (1 - metallic) * (1 - spec_trans);
   if (wo.z <= 0 || wi.z <= 0 || brdf <= 0) return {};
-  const float norm = PrincipledTables::DiffuseNorm(roughness, sheen);
   SampledSpectrum d = base * (principled::DisneyDiffuse(wo, wi, roughness) * kInvPi);
   if (sheen > 0) {
     const float fh = principled::SheenWeight(wo, wi);
     for (int i = 0; i < kSpectrumSamples; ++i) d[i] += sheen * (1 + sheen_tint * (tint[i] - 1)) * fh;
   }
-  return d * SpecularPass(wo) * SpecularPass(wi) * (brdf * ClearcoatPass(wo.z) * ClearcoatPass(wi.z) / norm);
+  const float scale = PrincipledTables::DiffuseScale(wo.z, roughness, sheen) *
+                      PrincipledTables::DiffuseScale(wi.z, roughness, sheen);
+  return d * SpecularPass(wo) * SpecularPass(wi) * (brdf * ClearcoatPass(wo.z) * ClearcoatPass(wi.z) * scale);
 }
 
 PrincipledBxDF::Evaluation PrincipledBxDF::Evaluate(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const {
@@ -195,6 +196,7 @@ std::optional<BSDFSample> PrincipledBxDF::Sample(const Vec3f& wo, float uc, Vec2
     // The remaining share of uc, rescaled to [0, 1), chooses reflection or refraction.
     const float uc2 = std::min((uc - p.diffuse - p.clearcoat) / p.specular, 0x1.fffffep-1f);
     const Vec3f m = sample_visible ? distrib_.SampleVisible(wo, u) : distrib_.SampleVisible(Vec3f(0, 0, 1), u);
+    if (Dot(wo, m) * wo.z <= 0) return std::nullopt;  // a facet wo sees from behind (D cos sampling)
     const float f_diel = FresnelDielectric(Dot(wo, m), Eta());
     const float p_refract = front ? (1 - metallic) * spec_trans * (1 - f_diel) : 1 - f_diel;
     if (uc2 < p_refract) {

@@ -36,8 +36,11 @@
 //   - the diffuse and sheen lie under the dielectric specular: scaled by Ts(wo) Ts(wi), Ts = 1 -
 //     E_p(mu, alpha_w) per wavelength (E_p: the albedo of the F_p lobe, from tables, alpha_w
 //     the GGX roughness projected on w's azimuth);
-//   - the diffuse and sheen together are divided by PrincipledTables::DiffuseNorm (>= 1), and the
-//     sheen is weighted by brdf, not (1 - metallic), so that the glass part stays Fresnel-split;
+//   - the diffuse and sheen together are scaled by s(mu_o) s(mu_i), s = min(1, 1 / their
+//     white albedo at mu) (PrincipledTables::DiffuseScale): darker than Mitsuba's where Disney's
+//     diffuse reflects more than arrives (rough surfaces, toward grazing), unchanged elsewhere;
+//     and the sheen is weighted by brdf, not (1 - metallic), so that the glass part stays
+//     Fresnel-split;
 //   - the transmission takes 1 - F_p (the tinted reflectance) instead of 1 - F_diel, so that
 //     reflection plus transmission never exceed 1 (Schlick exceeds the exact Fresnel near
 //     grazing by up to 0.036 at eta 1.5);

@@ -61,11 +61,11 @@ std::array<float, 3> GgxAlbedos(float mu, float alpha, float eta) {
 }
 
 struct GlobalTables {
-  std::vector<float> scale, bias, clearcoat;
-  std::array<float, kRough> diffuse_max{};
-  float sheen_max = 0;
+  std::vector<float> scale, bias, clearcoat, diffuse, sheen;
 
-  GlobalTables() : scale(size_t(kAlpha) * kMu), bias(size_t(kAlpha) * kMu), clearcoat(size_t(kGloss) * kMu) {
+  GlobalTables()
+      : scale(size_t(kAlpha) * kMu), bias(size_t(kAlpha) * kMu), clearcoat(size_t(kGloss) * kMu),
+        diffuse(size_t(kRough) * kMu), sheen(2 * kMu) {
     for (int j = 0; j < kAlpha; ++j)
       for (int i = 0; i < kMu; ++i) {
         const std::array<float, 3> a = GgxAlbedos(MuNode(i), AlphaNode(j), 0);
@@ -74,8 +74,8 @@ struct GlobalTables {
       }
     for (int j = 0; j < kGloss; ++j)
       for (int i = 0; i < kMu; ++i) clearcoat[size_t(j) * kMu + i] = Clearcoat(MuNode(i), float(j) / (kGloss - 1));
-    // The largest albedos of the white diffuse and of the sheen, over the mu nodes (cosine
-    // sampling: the estimator is pi f).
+    // The albedos of the white diffuse (every roughness node at once) and of the sheen, by
+    // cosine sampling (the estimator is pi f).
     for (int i = 0; i < kMu; ++i) {
       const Vec3f wo = Outgoing(MuNode(i));
       std::array<double, kRough> d{};
@@ -88,8 +88,8 @@ struct GlobalTables {
           s += kPi * principled::SheenWeight(wo, wi);
         }
       const double n = double(kGrid) * kGrid;
-      for (int r = 0; r < kRough; ++r) diffuse_max[r] = std::max(diffuse_max[r], float(d[r] / n));
-      sheen_max = std::max(sheen_max, float(s / n));
+      for (int r = 0; r < kRough; ++r) diffuse[size_t(r) * kMu + i] = float(d[r] / n);
+      sheen[i] = sheen[kMu + i] = float(s / n);  // two equal rows, for Lookup
     }
   }
 
@@ -133,11 +133,11 @@ float PrincipledTables::SchlickScale(float mu, float alpha) const { return Looku
 float PrincipledTables::SchlickBias(float mu, float alpha) const { return Lookup(Global().bias, kAlpha, AlphaX(alpha), mu); }
 float PrincipledTables::ClearcoatAlbedo(float mu, float gloss) { return Lookup(Global().clearcoat, kGloss, gloss, mu); }
 
-float PrincipledTables::DiffuseNorm(float roughness, float sheen) {
+float PrincipledTables::DiffuseScale(float mu, float roughness, float sheen) {
   const GlobalTables& g = Global();
-  // The node at or above r: the diffuse albedo grows with roughness.
-  const int r = std::clamp(int(std::ceil(std::clamp(roughness, 0.f, 1.f) * (kRough - 1) - 1e-4f)), 0, kRough - 1);
-  return std::max(1.f, g.diffuse_max[r] + std::max(sheen, 0.f) * g.sheen_max);
+  // (Linear in the roughness, between nodes: the albedo is convex in it, so this overestimates.)
+  const float albedo = Lookup(g.diffuse, kRough, roughness, mu) + std::max(sheen, 0.f) * Lookup(g.sheen, 2, 0, mu);
+  return albedo > 1 ? 1 / albedo : 1.f;
 }
 
 }  // namespace objektiv

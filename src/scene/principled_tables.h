@@ -9,10 +9,11 @@
 //     F0 * mean((1 - (1 - c)^5) G/G1) + mean((1 - c)^5 G/G1), so a coloured F0 needs no table;
 //   ClearcoatAlbedo(mu, gloss): the clearcoat lobe (GTR1, Schlick F0 = 0.04, separable Smith
 //     G with alpha 0.25) with unit weight, integrated by its own (D cos) sampling;
-//   DiffuseNorm(roughness, sheen): max(1, max_mu A_diff(mu; r) + sheen max_mu A_sheen(mu)), the
-//     largest directional albedo of Disney's diffuse (with retro-reflection) and of the sheen
-//     lobe for a white base, over which the BSDF divides them so that they never reflect more
-//     than arrives. A_diff grows with roughness, so the table is read at the node above r.
+//   DiffuseScale(mu, roughness, sheen): s(mu) = min(1, 1 / (A_diff(mu; r) + sheen A_sheen(mu))),
+//     from the directional albedos of Disney's diffuse (with retro-reflection, above 1 for rough
+//     surfaces) and of the sheen lobe for a white base. The BSDF scales the two by s(mu_o)
+//     s(mu_i): reciprocal, and as s(mu_i) <= 1 the albedo at mu_o is at most s(mu_o) A(mu_o) <= 1,
+//     while directions whose albedo is below 1 keep nearly all of it.
 // alpha spans [0, 3.2] (the anisotropic principled stretches r^2 up to r^2 / sqrt(0.1)).
 #pragma once
 #include <vector>
@@ -28,7 +29,7 @@ class PrincipledTables {
   float SchlickScale(float mu, float alpha) const;
   float SchlickBias(float mu, float alpha) const;
   static float ClearcoatAlbedo(float mu, float gloss);
-  static float DiffuseNorm(float roughness, float sheen);
+  static float DiffuseScale(float mu, float roughness, float sheen);
 
  private:
   float eta_;
