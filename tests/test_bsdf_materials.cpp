@@ -314,7 +314,9 @@ TEST(BsdfMaterials, PrincipledLoaderErrorsNameTheLine) {
                   "either eta or specular");
   ExpectLoadError(R"(<bsdf type="principled"><float name="main_specular_sampling_rate" value="0"/></bsdf>)",
                   "main_specular_sampling_rate must be positive");
-  ExpectLoadError(R"(<bsdf type="principled"><float name="flatness" value="0.5"/></bsdf>)", "flatness");
+  ExpectLoadError(R"(<bsdf type="principled"><float name="flatness" value="0.5"/></bsdf>)",
+                  "'flatness' belongs to Mitsuba's principledthin");
+  ExpectLoadError(R"(<bsdf type="principled"><float name="diff_trans" value="0.5"/></bsdf>)", "'diff_trans' belongs");
   ExpectLoadError(R"(<bsdf type="principledthin"><float name="flatness" value="0.5"/></bsdf>)",
                   "'principledthin' (Mitsuba's thin principled");
   ExpectLoadError(R"(<bsdf type="twosided"><bsdf type="principledthin"/></bsdf>)", "not supported");

@@ -205,6 +205,9 @@ std::shared_ptr<const SpectrumTexture> GetWeight(const Properties& p, const std:
 // sqrt(0.08 s)) - 1, so s in (0, 12.5)), the other parameters numbers in [0, 1] or textures.
 std::shared_ptr<Material> MakePrincipled(const Properties& p, LoaderContext& ctx) {
   PrincipledMaterial::Parameters m;
+  for (const char* thin : {"flatness", "diff_trans"})
+    if (p.Has(thin))
+      throw ErrorAt(p.LocOf(thin), "principled: '{}' belongs to Mitsuba's principledthin, which is not supported", thin);
   if (p.Has("eta") && p.Has("specular"))
     throw ErrorAt(p.LocOf("specular"), "principled: give either eta or specular, not both");
   if (p.Has("eta")) {
@@ -402,7 +405,9 @@ const MaterialRegistry& MaterialPlugins() {
             {"diffuse_reflectance_sampling_rate", PropType::kFloat},
             {"main_specular_sampling_rate", PropType::kFloat},
             {"clearcoat_sampling_rate", PropType::kFloat},
-            {"sample_visible", PropType::kBoolean}},
+            {"sample_visible", PropType::kBoolean},
+            {"flatness", PropType::kSpectrumOrTexture},
+            {"diff_trans", PropType::kSpectrumOrTexture}},
            MakePrincipled},
           {"blendbsdf", {{"bsdf", PropType::kObject}, {"weight", PropType::kSpectrumOrTexture}}, MakeBlend},
           {"mask", {{"bsdf", PropType::kObject}, {"opacity", PropType::kSpectrumOrTexture}}, MakeMask},

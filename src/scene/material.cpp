@@ -110,7 +110,7 @@ float ScalarParameter(const SpectrumTexture& t, Vec2f uv) {
 
 BSDF PrincipledMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const {
   PrincipledBxDF b;
-  b.tables = &tables_;
+  b.tables = tables_.get();
   b.base = p_.base_color->Evaluate(si.uv, lambda);
   for (int i = 0; i < kSpectrumSamples; ++i) b.base[i] = Clamp(b.base[i], 0, 1);
   // Mitsuba's tint colour base / luminance(base), per wavelength (see PrincipledBxDF).

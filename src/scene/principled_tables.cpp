@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
+#include <mutex>
 
 #include "base/fresnel_dielectric.h"
 #include "base/sampling.h"
@@ -126,6 +128,15 @@ PrincipledTables::PrincipledTables(float eta) : eta_(eta), dielectric_(size_t(kA
   Global();
   for (int j = 0; j < kAlpha; ++j)
     for (int i = 0; i < kMu; ++i) dielectric_[size_t(j) * kMu + i] = GgxAlbedos(MuNode(i), AlphaNode(j), eta)[0];
+}
+
+std::shared_ptr<const PrincipledTables> PrincipledTables::For(float eta) {
+  static std::mutex mutex;
+  static std::map<float, std::weak_ptr<const PrincipledTables>> made;
+  const std::lock_guard<std::mutex> lock(mutex);
+  std::shared_ptr<const PrincipledTables> t = made[eta].lock();
+  if (!t) made[eta] = t = std::make_shared<const PrincipledTables>(eta);
+  return t;
 }
 
 float PrincipledTables::DielectricAlbedo(float mu, float alpha) const { return Lookup(dielectric_, kAlpha, AlphaX(alpha), mu); }

@@ -16,6 +16,7 @@
 //     while directions whose albedo is below 1 keep nearly all of it.
 // alpha spans [0, 3.2] (the anisotropic principled stretches r^2 up to r^2 / sqrt(0.1)).
 #pragma once
+#include <memory>
 #include <vector>
 
 namespace objektiv {
@@ -23,6 +24,8 @@ namespace objektiv {
 class PrincipledTables {
  public:
   explicit PrincipledTables(float eta);  // eta > 1
+  // The tables of eta, shared by every material of that eta (made once, ~0.1 s each).
+  static std::shared_ptr<const PrincipledTables> For(float eta);
 
   float eta() const { return eta_; }
   float DielectricAlbedo(float mu, float alpha) const;
