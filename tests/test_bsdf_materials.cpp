@@ -230,7 +230,7 @@ const char* kPrincipled = R"(<bsdf type="principled"><rgb name="base_color" valu
 TEST(BsdfMaterials, PrincipledAgreesBetweenPathAndLightTracer) {
   const std::string wrapped = std::string(R"(<bsdf type="normalmap"><rgb name="normalmap" value="0.6, 0.45, 0.9"/>
     <bsdf type="blendbsdf"><float name="weight" value="0.5"/>)") + kPrincipled +
-                              R"(<bsdf type="principled"><float name="spec_trans" value="0.7"/><float name="roughness" value="0.3"/>
+                              R"(<bsdf type="principled"><float name="spec_trans" value="0.5"/><float name="roughness" value="0.7"/>
       <float name="anisotropic" value="0.5"/></bsdf></bsdf></bsdf>)";
   for (const std::string& bsdf : {std::string(kPrincipled), wrapped}) {
     const Estimate path = Estimated([&](int seed) {
@@ -248,7 +248,8 @@ TEST(BsdfMaterials, PrincipledAgreesBetweenPathAndLightTracer) {
 // classic tracer renders it (glossy: lights sampled and BSDF-sampled, no NaN, not black).
 TEST(BsdfMaterials, PrincipledRendersInTheOtherIntegratorsAndWrappers) {
   const std::string bsdf = std::string(R"(<bsdf type="mask"><float name="opacity" value="1"/>
-    <bsdf type="bumpmap"><texture type="checkerboard"><float name="color0" value="0"/><float name="color1" value="0.2"/></texture>)") +
+    <bsdf type="bumpmap"><float name="scale" value="0.5"/><texture type="bitmap"><string name="filename" value=")" +
+                           std::string(OBJEKTIV_SCENES_DIR) + R"(/bump/textures/tile-height.png"/></texture>)") +
                            kPrincipled + "</bsdf></bsdf>";
   const Estimate direct = Estimated([&](int seed) { return BallScene(Integrator("direct"), bsdf, 8, seed); });
   const Estimate path = Estimated([&](int seed) {
