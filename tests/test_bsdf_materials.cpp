@@ -1,8 +1,11 @@
 // The materials roughplastic, blendbsdf and mask in scenes: masks let rays through alike for
 // camera paths, light paths and shadow rays (an image through a mask equals the image of the
 // light dimmed by its opacity, in every integrator); a blend of weight 0 or 1 renders as its
-// part; rough plastic renders in every integrator; the loader's checks at file:line.
+// part; rough plastic and principled render in every integrator; the loader's checks at
+// file:line.
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -221,6 +224,50 @@ TEST(BsdfMaterials, RoughPlasticAndBlendsAgreeBetweenPathAndLightTracer) {
   }
 }
 
+// The principled BSDF (clearcoat, sheen, a little metal; and a half-transmissive one inside a
+// normal-mapped blend) renders alike in the path and light tracers.
+const char* kPrincipled = R"(<bsdf type="principled"><rgb name="base_color" value="0.7, 0.3, 0.1"/>
+    <float name="roughness" value="0.4"/><float name="metallic" value="0.2"/><float name="clearcoat" value="1"/>
+    <float name="clearcoat_gloss" value="0.5"/><float name="sheen" value="1"/><float name="spec_tint" value="0.5"/></bsdf>)";
+
+TEST(BsdfMaterials, PrincipledAgreesBetweenPathAndLightTracer) {
+  const std::string wrapped = std::string(R"(<bsdf type="normalmap"><rgb name="normalmap" value="0.6, 0.45, 0.9"/>
+    <bsdf type="blendbsdf"><float name="weight" value="0.5"/>)") + kPrincipled +
+                              R"(<bsdf type="principled"><float name="spec_trans" value="0.5"/><float name="roughness" value="0.7"/>
+      <float name="anisotropic" value="0.5"/></bsdf></bsdf></bsdf>)";
+  for (const std::string& bsdf : {std::string(kPrincipled), wrapped}) {
+    const Estimate path = Estimated([&](int seed) {
+      return BallScene(R"(<integrator type="path"><integer name="max_depth" value="3"/></integrator>)", bsdf, 16, seed);
+    });
+    const Estimate light = Estimated([&](int seed) {
+      return BallScene(R"(<integrator type="ptracer"><integer name="max_depth" value="3"/></integrator>)", bsdf, 64, seed);
+    });
+    ExpectSameImage(path, light, 0.03, bsdf);
+  }
+}
+
+// Direct lighting alone: the `direct` integrator and the path tracer stopped after one bounce
+// give the same image of a principled ball (bump-mapped, under a mask of opacity 1), and the
+// classic tracer renders it (glossy: lights sampled and BSDF-sampled, no NaN, not black).
+TEST(BsdfMaterials, PrincipledRendersInTheOtherIntegratorsAndWrappers) {
+  const std::string bsdf = std::string(R"(<bsdf type="mask"><float name="opacity" value="1"/>
+    <bsdf type="bumpmap"><float name="scale" value="0.5"/><texture type="bitmap"><string name="filename" value=")" +
+                           std::string(OBJEKTIV_SCENES_DIR) + R"(/bump/textures/tile-height.png"/></texture>)") +
+                           kPrincipled + "</bsdf></bsdf>";
+  const Estimate direct = Estimated([&](int seed) { return BallScene(Integrator("direct"), bsdf, 8, seed); });
+  const Estimate path = Estimated([&](int seed) {
+    return BallScene(R"(<integrator type="path"><integer name="max_depth" value="2"/></integrator>)", bsdf, 8, seed);
+  });
+  ExpectSameImage(direct, path, 0.03, "direct vs path, depth 2");
+  const Estimate whitted = Estimated([&](int seed) { return BallScene(Integrator("whitted"), bsdf, 4, seed); });
+  double total = 0;
+  for (double v : whitted.mean) {
+    EXPECT_TRUE(std::isfinite(v));
+    total += v;
+  }
+  EXPECT_GT(total, 0);
+}
+
 // --- the loader's checks -------------------------------------------------------------------
 
 void ExpectLoadError(const std::string& bsdf, const std::string& part, const std::string& emitter = "") {
@@ -259,6 +306,24 @@ TEST(BsdfMaterials, LoaderErrorsNameTheLine) {
   ExpectLoadError(R"(<bsdf type="mask">)" + two + "</bsdf>", "exactly 1 nested <bsdf>, got 2");
   ExpectLoadError(R"(<bsdf type="mask"><bsdf type="diffuse"/></bsdf>)", "area emitter cannot be on a shape whose BSDF is a mask",
                   "<emitter type=\"area\"/>");
+}
+
+TEST(BsdfMaterials, PrincipledLoaderErrorsNameTheLine) {
+  ExpectLoadError(R"(<bsdf type="principled"><float name="roughness" value="1.5"/></bsdf>)", "'roughness' must lie in [0, 1]");
+  ExpectLoadError(R"(<bsdf type="principled"><rgb name="metallic" value="0.5, 2, 0"/></bsdf>)", "'metallic' must lie in [0, 1]");
+  ExpectLoadError(R"(<bsdf type="principled"><float name="sheen" value="-0.5"/></bsdf>)", "sheen");
+  ExpectLoadError(R"(<bsdf type="principled"><float name="eta" value="0.9"/></bsdf>)", "eta must lie in (1, 10]");
+  ExpectLoadError(R"(<bsdf type="principled"><float name="specular" value="0"/></bsdf>)", "specular must lie in (0, 12.5)");
+  ExpectLoadError(R"(<bsdf type="principled"><float name="eta" value="1.4"/><float name="specular" value="0.5"/></bsdf>)",
+                  "either eta or specular");
+  ExpectLoadError(R"(<bsdf type="principled"><float name="main_specular_sampling_rate" value="0"/></bsdf>)",
+                  "main_specular_sampling_rate must be positive");
+  ExpectLoadError(R"(<bsdf type="principled"><float name="flatness" value="0.5"/></bsdf>)",
+                  "'flatness' belongs to Mitsuba's principledthin");
+  ExpectLoadError(R"(<bsdf type="principled"><float name="diff_trans" value="0.5"/></bsdf>)", "'diff_trans' belongs");
+  ExpectLoadError(R"(<bsdf type="principledthin"><float name="flatness" value="0.5"/></bsdf>)",
+                  "'principledthin' (Mitsuba's thin principled");
+  ExpectLoadError(R"(<bsdf type="twosided"><bsdf type="principledthin"/></bsdf>)", "not supported");
 }
 
 TEST(BsdfMaterials, FourBsdfsInNestedBlendsAreAccepted) {

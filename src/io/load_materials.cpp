@@ -15,6 +15,15 @@
 namespace objektiv {
 namespace {
 
+// Every <bsdf> is made here: Mitsuba's thin principled variant is named, and refused, before
+// the registry would call it an unknown type.
+std::shared_ptr<Material> BuildBsdfNode(const ObjectNode& node, LoaderContext& ctx) {
+  if (node.type == "principledthin")
+    throw ErrorAt(node.loc, "bsdf type 'principledthin' (Mitsuba's thin principled, with flatness and diff_trans) is "
+                  "not supported; use 'principled' on a closed shape");
+  return MaterialPlugins().Build(node, ctx);
+}
+
 // An index of refraction given as a number or one of Mitsuba's names.
 double GetIor(const Properties& p, const std::string& name, double fallback) {
   if (!p.Has(name)) return fallback;
@@ -177,14 +186,60 @@ std::shared_ptr<Material> MakeRoughPlastic(const Properties& p, LoaderContext& c
 
 // A weight or an opacity (blendbsdf, mask): a number or colour must lie in [0, 1]; a texture's
 // values are clamped to it where they are read (TextureWeight).
-std::shared_ptr<const SpectrumTexture> GetWeight(const Properties& p, const std::string& name, LoaderContext& ctx) {
+std::shared_ptr<const SpectrumTexture> GetUnitParameter(const Properties& p, const std::string& name, float fallback,
+                                                        LoaderContext& ctx) {
   if (const std::optional<SpectrumValue> v = p.Has(name) && !p.Object(name) ? p.SpectrumProp(name) : std::nullopt) {
     const bool in_range = v->kind == SpectrumValue::Kind::kConstant ? v->value >= 0 && v->value <= 1
                           : v->kind == SpectrumValue::Kind::kRgb    ? MinComponent(v->rgb) >= 0 && MaxComponent(v->rgb) <= 1
                                                                     : true;
     if (!in_range) throw ErrorAt(p.LocOf(name), "{}: '{}' must lie in [0, 1]", p.type(), name);
   }
-  return GetTexture(p, name, SpectrumUsage::kData, 0.5f, ctx);
+  return GetTexture(p, name, SpectrumUsage::kData, fallback, ctx);
+}
+
+std::shared_ptr<const SpectrumTexture> GetWeight(const Properties& p, const std::string& name, LoaderContext& ctx) {
+  return GetUnitParameter(p, name, 0.5f, ctx);
+}
+
+// Mitsuba 3's principled: eta or specular (not both; specular s gives eta = 2 / (1 -
+// sqrt(0.08 s)) - 1, so s in (0, 12.5)), the other parameters numbers in [0, 1] or textures.
+std::shared_ptr<Material> MakePrincipled(const Properties& p, LoaderContext& ctx) {
+  PrincipledMaterial::Parameters m;
+  for (const char* thin : {"flatness", "diff_trans"})
+    if (p.Has(thin))
+      throw ErrorAt(p.LocOf(thin), "principled: '{}' belongs to Mitsuba's principledthin, which is not supported", thin);
+  if (p.Has("eta") && p.Has("specular"))
+    throw ErrorAt(p.LocOf("specular"), "principled: give either eta or specular, not both");
+  if (p.Has("eta")) {
+    const double eta = p.Float("eta");
+    if (!(eta > 1 && eta <= 10))
+      throw ErrorAt(p.LocOf("eta"), "principled: eta must lie in (1, 10] (interior over exterior index), got {}", eta);
+    m.eta = float(eta);
+  } else {
+    const double spec = p.Float("specular", 0.5);
+    if (!(spec > 0 && spec < 12.5))
+      throw ErrorAt(p.LocOf("specular"), "principled: specular must lie in (0, 12.5), got {}", spec);
+    m.eta = float(2 / (1 - std::sqrt(0.08 * spec)) - 1);
+    if (!(m.eta <= 10))
+      throw ErrorAt(p.LocOf("specular"), "principled: specular {} gives eta {} (at most 10)", spec, m.eta);
+  }
+  m.base_color = GetTexture(p, "base_color", SpectrumUsage::kAlbedo, 0.5f, ctx);
+  m.roughness = GetUnitParameter(p, "roughness", 0.5f, ctx);
+  m.anisotropic = GetUnitParameter(p, "anisotropic", 0, ctx);
+  m.metallic = GetUnitParameter(p, "metallic", 0, ctx);
+  m.spec_trans = GetUnitParameter(p, "spec_trans", 0, ctx);
+  m.spec_tint = GetUnitParameter(p, "spec_tint", 0, ctx);
+  m.sheen = GetUnitParameter(p, "sheen", 0, ctx);
+  m.sheen_tint = GetUnitParameter(p, "sheen_tint", 0, ctx);
+  m.clearcoat = GetUnitParameter(p, "clearcoat", 0, ctx);
+  m.clearcoat_gloss = GetUnitParameter(p, "clearcoat_gloss", 0, ctx);
+  m.diffuse_rate = float(p.FloatIn("diffuse_reflectance_sampling_rate", 1, 0, 1e3));
+  m.specular_rate = float(p.FloatIn("main_specular_sampling_rate", 1, 0, 1e3));
+  m.clearcoat_rate = float(p.FloatIn("clearcoat_sampling_rate", 1, 0, 1e3));
+  if (!(m.specular_rate > 0))
+    throw ErrorAt(p.LocOf("main_specular_sampling_rate"), "principled: main_specular_sampling_rate must be positive");
+  m.sample_visible = p.Bool("sample_visible", true);
+  return std::make_shared<PrincipledMaterial>(std::move(m));
 }
 
 // The nested <bsdf>s a blendbsdf or mask is made of, exactly `count` of them.
@@ -194,7 +249,7 @@ std::vector<std::shared_ptr<Material>> NestedMaterials(const Properties& p, Load
     throw ErrorAt(p.loc(), "{} needs exactly {} nested <bsdf>{}, got {}", p.type(), count, count == 1 ? "" : "s", nodes.size());
   std::vector<std::shared_ptr<Material>> out;
   for (const auto& n : nodes) {
-    std::shared_ptr<Material> m = MaterialPlugins().Build(*n, ctx);
+    std::shared_ptr<Material> m = BuildBsdfNode(*n, ctx);
     if (m->Absorption())
       throw ErrorAt(n->loc, "{} cannot hold a dielectric with absorption (the medium behind a blend or mask has no one "
                     "interior)", p.type());
@@ -256,7 +311,7 @@ std::shared_ptr<Material> MakeTwoSided(const Properties& p, LoaderContext& ctx) 
   const ObjectNode& in = *inner[0];
   if (in.type == "twosided") throw ErrorAt(in.loc, "twosided cannot wrap another twosided");
   // A private copy: the same inner BSDF may be used one-sided elsewhere.
-  std::shared_ptr<Material> m = MaterialPlugins().Build(in, ctx);
+  std::shared_ptr<Material> m = BuildBsdfNode(in, ctx);
   m->SetTwoSided(true);
   return m;
 }
@@ -266,7 +321,7 @@ std::shared_ptr<Material> MakeTwoSided(const Properties& p, LoaderContext& ctx) 
 std::shared_ptr<Material> WrappedMaterial(const Properties& p, LoaderContext& ctx) {
   auto inner = p.Children("bsdf");
   if (inner.size() != 1) throw ErrorAt(p.loc(), "{} needs exactly one nested <bsdf> to wrap, got {}", p.type(), inner.size());
-  std::shared_ptr<Material> m = MaterialPlugins().Build(*inner[0], ctx);
+  std::shared_ptr<Material> m = BuildBsdfNode(*inner[0], ctx);
   if (m->IsNull()) throw ErrorAt(inner[0]->loc, "{} cannot wrap a null BSDF (it has no surface to perturb)", p.type());
   return m;
 }
@@ -360,6 +415,26 @@ const MaterialRegistry& MaterialPlugins() {
             {"specular_reflectance", PropType::kSpectrumOrTexture},
             {"nonlinear", PropType::kBoolean}},
            MakeRoughPlastic},
+          {"principled",
+           {{"base_color", PropType::kSpectrumOrTexture},
+            {"roughness", PropType::kSpectrumOrTexture},
+            {"anisotropic", PropType::kSpectrumOrTexture},
+            {"metallic", PropType::kSpectrumOrTexture},
+            {"spec_trans", PropType::kSpectrumOrTexture},
+            {"eta", PropType::kFloat},
+            {"specular", PropType::kFloat},
+            {"spec_tint", PropType::kSpectrumOrTexture},
+            {"sheen", PropType::kSpectrumOrTexture},
+            {"sheen_tint", PropType::kSpectrumOrTexture},
+            {"clearcoat", PropType::kSpectrumOrTexture},
+            {"clearcoat_gloss", PropType::kSpectrumOrTexture},
+            {"diffuse_reflectance_sampling_rate", PropType::kFloat},
+            {"main_specular_sampling_rate", PropType::kFloat},
+            {"clearcoat_sampling_rate", PropType::kFloat},
+            {"sample_visible", PropType::kBoolean},
+            {"flatness", PropType::kSpectrumOrTexture},
+            {"diff_trans", PropType::kSpectrumOrTexture}},
+           MakePrincipled},
           {"blendbsdf", {{"bsdf", PropType::kObject}, {"weight", PropType::kSpectrumOrTexture}}, MakeBlend},
           {"mask", {{"bsdf", PropType::kObject}, {"opacity", PropType::kSpectrumOrTexture}}, MakeMask},
           {"phong",
@@ -381,7 +456,7 @@ const MaterialRegistry& MaterialPlugins() {
 
 std::shared_ptr<const Material> BuildMaterial(const ObjectNode& node, LoaderContext& ctx) {
   if (auto it = ctx.materials.find(&node); it != ctx.materials.end()) return it->second;
-  std::shared_ptr<const Material> material = MaterialPlugins().Build(node, ctx);
+  std::shared_ptr<const Material> material = BuildBsdfNode(node, ctx);
   ctx.materials[&node] = material;
   return material;
 }

@@ -20,6 +20,7 @@ SampledSpectrum BSDF::f(const Vec3f& wo_world, const Vec3f& wi_world, TransportM
     wi.z = -wi.z;
   }
   return std::visit(Overloaded{[&](const DielectricBxDF& b) { return b.f(wo, wi, mode); },
+                               [&](const PrincipledBxDF& b) { return b.f(wo, wi, mode); },
                                [&](const auto& b) { return b.f(wo, wi); }},
                     bxdf_);
 }
@@ -39,6 +40,7 @@ std::optional<BSDFSample> BSDF::Sample(const Vec3f& wo_world, float uc, Vec2f u,
   std::optional<BSDFSample> s =
       wo.z == 0 ? std::nullopt
                 : std::visit(Overloaded{[&](const DielectricBxDF& b) { return b.Sample(wo, uc, u, mode); },
+                                        [&](const PrincipledBxDF& b) { return b.Sample(wo, uc, u, mode); },
                                         [&](const auto& b) { return b.Sample(wo, uc, u); }},
                              bxdf_);
   if (s && (s->pdf == 0 || s->f.IsBlack() || s->wi.z == 0)) s.reset();
@@ -60,6 +62,7 @@ float BSDF::Pdf(const Vec3f& wo_world, const Vec3f& wi_world, TransportMode mode
     wi.z = -wi.z;
   }
   return std::visit(Overloaded{[&](const DielectricBxDF& b) { return b.Pdf(wo, wi, mode); },
+                               [&](const PrincipledBxDF& b) { return b.Pdf(wo, wi, mode); },
                                [&](const auto& b) { return b.Pdf(wo, wi); }},
                     bxdf_);
 }
@@ -73,6 +76,10 @@ BSDF::Evaluation BSDF::EvalWithPdf(const Vec3f& wo_world, const Vec3f& wi_world,
     wi.z = -wi.z;
   }
   return std::visit(Overloaded{[&](const DielectricBxDF& b) { return Evaluation{b.f(wo, wi, mode), b.Pdf(wo, wi, mode)}; },
+                               [&](const PrincipledBxDF& b) {
+                                 const PrincipledBxDF::Evaluation e = b.Evaluate(wo, wi, mode);
+                                 return Evaluation{e.f, e.pdf};
+                               },
                                [&](const auto& b) { return Evaluation{b.f(wo, wi), b.Pdf(wo, wi)}; }},
                     bxdf_);
 }

@@ -5,11 +5,12 @@
 
 #include "base/frame.h"
 #include "scene/bxdf.h"
+#include "scene/principled_bxdf.h"
 
 namespace objektiv {
 
 using BxDF = std::variant<DiffuseBxDF, DielectricBxDF, ConductorBxDF, PlasticBxDF, PhongBxDF, ThinDielectricBxDF,
-                          RoughPlasticBxDF>;
+                          RoughPlasticBxDF, PrincipledBxDF>;
 
 // The most delta lobes a BSDF has at one wo: a smooth dielectric's two, for each of the (at
 // most kMaxBlendLeaves) BSDFs a blend mixes.
@@ -55,7 +56,7 @@ class BSDF {
   // so integrators need not draw it.
   bool UsesLobeChoice() const {
     return mix_ || std::holds_alternative<RoughPlasticBxDF>(bxdf_) || std::holds_alternative<DielectricBxDF>(bxdf_) || std::holds_alternative<PlasticBxDF>(bxdf_) ||
-           std::holds_alternative<PhongBxDF>(bxdf_) || std::holds_alternative<ThinDielectricBxDF>(bxdf_);
+           std::holds_alternative<PhongBxDF>(bxdf_) || std::holds_alternative<ThinDielectricBxDF>(bxdf_) || std::holds_alternative<PrincipledBxDF>(bxdf_);
   }
   // Every delta lobe at wo, written to out (at most two for one BxDF: a smooth dielectric's
   // reflection and refraction; a blend's parts' together), for tracers that follow each of
@@ -64,7 +65,7 @@ class BSDF {
                     TransportMode mode = TransportMode::kRadiance) const;
   // The reflectance of the BSDF's diffuse part seen from wo, the share of a uniform ambient
   // light it returns: Lambert's R, Phong's kd, plastic's and rough plastic's base through
-  // their coat (pi f toward the shading normal), a blend's parts' weighted; zero for the others.
+  // their coat (pi f toward the shading normal), principled's diffuse and sheen under its layers, a blend's parts' weighted; zero for the others.
   SampledSpectrum DiffuseReflectance(const Vec3f& wo_world) const;
   const Frame& frame() const { return frame_; }
   // For a perturbed shading frame (bump and normal maps): a direction wo or wi on different
@@ -86,6 +87,7 @@ class BSDF {
   int MixSpecularLobes(const Vec3f& wo_world, SpecularLobe out[kMaxSpecularLobes], TransportMode mode) const;
   SampledSpectrum MixDiffuseReflectance(const Vec3f& wo_world) const;
   bool IsOpaque() const {
+    if (const auto* p = std::get_if<PrincipledBxDF>(&bxdf_)) return !p->Transmits();
     return !std::holds_alternative<DielectricBxDF>(bxdf_) && !std::holds_alternative<ThinDielectricBxDF>(bxdf_);
   }
   // Whether w (world; w_z its local z) passes the RequireSameSide test.

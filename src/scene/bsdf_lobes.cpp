@@ -75,6 +75,7 @@ SampledSpectrum BSDF::DiffuseReflectance(const Vec3f& wo_world) const {
   if (const auto* p = std::get_if<PhongBxDF>(&bxdf_)) return p->kd;
   if (const auto* p = std::get_if<PlasticBxDF>(&bxdf_)) return p->f(wo, Vec3f(0, 0, 1)) * kPi;
   if (const auto* p = std::get_if<RoughPlasticBxDF>(&bxdf_)) return p->DiffusePart(wo, Vec3f(0, 0, 1)) * kPi;
+  if (const auto* p = std::get_if<PrincipledBxDF>(&bxdf_)) return p->DiffusePart(wo, Vec3f(0, 0, 1)) * kPi;
   return {};
 }
 

@@ -2,6 +2,9 @@
 
 #include "scene/fresnel.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace objektiv {
 
 BSDF NullMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths&) const {
@@ -95,6 +98,38 @@ BSDF RoughPlasticMaterial::GetBSDF(const SurfaceInteraction& si, SampledWaveleng
   for (int i = 0; i < kSpectrumSamples; ++i) b.diffuse[i] = Clamp(b.diffuse[i], 0, 1);
   b.specular = specular_->Evaluate(si.uv, lambda);
   b.nonlinear = nonlinear_;
+  return BSDF(si.shading, b, two_sided_);
+}
+
+namespace {
+float ScalarParameter(const SpectrumTexture& t, Vec2f uv) {
+  const float v = Luminance(t.Rgb(uv));
+  return std::isnan(v) ? 0.f : std::clamp(v, 0.f, 1.f);
+}
+}  // namespace
+
+BSDF PrincipledMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const {
+  PrincipledBxDF b;
+  b.tables = tables_.get();
+  b.base = p_.base_color->Evaluate(si.uv, lambda);
+  for (int i = 0; i < kSpectrumSamples; ++i) b.base[i] = Clamp(b.base[i], 0, 1);
+  // Mitsuba's tint colour base / luminance(base), per wavelength (see PrincipledBxDF).
+  const float lum = Luminance(p_.base_color->Rgb(si.uv));
+  for (int i = 0; i < kSpectrumSamples; ++i) b.tint[i] = lum > 0 ? std::min(1.f, b.base[i] / lum) : 1.f;
+  b.roughness = ScalarParameter(*p_.roughness, si.uv);
+  b.anisotropic = ScalarParameter(*p_.anisotropic, si.uv);
+  b.metallic = ScalarParameter(*p_.metallic, si.uv);
+  b.spec_trans = ScalarParameter(*p_.spec_trans, si.uv);
+  b.spec_tint = ScalarParameter(*p_.spec_tint, si.uv);
+  b.sheen = ScalarParameter(*p_.sheen, si.uv);
+  b.sheen_tint = ScalarParameter(*p_.sheen_tint, si.uv);
+  b.clearcoat = ScalarParameter(*p_.clearcoat, si.uv);
+  b.clearcoat_gloss = ScalarParameter(*p_.clearcoat_gloss, si.uv);
+  b.diffuse_rate = p_.diffuse_rate;
+  b.specular_rate = p_.specular_rate;
+  b.clearcoat_rate = p_.clearcoat_rate;
+  b.sample_visible = p_.sample_visible;
+  b.Prepare();
   return BSDF(si.shading, b, two_sided_);
 }
 

@@ -127,6 +127,26 @@ class RoughPlasticMaterial final : public Material {
   bool nonlinear_;
 };
 
+// Mitsuba 3's `principled` (PrincipledBxDF): every parameter but eta may be a texture (the
+// scalar ones read as the luminance of the texture's numbers, clamped to [0, 1]); the albedo
+// tables for its eta are computed once (and shared by the materials of one eta).
+class PrincipledMaterial final : public Material {
+ public:
+  struct Parameters {
+    std::shared_ptr<const SpectrumTexture> base_color, roughness, anisotropic, metallic, spec_trans, spec_tint, sheen,
+        sheen_tint, clearcoat, clearcoat_gloss;
+    float eta = 1.5f;
+    float diffuse_rate = 1, specular_rate = 1, clearcoat_rate = 1;
+    bool sample_visible = true;
+  };
+  explicit PrincipledMaterial(Parameters p) : p_(std::move(p)), tables_(PrincipledTables::For(p_.eta)) {}
+  BSDF GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const override;
+
+ private:
+  Parameters p_;
+  std::shared_ptr<const PrincipledTables> tables_;
+};
+
 // The classic tracer's energy-conserving Blinn-Phong (PhongBxDF): where kd + ks exceeds 1 at a
 // wavelength both are scaled down to sum to 1 (the loader warns when the colours as written do).
 class PhongMaterial final : public Material {
