@@ -313,7 +313,8 @@ TEST(BsdfMaterials, PrincipledLoaderErrorsNameTheLine) {
   ExpectLoadError(R"(<bsdf type="principled"><rgb name="metallic" value="0.5, 2, 0"/></bsdf>)", "'metallic' must lie in [0, 1]");
   ExpectLoadError(R"(<bsdf type="principled"><float name="sheen" value="-0.5"/></bsdf>)", "sheen");
   ExpectLoadError(R"(<bsdf type="principled"><float name="eta" value="0.9"/></bsdf>)", "eta must lie in (1, 10]");
-  ExpectLoadError(R"(<bsdf type="principled"><float name="specular" value="0"/></bsdf>)", "specular must lie in (0, 12.5)");
+  ExpectLoadError(R"(<bsdf type="principled"><float name="specular" value="0"/></bsdf>)", "specular must lie in (0, 8.37]");
+  ExpectLoadError(R"(<bsdf type="principled"><float name="specular" value="9"/></bsdf>)", "specular must lie in (0, 8.37]");
   ExpectLoadError(R"(<bsdf type="principled"><float name="eta" value="1.4"/><float name="specular" value="0.5"/></bsdf>)",
                   "either eta or specular");
   ExpectLoadError(R"(<bsdf type="principled"><float name="main_specular_sampling_rate" value="0"/></bsdf>)",

@@ -13,6 +13,7 @@
 #include "base/rng.h"
 #include "chi2.h"
 #include "image_estimates.h"
+#include "log_capture.h"
 #include "render_helpers.h"
 #include "sanitizer_build.h"
 #include "scene/medium.h"
@@ -218,6 +219,35 @@ TEST(Media, PureAbsorberDimsEveryPixelByItsTransmittanceWithoutNoise) {
         worst = std::max(worst, std::abs(double(b) / a - std::exp(-double(sigma))));
       }
   EXPECT_LT(worst, 1.5e-4) << "largest deviation of a pixel's ratio from exp(-sigma_t)";
+}
+
+// A phase function or sample_emitters on a medium that scatters nowhere changes nothing: said.
+TEST(Media, ScatteringSettingsOfAPureAbsorberAreWarnedAbout) {
+  auto warnings = [](const std::string& medium) {
+    test::LogCapture log;
+    LoadSceneFromString(fmt::format(R"(<scene version="3.0.0">{}
+  <shape type="cube"><bsdf type="null"/>
+    <medium type="homogeneous" name="interior">{}</medium>
+  </shape>
+</scene>)",
+                                    Sensor(1, 4), medium),
+                        "absorber.xml", {});
+    return log.Text();
+  };
+  const std::string both = warnings(R"(<float name="sigma_a" value="2"/><phase type="hg"><float name="g" value="0.5"/></phase>
+      <boolean name="sample_emitters" value="false"/>)");
+  EXPECT_EQ(test::Occurrences(both, "changes nothing"), 2) << both;
+  EXPECT_NE(both.find("absorber.xml:"), std::string::npos) << both;
+  EXPECT_NE(both.find("only absorbs (it scatters nowhere), so its <phase> changes nothing"), std::string::npos) << both;
+  EXPECT_NE(both.find("so its 'sample_emitters' changes nothing"), std::string::npos) << both;
+  // Albedo 0 is a pure absorber too.
+  EXPECT_NE(warnings(R"(<float name="sigma_t" value="2"/><float name="albedo" value="0"/><phase type="isotropic"/>)")
+                .find("so its <phase> changes nothing"),
+            std::string::npos);
+  // A medium that scatters uses both: nothing said.
+  EXPECT_EQ(warnings(R"(<float name="sigma_t" value="2"/><phase type="hg"/><boolean name="sample_emitters" value="false"/>)")
+                .find("changes nothing"),
+            std::string::npos);
 }
 
 // The same slab with a coloured sigma_t, against Beer-Lambert absorption inside a dielectric

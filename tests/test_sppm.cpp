@@ -7,6 +7,7 @@
 // total must tell a stated relative error).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -196,6 +197,65 @@ TEST(Sppm, RealLensMatchesThePathTracer) {
   ExpectSameImagePrinted(path, sppm, 0.05, "room through a real lens");
 }
 
+// A crop window renders its part of the whole image, pixel for pixel: the automatic radius is
+// found over the whole film, and each pixel's photons and visible points do not depend on the
+// others'. (The radius was once found from the crop's pixels alone: a one-pixel crop got 1e-3.)
+TEST(Sppm, CropWindowRendersItsPartOfTheWholeImage) {
+  for (const std::string& integrator : {Sppm(4000, 0), Sppm(4000, 0.05f)}) {
+    const std::string full = Room(integrator, kPerspective, kAreaLight, 3, 5);
+    std::string cropped = full;
+    const std::string film_end = R"(<rfilter type="box"/></film>)";
+    cropped.replace(cropped.find(film_end), film_end.size(),
+                    R"(<integer name="crop_offset_x" value="5"/><integer name="crop_offset_y" value="9"/>
+      <integer name="crop_width" value="7"/><integer name="crop_height" value="3"/>)" + film_end);
+    const test::RenderResult a = RenderXml(full), b = RenderXml(cropped);
+    const bool crop_sized = b.image.width == 7;
+    for (int y = 0; y < 3; ++y)
+      for (int x = 0; x < 7; ++x)
+        for (int c = 0; c < 3; ++c)
+          ASSERT_EQ(a.image.At(5 + x, 9 + y, c), crop_sized ? b.image.At(x, y, c) : b.image.At(5 + x, 9 + y, c))
+              << integrator << " pixel " << 5 + x << ", " << 9 + y;
+  }
+}
+
+// Nearly smooth glossy surfaces are traced through, not made visible points (whose narrow lobe
+// would gather almost no photon): a clear principled glass ball of roughness 0 (alpha 0.001)
+// under a constant environment of radiance 1 reads 1 everywhere, as the path tracer's does.
+// (As visible points it read 0.07.) An iteration's wavelengths are the whole image's, so its
+// colour noise is common to all pixels: the noise is measured over 8 seeds, not over pixels.
+TEST(Sppm, NearlySmoothGlossyGlassInAFurnaceReadsOne) {
+  constexpr int kSeeds = 8;
+  // Per seed: the image's mean R, G, B and luminance Y.
+  double sum[4] = {}, sum2[4] = {};
+  for (int seed = 0; seed < kSeeds; ++seed) {
+    const std::string xml = fmt::format(R"(<scene version="3.0.0">
+  <integrator type="sppm"><integer name="photon_count" value="100"/></integrator>
+  <sensor type="perspective"><float name="fov" value="20"/>
+    <transform name="to_world"><lookat origin="0, 0, 4" target="0, 0, 0" up="0, 1, 0"/></transform>
+    <sampler type="independent"><integer name="sample_count" value="48"/><integer name="seed" value="{}"/></sampler>
+    <film type="hdrfilm"><integer name="width" value="12"/><integer name="height" value="12"/><rfilter type="box"/></film>
+  </sensor>
+  <emitter type="constant"><rgb name="radiance" value="1"/></emitter>
+  <shape type="sphere"><float name="radius" value="0.6"/><bsdf type="principled"><rgb name="base_color" value="1"/>
+    <float name="spec_trans" value="1"/><float name="roughness" value="0"/></bsdf></shape>
+</scene>)",
+                                        seed);
+    const test::RenderResult r = RenderXml(xml);
+    double m[4];
+    for (int c = 0; c < 3; ++c) m[c] = test::ChannelMean(r.image, c).mean;
+    m[3] = 0.2126 * m[0] + 0.7152 * m[1] + 0.0722 * m[2];
+    for (int c = 0; c < 4; ++c) sum[c] += m[c], sum2[c] += m[c] * m[c];
+  }
+  for (int c = 0; c < 4; ++c) {
+    const double mean = sum[c] / kSeeds, se = std::sqrt(std::max(0.0, sum2[c] / kSeeds - mean * mean) / (kSeeds - 1));
+    // 3e-3: the RGB round trip of the constant illuminant (as the furnace tests).
+    EXPECT_NEAR(mean, 1.0, 4 * se + 3e-3) << "channel " << "RGBY"[c];
+    // Luminance to 5%; the colours wander more (an iteration's four wavelengths are the whole
+    // image's: measured 4 sigma 10% in the blue at 48 iterations), which still tells 1 from 0.07.
+    EXPECT_LT(4 * se, c == 3 ? 0.05 : 0.2) << "channel " << "RGBY"[c];
+  }
+}
+
 // Refused with the file and line of the property, or of the integrator.
 void ExpectRefused(const std::string& integrator, const std::string& extra, const std::string& text) {
   const std::string xml = fmt::format(R"(<scene version="3.0.0">
@@ -220,8 +280,13 @@ TEST(Sppm, RefusesWhatItCannotDo) {
   ExpectRefused(R"(<integrator type="sppm"><float name="alpha" value="1"/></integrator>)", "", "alpha");
   ExpectRefused(R"(<integrator type="sppm"><float name="alpha" value="0"/></integrator>)", "", "alpha");
   ExpectRefused(R"(<integrator type="sppm"><float name="initial_radius" value="-1"/></integrator>)", "", "initial_radius");
+  ExpectRefused(R"(<integrator type="sppm"><float name="initial_radius" value="100"/></integrator>)", "",
+                "initial_radius 100 is larger than the whole scene");
+  ExpectRefused(R"(<integrator type="sppm"><float name="alpha" value="1.5"/></integrator>)", "",
+                "integrator 'sppm': alpha must lie strictly between 0 and 1");
   ExpectRefused(R"(<integrator type="sppm"><integer name="photon_count" value="0"/></integrator>)", "", "photon_count");
-  ExpectRefused(R"(<integrator type="sppm"><integer name="max_depth" value="0"/></integrator>)", "", "max_depth");
+  ExpectRefused(R"(<integrator type="sppm"><integer name="max_depth" value="0"/></integrator>)", "",
+                "integrator 'sppm': max_depth must be -1");
   ExpectRefused(R"(<integrator type="sppm"/>)", R"(<shape type="sphere"><point name="center" x="3" y="0" z="0"/>
     <bsdf type="null"/><medium type="homogeneous" name="interior"><float name="sigma_t" value="1"/></medium></shape>)", "participating media");
   ExpectRefused(R"(<integrator type="aov"><string name="aovs" value="d:depth"/><integrator type="sppm"/></integrator>)", "",

@@ -1,6 +1,7 @@
 // The <integrator> plugins: each makes an Integrator from its properties.
 #include "io/loader_context.h"
 
+#include <cmath>
 #include <limits>
 #include "render/aov.h"
 #include "render/light_tracer.h"
@@ -17,7 +18,8 @@ struct PathDepths {
 };
 PathDepths ParsePathDepths(const Properties& p) {
   const int max_depth = int(p.IntIn("max_depth", -1, -1, 1 << 20));
-  if (max_depth == 0) throw ErrorAt(p.LocOf("max_depth"), "max_depth must be -1 (unbounded) or at least 1");
+  if (max_depth == 0)
+    throw ErrorAt(p.LocOf("max_depth"), "integrator '{}': max_depth must be -1 (unbounded) or at least 1", p.type());
   return {max_depth, int(p.IntIn("rr_depth", 5, 1, 1 << 20))};
 }
 
@@ -59,10 +61,19 @@ std::unique_ptr<Integrator> MakeSppm(const Properties& p, const Scene& scene) {
   s.max_depth = d.max_depth, s.rr_depth = d.rr_depth;
   s.photon_count = p.IntIn("photon_count", s.photon_count, 1, SppmSettings::kMaxPhotonCount);
   s.initial_radius = float(p.FloatIn("initial_radius", 0, 0, std::numeric_limits<float>::max()));
+  // A radius beyond the scene's size gathers every photon at every visible point (a render
+  // that takes the square of the radius longer, and a blur of everything).
+  const float scene_size = Length(scene.bounds().hi - scene.bounds().lo);
+  if (s.initial_radius > 0 && std::isfinite(scene_size) && s.initial_radius > scene_size)
+    throw ErrorAt(p.LocOf("initial_radius"),
+                  "integrator 'sppm': initial_radius {} is larger than the whole scene (its bounds' diagonal, {:.4g}): "
+                  "give about a pixel's footprint, or 0 for the automatic radius",
+                  s.initial_radius, scene_size);
   // alpha = 1 would never shrink the radius (no convergence); 0 would keep no photon.
-  s.alpha = float(p.FloatIn("alpha", s.alpha, 0, 1));
+  s.alpha = float(p.Float("alpha", s.alpha));
   if (!(s.alpha > 0 && s.alpha < 1))
-    throw ErrorAt(p.LocOf("alpha"), "alpha must lie strictly between 0 and 1 (2/3 is usual), got {}", s.alpha);
+    throw ErrorAt(p.LocOf("alpha"), "integrator 'sppm': alpha must lie strictly between 0 and 1 (2/3 is usual), got {}",
+                  s.alpha);
   return std::make_unique<SppmIntegrator>(scene, s);
 }
 

@@ -202,7 +202,8 @@ std::shared_ptr<const SpectrumTexture> GetWeight(const Properties& p, const std:
 }
 
 // Mitsuba 3's principled: eta or specular (not both; specular s gives eta = 2 / (1 -
-// sqrt(0.08 s)) - 1, so s in (0, 12.5)), the other parameters numbers in [0, 1] or textures.
+// sqrt(0.08 s)) - 1, so eta in (1, 10] is s in (0, 8.37]), the other parameters numbers in
+// [0, 1] or textures.
 std::shared_ptr<Material> MakePrincipled(const Properties& p, LoaderContext& ctx) {
   PrincipledMaterial::Parameters m;
   for (const char* thin : {"flatness", "diff_trans"})
@@ -217,11 +218,13 @@ std::shared_ptr<Material> MakePrincipled(const Properties& p, LoaderContext& ctx
     m.eta = float(eta);
   } else {
     const double spec = p.Float("specular", 0.5);
-    if (!(spec > 0 && spec < 12.5))
-      throw ErrorAt(p.LocOf("specular"), "principled: specular must lie in (0, 12.5), got {}", spec);
-    m.eta = float(2 / (1 - std::sqrt(0.08 * spec)) - 1);
-    if (!(m.eta <= 10))
-      throw ErrorAt(p.LocOf("specular"), "principled: specular {} gives eta {} (at most 10)", spec, m.eta);
+    const double eta = spec > 0 && spec < 12.5 ? 2 / (1 - std::sqrt(0.08 * spec)) - 1 : 0;
+    if (!(eta > 1 && eta <= 10))
+      throw ErrorAt(p.LocOf("specular"),
+                    "principled: specular must lie in (0, 8.37] (it gives eta = 2 / (1 - sqrt(0.08 specular)) - 1, at "
+                    "most 10), got {}",
+                    spec);
+    m.eta = float(eta);
   }
   m.base_color = GetTexture(p, "base_color", SpectrumUsage::kAlbedo, 0.5f, ctx);
   m.roughness = GetUnitParameter(p, "roughness", 0.5f, ctx);

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include <spdlog/spdlog.h>
+
 #include "io/loader_context.h"
 
 namespace objektiv {
@@ -53,15 +55,24 @@ std::shared_ptr<const Medium> MakeHomogeneous(const Properties& p, LoaderContext
   if (!std::isfinite(scale) || scale < 0)
     throw ErrorAt(p.LocOf("scale"), "homogeneous: scale must be finite and not negative, got {}", scale);
   HGPhaseFunction phase;
-  if (const ObjectNode* node = OneChild(p, "phase")) phase = PhasePlugins().Build(*node);
+  const ObjectNode* phase_node = OneChild(p, "phase");
+  if (phase_node) phase = PhasePlugins().Build(*phase_node);
   const bool sample_emitters = p.Bool("sample_emitters", true);
-  if (coefficients)
-    return std::make_shared<Medium>(Medium::FromCoefficients(Coefficient(p, "sigma_a", 0, false, scale),
-                                                             Coefficient(p, "sigma_s", 0, false, scale), float(scale),
-                                                             phase, sample_emitters));
-  return std::make_shared<Medium>(Medium::FromExtinction(Coefficient(p, "sigma_t", 1, false, scale),
-                                                         Coefficient(p, "albedo", 0.75f, true, scale), float(scale),
-                                                         phase, sample_emitters));
+  std::shared_ptr<Medium> medium =
+      coefficients ? std::make_shared<Medium>(Medium::FromCoefficients(Coefficient(p, "sigma_a", 0, false, scale),
+                                                                       Coefficient(p, "sigma_s", 0, false, scale),
+                                                                       float(scale), phase, sample_emitters))
+                   : std::make_shared<Medium>(Medium::FromExtinction(Coefficient(p, "sigma_t", 1, false, scale),
+                                                                     Coefficient(p, "albedo", 0.75f, true, scale),
+                                                                     float(scale), phase, sample_emitters));
+  // What only a scattering medium uses, given to one that never scatters.
+  auto warn_unused = [](const Location& at, const char* what) {
+    spdlog::warn("{}:{}: homogeneous: this medium only absorbs (it scatters nowhere), so its {} changes nothing",
+                 at.file, at.line, what);
+  };
+  if (!medium->Scatters() && phase_node) warn_unused(phase_node->loc, "<phase>");
+  if (!medium->Scatters() && p.Has("sample_emitters")) warn_unused(p.LocOf("sample_emitters"), "'sample_emitters'");
+  return medium;
 }
 
 HGPhaseFunction MakeHenyeyGreenstein(const Properties& p) {

@@ -50,7 +50,7 @@ std::shared_ptr<const SpectrumTexture> GetTexture(const Properties& props, const
       if (v->kind == SpectrumValue::Kind::kRgb) return std::make_shared<ConstantTexture>(MakeSpectrum(*v, usage), v->rgb);
       if (v->kind == SpectrumValue::Kind::kConstant)
         return std::make_shared<ConstantTexture>(MakeSpectrum(*v, usage), Vec3f(v->value));
-      throw ErrorAt(props.LocOf(name), "'{}' holds data (heights or normals): give a texture, a number or an <rgb>, not a spectrum",
+      throw ErrorAt(props.LocOf(name), "'{}' holds numbers, not light (heights, normals, weights, roughness): give a texture, a number or an <rgb>, not a spectrum",
                     name);
     }
     Spectrum spectrum = MakeSpectrum(*v, usage);

@@ -23,6 +23,9 @@ class Integrator {
   // Whether it follows light through participating media and across null surfaces
   // (Scene::HasMedia): the scene loader refuses such scenes to integrators that do not.
   virtual bool RendersMedia() const { return false; }
+  // Memory it holds per pixel of the crop window during a render, beside the film (counted in
+  // the render's memory budget with the film's own, app/render_finish.cpp).
+  virtual uint64_t BytesPerPixel() const { return 0; }
   const Scene& scene() const { return scene_; }
 
  protected:

@@ -70,17 +70,25 @@ class VisiblePointGrid {
         ++count;
       }
     if (count == 0 || !(r_max > 0)) return;
-    cell_ = 2 * r_max;
+    cell_ = 2.002f * r_max;  // a little over a diameter: rounding never spreads a sphere over 3 cells
     lo_ = lo_ - Vec3f(r_max), hi_ = hi_ + Vec3f(r_max);
     buckets_ = 2 * count;
     // Counting sort of (bucket, pixel) pairs: starts_[b] .. starts_[b + 1] index entries_.
     std::vector<uint32_t> counts(buckets_ + 1, 0);
+    // The buckets of the (at most 2 x 2 x 2, room for 3 x 3 x 3) cells a point's sphere overlaps,
+    // each once: two of its cells may hash to one bucket, and a point listed twice there would
+    // take a photon twice (which once made a crop window's pixels differ from the full image's).
     auto for_each_bucket = [&](const SppmPixel& px, auto&& fn) {
       const float r = float(px.radius);
       const Vec3<int> c0 = Cell(px.vp.p - Vec3f(r)), c1 = Cell(px.vp.p + Vec3f(r));
+      size_t buckets[27];
+      int n = 0;
       for (int z = c0.z; z <= c1.z; ++z)
         for (int y = c0.y; y <= c1.y; ++y)
-          for (int x = c0.x; x <= c1.x; ++x) fn(Bucket(Vec3<int>(x, y, z)));
+          for (int x = c0.x; x <= c1.x; ++x) buckets[n++] = Bucket(Vec3<int>(x, y, z));
+      std::sort(buckets, buckets + n);
+      for (int k = 0; k < n; ++k)
+        if (k == 0 || buckets[k] != buckets[k - 1]) fn(buckets[k]);
     };
     for (const SppmPixel& px : pixels)
       if (px.vp.valid) for_each_bucket(px, [&](size_t b) { ++counts[b + 1]; });
@@ -115,28 +123,40 @@ class VisiblePointGrid {
   std::vector<uint32_t> starts_, entries_;
 };
 
-// Twice the median distance between the visible points of neighbouring pixels (the pixel to
-// the right or below, the nearer): about two pixels' footprint where most of the image is.
-float AutomaticRadius(const std::vector<SppmPixel>& pixels, int width, int height) {
+// The automatic initial radius: twice the median distance between the first surfaces seen
+// through the centres of neighbouring pixels (the pixel to the right or below, the nearer), over
+// a grid of 48 x 48 pixels spread across the whole film: about two pixels' footprint where most
+// of the image is. From the whole film, so that a crop window renders its part of the full
+// image, pixel for pixel.
+float AutomaticRadius(const Scene& scene, const Camera& camera) {
+  constexpr int kGrid = 48;
+  SampledWavelengths lambda = SampledWavelengths::SampleVisible(0.5f);
+  auto first_hit = [&](float x, float y) -> std::optional<Vec3f> {
+    SampledWavelengths l = lambda;
+    const std::optional<CameraRay> cr = camera.GenerateRay({Vec2f(x, y), Vec2f(0.5f, 0.5f)}, l);
+    if (!cr) return std::nullopt;
+    const std::optional<SurfaceInteraction> si = scene.Intersect(cr->ray);
+    if (!si) return std::nullopt;
+    return si->p;
+  };
   std::vector<float> d;
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) {
-      const VisiblePoint& a = pixels[size_t(y) * width + x].vp;
-      if (!a.valid) continue;
+  Bounds3f seen;
+  const int w = camera.width(), h = camera.height();
+  for (int gy = 0; gy < kGrid; ++gy)
+    for (int gx = 0; gx < kGrid; ++gx) {
+      const float x = std::floor((gx + 0.5f) * w / kGrid) + 0.5f, y = std::floor((gy + 0.5f) * h / kGrid) + 0.5f;
+      const std::optional<Vec3f> a = first_hit(x, y);
+      if (!a) continue;
+      seen.Extend(*a);
       float best = std::numeric_limits<float>::infinity();
-      if (x + 1 < width && pixels[size_t(y) * width + x + 1].vp.valid)
-        best = std::min(best, Length(pixels[size_t(y) * width + x + 1].vp.p - a.p));
-      if (y + 1 < height && pixels[size_t(y + 1) * width + x].vp.valid)
-        best = std::min(best, Length(pixels[size_t(y + 1) * width + x].vp.p - a.p));
+      for (const Vec2f& n : {Vec2f(x + 1, y), Vec2f(x, y + 1)})
+        if (const std::optional<Vec3f> b = first_hit(n.x, n.y)) best = std::min(best, Length(*b - *a));
       if (std::isfinite(best) && best > 0) d.push_back(best);
     }
   if (d.empty()) {
-    // No two neighbouring points (a one-pixel film): a hundredth of their spread, or of the scene.
-    Bounds3f b;
-    for (const SppmPixel& px : pixels)
-      if (px.vp.valid) b.Extend(px.vp.p);
-    const float spread = 2 * b.Radius();
-    return spread > 0 ? 0.01f * spread : 1e-3f;
+    // No two neighbouring points (a one-pixel film): a hundredth of what was seen, or of the scene.
+    const float spread = 2 * (seen.Empty() ? scene.bounds().Radius() : seen.Radius());
+    return spread > 0 && std::isfinite(spread) ? 0.01f * spread : 1e-3f;
   }
   std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
   return 2 * d[d.size() / 2];
@@ -145,6 +165,8 @@ float AutomaticRadius(const std::vector<SppmPixel>& pixels, int width, int heigh
 constexpr int kPhotonChunk = 4096;  // photons per task of the photon pass (and per deposit list)
 
 }  // namespace
+
+uint64_t SppmIntegrator::BytesPerPixel() const { return sizeof(SppmPixel); }
 
 RenderStats SppmIntegrator::RenderImage(const Camera& camera, const Sampler& sampler, Film& film,
                                         const RenderOptions& options) const {
@@ -208,12 +230,23 @@ RenderStats SppmIntegrator::RenderImage(const Camera& camera, const Sampler& sam
         SampledSpectrum L(0.f), beta = rays[i]->weight;
         Ray ray = rays[i]->ray;
         float eta_scale = 1;
+        // After a glossy bounce (BSDF-sampled, with the light sampled there too) an emitter
+        // the path meets counts by the power heuristic; at the camera or after a delta bounce
+        // in full (nothing else could find it).
+        bool full_emission = true;
+        float bsdf_pdf = 0;
+        Vec3f prev_p;
         for (int depth = 1;; ++depth) {
           ++c.rays.closest;
           const std::optional<SurfaceInteraction> si = scene_.Intersect(ray);
-          // Emitters met along the specular chain count in full (none could sample them).
           if (!si) {
-            for (const InfiniteLight* light : scene_.infinite_lights()) L += beta * light->Le(ray.d, lambda);
+            SampledSpectrum Le_sum(0.f);
+            for (const InfiniteLight* light : scene_.infinite_lights()) {
+              const SampledSpectrum Le = light->Le(ray.d, lambda);
+              if (Le.IsBlack()) continue;
+              Le_sum += full_emission ? Le : Le * PowerHeuristic(bsdf_pdf, scene_.LightPmf(light) * light->PdfLi(ray.d));
+            }
+            L += beta * Le_sum;
             if (depth == 1 && keep_emitted) {
               const Vec3f xyz = SampledToXYZ(L, lambda);
               for (int k = 0; k < 3; ++k) px.emitted[k] += double(w) * xyz[k];
@@ -221,26 +254,31 @@ RenderStats SppmIntegrator::RenderImage(const Camera& camera, const Sampler& sam
             break;
           }
           beta *= SegmentTransmittance(ray, *si, lambda);
-          const SampledSpectrum Le = beta * EmittedRadiance(*si, lambda);
-          L += Le;
+          SampledSpectrum Le = EmittedRadiance(*si, lambda);
+          if (!Le.IsBlack() && !full_emission) Le *= PowerHeuristic(bsdf_pdf, AreaLightPdf(scene_, prev_p, *si));
+          L += beta * Le;
           if (depth == 1 && keep_emitted) {
-            const Vec3f xyz = SampledToXYZ(Le, lambda);
+            const Vec3f xyz = SampledToXYZ(beta * Le, lambda);
             for (int k = 0; k < 3; ++k) px.emitted[k] += double(w) * xyz[k];
           }
           const Material* material = si->shape->material.get();
           if (!material) break;
           const BSDF bsdf = material->GetBSDF(*si, lambda);
           const int flags = bsdf.Flags();
-          const bool scatters = flags & (kDiffuse | kGlossy);
-          bool make_point = scatters;
+          // The visible point: the first surface with a diffuse lobe, or a glossy one where the
+          // path may not grow beyond the next segment. Glossy surfaces are traced through (a
+          // nearly smooth lobe would receive almost no photon in its narrow cone).
+          const bool point_here = (flags & kDiffuse) || ((flags & kGlossy) && !max_depth_allows(depth + 2));
+          bool make_point = point_here;
           SampledSpectrum point_weight(1.f);
-          if (scatters && (flags & kSpecular)) {
+          if (point_here && (flags & kSpecular)) {
             // Delta and non-delta lobes: the visible point here, or on along a delta lobe.
             make_point = sp.Get1D() < 0.5f;
             point_weight = SampledSpectrum(2.f);
           }
           if (make_point) {
-            // The direct light by light sampling (the photons leave it out), then the point.
+            // The direct light by light sampling alone (the path ends here; the photons leave
+            // the direct light out), then the point.
             if (max_depth_allows(depth + 1)) {
               const float ul = scene_.lights().size() > 1 ? sp.Get1D() : 0.5f;
               const Vec2f u = sp.Get2D();
@@ -256,7 +294,7 @@ RenderStats SppmIntegrator::RenderImage(const Camera& camera, const Sampler& sam
           }
           if (!max_depth_allows(depth + 1)) break;
           Vec3f wi;
-          if (scatters) {
+          if (point_here) {
             // Along one of the delta lobes, chosen uniformly (the other half: the point above).
             SpecularLobe lobes[kMaxSpecularLobes];
             const int n = bsdf.SpecularLobes(si->wo, lobes);
@@ -264,14 +302,26 @@ RenderStats SppmIntegrator::RenderImage(const Camera& camera, const Sampler& sam
             const int k = std::min(int(sp.Get1D() * n), n - 1);
             beta *= lobes[k].weight * (2.f * n);
             wi = lobes[k].wi;
+            full_emission = true;
           } else {
+            // A glossy (or delta) surface: the light sampled here by MIS against the BSDF's
+            // sample, which the path then follows.
+            const bool glossy = flags & kGlossy;
+            if (glossy) {
+              const float ul = scene_.lights().size() > 1 ? sp.Get1D() : 0.5f;
+              const Vec2f u = sp.Get2D();
+              L += beta * SampleLightMIS(scene_, *si, bsdf, lambda, ul, u, c.rays, 1, 1);
+            }
             const float uc = bsdf.UsesLobeChoice() ? sp.Get1D() : 0.5f;
             const std::optional<BSDFSample> bs = bsdf.Sample(si->wo, uc, sp.Get2D());
             if (!bs || !(bs->pdf > 0)) break;
             beta *= bs->f * (AbsDot(bs->wi, bsdf.frame().n) / bs->pdf);
             if (bs->IsTransmission()) eta_scale *= Sqr(bs->eta);
             wi = bs->wi;
+            full_emission = bs->IsSpecular() || !glossy;
+            bsdf_pdf = bs->pdf;
           }
+          prev_p = si->p;
           ray = si->SpawnRay(wi);
           if (beta.HasNaN() || beta.HasInf()) {
             ++c.nan;
@@ -295,7 +345,7 @@ RenderStats SppmIntegrator::RenderImage(const Camera& camera, const Sampler& sam
     });
 
     if (it == 0) {
-      const float r0 = s_.initial_radius > 0 ? s_.initial_radius : AutomaticRadius(pixels, width, height);
+      const float r0 = s_.initial_radius > 0 ? s_.initial_radius : AutomaticRadius(scene_, camera);
       for (SppmPixel& px : pixels) px.radius = r0;
     }
 

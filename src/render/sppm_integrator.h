@@ -6,14 +6,19 @@
 //
 // An iteration (one per sample index: the film's spp are the iterations):
 // 1. Camera pass. Each pixel of the crop window takes one camera ray (Camera::GenerateRays, a
-//    row at a time: every camera works, the realistic lens too) and follows its specular bounces
-//    to the first surface with a diffuse or glossy lobe: the pixel's visible point (position,
-//    direction to the camera, its BSDF at the iteration's wavelengths, the path's throughput).
-//    Emitters met on the way (and at the visible point) count directly, and the visible point
-//    estimates its direct light by light sampling (one shadow ray). A BSDF with both delta and
-//    non-delta lobes (a smooth plastic's coat) makes the visible point or continues along one
-//    of its delta lobes, each with probability 1/2 and its weight doubled: the one visible point
-//    a pixel has per iteration covers both parts without bias.
+//    row at a time: every camera works, the realistic lens too) and follows its specular and
+//    glossy bounces to the first surface with a diffuse lobe: the pixel's visible point
+//    (position, direction to the camera, its BSDF at the iteration's wavelengths, the path's
+//    throughput). A glossy surface is traced through, as pbrt's SPPM does, by sampling its BSDF
+//    (with the light sampled there and combined by the power heuristic, as the path tracer
+//    does): a visible point on a nearly smooth lobe (glass or metal of roughness 0.01) would
+//    gather almost no photon in its narrow cone, and stay dark for thousands of iterations. A
+//    glossy surface becomes the visible point only where max_depth ends the path. Emitters met
+//    on the way count directly (by MIS after a glossy bounce), and the visible point estimates
+//    its direct light by light sampling (one shadow ray). A BSDF with both delta and diffuse
+//    lobes (a smooth plastic's coat) makes the visible point or continues along one of its
+//    delta lobes, each with probability 1/2 and its weight doubled: the one visible point a
+//    pixel has per iteration covers both parts without bias.
 // 2. Photon pass. photon_count photons, each from a light chosen by power (Light::SampleLe, as
 //    the light tracer starts its paths), carried through the scene with the adjoint BSDF
 //    (render/light_paths.h). At every vertex after the first with a diffuse or glossy lobe the
@@ -56,8 +61,9 @@ namespace objektiv {
 struct SppmSettings {
   int max_depth = -1, rr_depth = 5;
   int64_t photon_count = 100000;  // photons per iteration
-  // World units; 0: automatic, twice the median distance between the visible points of
-  // neighbouring pixels in the first iteration (a radius of about two pixels' footprint).
+  // World units; 0: automatic, twice the median distance between the first surfaces seen through
+  // neighbouring pixels, over a grid across the whole film (about two pixels' footprint; the
+  // same for a crop window as for the whole film).
   float initial_radius = 0;
   float alpha = 2.f / 3;  // the share of the new photons kept as the radius shrinks
   static constexpr int64_t kMaxPhotonCount = int64_t(1) << 30;
@@ -69,6 +75,8 @@ class SppmIntegrator final : public WholeImageIntegrator {
   RenderStats RenderImage(const Camera& camera, const Sampler& sampler, Film& film,
                           const RenderOptions& options) const override;
   const SppmSettings& settings() const { return s_; }
+  // Each pixel's statistics and visible point (its BSDF kept whole): some 430 bytes.
+  uint64_t BytesPerPixel() const override;
 
  private:
   SppmSettings s_;

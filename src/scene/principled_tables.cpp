@@ -20,7 +20,7 @@ namespace {
 
 constexpr int kMu = 32, kAlpha = 24, kGloss = 16, kRough = 17;
 constexpr float kAlphaMax = 3.2f;
-constexpr int kGrid = 48;  // kGrid^2 samples per node
+constexpr int kQuadratureSide = 48;  // kQuadratureSide^2 samples per node
 
 float MuNode(int i) { return Sqr(float(i) / (kMu - 1)); }
 float AlphaNode(int j) { return std::max(1e-4f, kAlphaMax * Sqr(float(j) / (kAlpha - 1))); }
@@ -48,9 +48,9 @@ std::array<float, 3> GgxAlbedos(float mu, float alpha, float eta) {
   const Vec3f wo = Outgoing(mu);
   const float g1 = d.G1(wo);
   double diel = 0, scale = 0, bias = 0;
-  for (int i = 0; i < kGrid; ++i)
-    for (int j = 0; j < kGrid; ++j) {
-      const Vec3f m = d.SampleVisible(wo, Vec2f((i + 0.5f) / kGrid, (j + 0.5f) / kGrid));
+  for (int i = 0; i < kQuadratureSide; ++i)
+    for (int j = 0; j < kQuadratureSide; ++j) {
+      const Vec3f m = d.SampleVisible(wo, Vec2f((i + 0.5f) / kQuadratureSide, (j + 0.5f) / kQuadratureSide));
       const Vec3f wi = Reflect(wo, m);
       if (wi.z <= 0) continue;
       const float c = Dot(wo, m), g = d.G(wo, wi) / g1, w = principled::SchlickWeight(c);
@@ -58,7 +58,7 @@ std::array<float, 3> GgxAlbedos(float mu, float alpha, float eta) {
       scale += (1 - w) * g;
       bias += w * g;
     }
-  const double n = double(kGrid) * kGrid;
+  const double n = double(kQuadratureSide) * kQuadratureSide;
   return {float(diel / n), float(scale / n), float(bias / n)};
 }
 
@@ -82,14 +82,14 @@ struct GlobalTables {
       const Vec3f wo = Outgoing(MuNode(i));
       std::array<double, kRough> d{};
       double s = 0;
-      for (int a = 0; a < kGrid; ++a)
-        for (int b = 0; b < kGrid; ++b) {
-          const Vec3f wi = SampleCosineHemisphere(Vec2f((a + 0.5f) / kGrid, (b + 0.5f) / kGrid));
+      for (int a = 0; a < kQuadratureSide; ++a)
+        for (int b = 0; b < kQuadratureSide; ++b) {
+          const Vec3f wi = SampleCosineHemisphere(Vec2f((a + 0.5f) / kQuadratureSide, (b + 0.5f) / kQuadratureSide));
           if (wi.z <= 0) continue;
           for (int r = 0; r < kRough; ++r) d[r] += principled::DisneyDiffuse(wo, wi, float(r) / (kRough - 1));
           s += kPi * principled::SheenWeight(wo, wi);
         }
-      const double n = double(kGrid) * kGrid;
+      const double n = double(kQuadratureSide) * kQuadratureSide;
       for (int r = 0; r < kRough; ++r) diffuse[size_t(r) * kMu + i] = float(d[r] / n);
       sheen[i] = sheen[kMu + i] = float(s / n);  // two equal rows, for Lookup
     }
@@ -101,9 +101,9 @@ struct GlobalTables {
     const float alpha = principled::ClearcoatAlpha(gloss);
     const Vec3f wo = Outgoing(mu);
     double sum = 0;
-    for (int i = 0; i < kGrid; ++i)
-      for (int j = 0; j < kGrid; ++j) {
-        const Vec3f m = principled::Gtr1Sample(alpha, Vec2f((i + 0.5f) / kGrid, (j + 0.5f) / kGrid));
+    for (int i = 0; i < kQuadratureSide; ++i)
+      for (int j = 0; j < kQuadratureSide; ++j) {
+        const Vec3f m = principled::Gtr1Sample(alpha, Vec2f((i + 0.5f) / kQuadratureSide, (j + 0.5f) / kQuadratureSide));
         const Vec3f wi = Reflect(wo, m);
         const float c = Dot(wo, m);
         if (wi.z <= 0 || c <= 0 || m.z <= 0) continue;
@@ -111,7 +111,7 @@ struct GlobalTables {
         const float G = principled::SmithGgx1(wo, m, 0.25f) * principled::SmithGgx1(wi, m, 0.25f);
         sum += F * G * c / (wo.z * m.z);
       }
-    return float(sum / (double(kGrid) * kGrid));
+    return float(sum / (double(kQuadratureSide) * kQuadratureSide));
   }
 };
 
