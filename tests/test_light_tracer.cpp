@@ -13,6 +13,7 @@
 #include "base/rng.h"
 #include "image_estimates.h"
 #include "render_helpers.h"
+#include "room_scene.h"
 #include "sanitizer_build.h"
 #include "scene/analytic_shape.h"
 #include "scene/infinite_light.h"
@@ -28,28 +29,10 @@ using test::Estimated;
 using test::ExpectSameImage;
 using test::kSize;
 
-// A box of diffuse walls (open toward the camera), a diffuse sphere on its floor, `light` inside,
-// seen through `sensor` (its opening tag and own properties).
+// The room (room_scene.h) rendered by the integrator of type `integrator`.
 std::string Room(const std::string& integrator, const std::string& sensor, const std::string& light, int spp,
                  int seed) {
-  return fmt::format(R"(<scene version="3.0.0">
-  <integrator type="{}"/>
-  {}
-    <transform name="to_world"><lookat origin="0, 1, 3.2" target="0, 1, 0" up="0, 1, 0"/></transform>
-    <sampler type="independent"><integer name="sample_count" value="{}"/><integer name="seed" value="{}"/></sampler>
-    <film type="hdrfilm"><integer name="width" value="{}"/><integer name="height" value="{}"/><rfilter type="box"/></film>
-  </sensor>
-  <bsdf type="diffuse" id="white"><rgb name="reflectance" value="0.7, 0.7, 0.7"/></bsdf>
-  <bsdf type="diffuse" id="red"><rgb name="reflectance" value="0.7, 0.1, 0.1"/></bsdf>
-  <shape type="rectangle"><transform name="to_world"><rotate x="1" angle="-90"/></transform><ref id="white"/></shape>
-  <shape type="rectangle"><transform name="to_world"><rotate x="1" angle="90"/><translate y="2"/></transform><ref id="white"/></shape>
-  <shape type="rectangle"><transform name="to_world"><translate y="1" z="-1"/></transform><ref id="white"/></shape>
-  <shape type="rectangle"><transform name="to_world"><rotate y="1" angle="90"/><translate x="-1" y="1"/></transform><ref id="red"/></shape>
-  <shape type="rectangle"><transform name="to_world"><rotate y="1" angle="-90"/><translate x="1" y="1"/></transform><ref id="white"/></shape>
-  <shape type="sphere"><point name="center" x="0.3" y="0.35" z="-0.2"/><float name="radius" value="0.35"/><ref id="white"/></shape>
-  {}
-</scene>)",
-                     integrator, sensor, spp, seed, kSize, kSize, light);
+  return test::DiffuseRoom("<integrator type=\"" + integrator + "\"/>", sensor, light, spp, seed);
 }
 
 const char* kPerspective = R"(<sensor type="perspective"><float name="fov" value="45"/>)";

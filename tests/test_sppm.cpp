@@ -17,6 +17,7 @@
 #include "base/error.h"
 #include "image_estimates.h"
 #include "render_helpers.h"
+#include "room_scene.h"
 #include "sanitizer_build.h"
 
 namespace objektiv {
@@ -34,32 +35,9 @@ void ExpectSameImagePrinted(const Estimate& a, const Estimate& b, double resolut
               400 * std::sqrt(var) / ta);
   test::ExpectSameImage(a, b, resolution, what);
 }
+using test::DiffuseRoom;
 using test::kSize;
 using test::RenderXml;
-
-// The light tracer's room (a box of diffuse walls open toward the camera, a diffuse sphere)
-// under `light`, through `sensor` (its opening tag and own properties).
-std::string Room(const std::string& integrator, const std::string& sensor, const std::string& light, int spp,
-                 int seed) {
-  return fmt::format(R"(<scene version="3.0.0">
-  {}
-  {}
-    <transform name="to_world"><lookat origin="0, 1, 3.2" target="0, 1, 0" up="0, 1, 0"/></transform>
-    <sampler type="independent"><integer name="sample_count" value="{}"/><integer name="seed" value="{}"/></sampler>
-    <film type="hdrfilm"><integer name="width" value="{}"/><integer name="height" value="{}"/><rfilter type="box"/></film>
-  </sensor>
-  <bsdf type="diffuse" id="white"><rgb name="reflectance" value="0.7, 0.7, 0.7"/></bsdf>
-  <bsdf type="diffuse" id="red"><rgb name="reflectance" value="0.7, 0.1, 0.1"/></bsdf>
-  <shape type="rectangle"><transform name="to_world"><rotate x="1" angle="-90"/></transform><ref id="white"/></shape>
-  <shape type="rectangle"><transform name="to_world"><rotate x="1" angle="90"/><translate y="2"/></transform><ref id="white"/></shape>
-  <shape type="rectangle"><transform name="to_world"><translate y="1" z="-1"/></transform><ref id="white"/></shape>
-  <shape type="rectangle"><transform name="to_world"><rotate y="1" angle="90"/><translate x="-1" y="1"/></transform><ref id="red"/></shape>
-  <shape type="rectangle"><transform name="to_world"><rotate y="1" angle="-90"/><translate x="1" y="1"/></transform><ref id="white"/></shape>
-  <shape type="sphere"><point name="center" x="0.3" y="0.35" z="-0.2"/><float name="radius" value="0.35"/><ref id="white"/></shape>
-  {}
-</scene>)",
-                     integrator, sensor, spp, seed, kSize, kSize, light);
-}
 
 const char* kPerspective = R"(<sensor type="perspective"><float name="fov" value="45"/>)";
 // The light faces the ceiling: the room is lit by its light scattered once or more.
@@ -78,8 +56,8 @@ std::string Sppm(int photons, float radius) {
 // while writing it) the blocks were 30-70% dark: far outside.
 TEST(Sppm, DiffuseRoomMatchesThePathTracer) {
   SKIP_UNDER_SANITIZERS("Sppm.RealLensMatchesThePathTracer");
-  const Estimate path = Estimated([](int seed) { return Room("<integrator type=\"path\"/>", kPerspective, kAreaLight, 32, seed); });
-  const Estimate sppm = Estimated([](int seed) { return Room(Sppm(10000, 0.05f), kPerspective, kAreaLight, 32, seed); });
+  const Estimate path = Estimated([](int seed) { return DiffuseRoom("<integrator type=\"path\"/>", kPerspective, kAreaLight, 32, seed); });
+  const Estimate sppm = Estimated([](int seed) { return DiffuseRoom(Sppm(10000, 0.05f), kPerspective, kAreaLight, 32, seed); });
   ExpectSameImagePrinted(path, sppm, 0.03, "diffuse room under an area light");
 }
 
@@ -192,8 +170,8 @@ TEST(Sppm, RealLensMatchesThePathTracer) {
     <float name="sensor_width" value="24"/><float name="sensor_height" value="24"/>)";
   const char* light = R"(<emitter type="point"><point name="position" x="-0.3" y="1.6" z="0.2"/>
     <rgb name="intensity" value="2, 2, 2"/></emitter>)";
-  const Estimate path = Estimated([&](int seed) { return Room("<integrator type=\"path\"/>", sensor, light, 16, seed); });
-  const Estimate sppm = Estimated([&](int seed) { return Room(Sppm(10000, 0), sensor, light, 16, seed); });
+  const Estimate path = Estimated([&](int seed) { return DiffuseRoom("<integrator type=\"path\"/>", sensor, light, 16, seed); });
+  const Estimate sppm = Estimated([&](int seed) { return DiffuseRoom(Sppm(10000, 0), sensor, light, 16, seed); });
   ExpectSameImagePrinted(path, sppm, 0.05, "room through a real lens");
 }
 
@@ -202,7 +180,7 @@ TEST(Sppm, RealLensMatchesThePathTracer) {
 // others'. (The radius was once found from the crop's pixels alone: a one-pixel crop got 1e-3.)
 TEST(Sppm, CropWindowRendersItsPartOfTheWholeImage) {
   for (const std::string& integrator : {Sppm(4000, 0), Sppm(4000, 0.05f)}) {
-    const std::string full = Room(integrator, kPerspective, kAreaLight, 3, 5);
+    const std::string full = DiffuseRoom(integrator, kPerspective, kAreaLight, 3, 5);
     std::string cropped = full;
     const std::string film_end = R"(<rfilter type="box"/></film>)";
     cropped.replace(cropped.find(film_end), film_end.size(),

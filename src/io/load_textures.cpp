@@ -50,18 +50,22 @@ std::shared_ptr<const SpectrumTexture> GetTexture(const Properties& props, const
       if (v->kind == SpectrumValue::Kind::kRgb) return std::make_shared<ConstantTexture>(MakeSpectrum(*v, usage), v->rgb);
       if (v->kind == SpectrumValue::Kind::kConstant)
         return std::make_shared<ConstantTexture>(MakeSpectrum(*v, usage), Vec3f(v->value));
-      throw ErrorAt(props.LocOf(name), "'{}' holds numbers, not light (heights, normals, weights, roughness): give a texture, a number or an <rgb>, not a spectrum",
+      throw ErrorAt(props.LocOf(name),
+                    "'{}' holds numbers, not light (heights, normals, weights, roughness): give a texture, a number "
+                    "or an <rgb>, not a spectrum",
                     name);
     }
     Spectrum spectrum = MakeSpectrum(*v, usage);
     // A reflectance above 1 (or below 0) anywhere would create light: checked as written for an
     // <rgb> or a number, as the spectrum it makes otherwise.
+    auto non_negative = [](const std::vector<float>& values) {
+      return std::all_of(values.begin(), values.end(), [](float x) { return x >= 0; });
+    };
     const bool in_unit_range = v->kind == SpectrumValue::Kind::kRgb
                                    ? MinComponent(v->rgb) >= 0 && MaxComponent(v->rgb) <= 1
                                : v->kind == SpectrumValue::Kind::kConstant ? v->value >= 0 && v->value <= 1
-                               : v->kind == SpectrumValue::Kind::kSampled
-                                   ? std::all_of(v->values.begin(), v->values.end(), [](float x) { return x >= 0; }) && spectrum.MaxValue() <= 1
-                                   : spectrum.MaxValue() <= 1;
+                               : v->kind == SpectrumValue::Kind::kSampled  ? non_negative(v->values) && spectrum.MaxValue() <= 1
+                                                                           : spectrum.MaxValue() <= 1;
     if (usage == SpectrumUsage::kAlbedo && !in_unit_range)
       throw ErrorAt(props.LocOf(name), "reflectance '{}' must lie in [0, 1]", name);
     return std::make_shared<ConstantTexture>(std::move(spectrum));
