@@ -163,8 +163,6 @@ int RunRender(const RenderArgs& a) {
   RenderSetup setup = LoadScene(a.scene, defines, GlassCatalog::Default());
   if (a.spp > 0) setup.sampler.spp = a.spp;
   ApplySamplingOptions(a, setup.sampler);
-  if (!a.sampler.empty() || !a.adaptive.empty() || a.adaptive_min > 0 || a.spp > 0)
-    CheckSamplerSettings(setup.sampler, "the command line");
   const AdaptiveMode adaptive = setup.sampler.adaptive.mode;
   // sppm's iterations (its samples per pixel) are one render: each starts from the photon
   // radii and sums the ones before it left, so they cannot be split, paused or cut short.
@@ -181,6 +179,9 @@ int RunRender(const RenderArgs& a) {
                                    "the photon radii the one before left: {} cannot apply",
                                    a.scene, what));
   }
+  // (After sppm's refusals: its adaptive sampling is refused, not checked for its settings.)
+  if (!a.sampler.empty() || !a.adaptive.empty() || a.adaptive_min > 0 || a.spp > 0)
+    CheckSamplerSettings(setup.sampler, "the command line");
   // A pixel's adaptive sample count is decided from all of its samples: a sample range alone
   // cannot decide it, and the parts would not add up to one render.
   if (adaptive != AdaptiveMode::kNone && part)
