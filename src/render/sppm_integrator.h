@@ -12,8 +12,8 @@
 //    throughput). A glossy surface is traced through, as pbrt's SPPM does, by sampling its BSDF
 //    (with the light sampled there and combined by the power heuristic, as the path tracer
 //    does): a visible point on a nearly smooth lobe (glass or metal of roughness 0.01) would
-//    gather almost no photon in its narrow cone, and stay dark for thousands of iterations. A
-//    glossy surface becomes the visible point only where max_depth ends the path. Emitters met
+//    gather almost no photon in its narrow cone, and stay dark for thousands of iterations.
+//    Where max_depth ends the path at a glossy surface, it keeps its direct light. Emitters met
 //    on the way count directly (by MIS after a glossy bounce), and the visible point estimates
 //    its direct light by light sampling (one shadow ray). A BSDF with both delta and diffuse
 //    lobes (a smooth plastic's coat) makes the visible point or continues along one of its
@@ -21,9 +21,11 @@
 //    pixel has per iteration covers both parts without bias.
 // 2. Photon pass. photon_count photons, each from a light chosen by power (Light::SampleLe, as
 //    the light tracer starts its paths), carried through the scene with the adjoint BSDF
-//    (render/light_paths.h). At every vertex after the first with a diffuse or glossy lobe the
-//    photon deposits its flux at the visible points within their radius (a hash grid over the
-//    visible points, cells the largest diameter wide): Phi += beta_vp f(wo_vp, wi_photon) flux.
+//    (render/light_paths.h). At every vertex after the first with a diffuse lobe (where visible
+//    points can be: a photon left on rough glass would also reach the points on the surfaces
+//    beside it, and count twice) the photon deposits its flux at the visible points within
+//    their radius (a hash grid over the visible points, cells the largest diameter wide):
+//    Phi += beta_vp f(wo_vp, wi_photon) flux.
 //    The first vertex is left out: the camera pass's light sampling has the direct light.
 // 3. Update, per pixel with M photons this iteration (alpha in (0, 1), 2/3 by default):
 //    N' = N + alpha M, r'^2 = r^2 N' / (N + M), tau' = (tau + Phi) r'^2 / r^2.
