@@ -152,11 +152,9 @@ void CheckOutputsAreNotInputs(const std::vector<Output>& outputs, const char* re
 Film MakeRenderFilm(const RenderSetup& setup, double budget_gib, int threads) {
   const FilmSettings& f = setup.film;
   const auto* aov_integrator = dynamic_cast<const AovIntegrator*>(setup.integrator.get());
-  // The AOVs: exact sums, then float channels in the image (twice: the image is copied).
-  const uint64_t aov_bytes =
-      aov_integrator ? uint64_t(f.crop.Width()) * f.crop.Height() * (aov_integrator->AovChannels() + 1) * (16 + 2 * 4) : 0;
+  // What the integrator keeps per pixel beside the film (the AOVs, sppm's photon statistics).
   const uint64_t integrator_bytes = uint64_t(f.crop.Width()) * f.crop.Height() * setup.integrator->BytesPerPixel();
-  Film film = MakeFilm(f, budget_gib, LensEffectsBytes(*setup.camera, f.crop, threads) + aov_bytes + integrator_bytes);
+  Film film = MakeFilm(f, budget_gib, LensEffectsBytes(*setup.camera, f.crop, threads) + integrator_bytes);
   PrepareFilmForLensEffects(*setup.camera, film);
   if (aov_integrator) film.KeepAovs(aov_integrator->AovChannels());
   return film;

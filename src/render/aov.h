@@ -55,6 +55,9 @@ class AovIntegrator final : public CameraPathIntegrator {
   // medium boundary included), which the loader warns about.
   bool RendersMedia() const override { return inner_->RendersMedia(); }
   int AovChannels() const override;
+  // The AOVs' exact sums in the film, then their float channels in the image (twice: the
+  // image is copied): 16 + 2 x 4 bytes per channel and the weight.
+  uint64_t BytesPerPixel() const override { return uint64_t(AovChannels() + 1) * (16 + 2 * 4); }
   void EvaluateAovs(const Ray& ray, const std::optional<SurfaceInteraction>& hit, const SampledWavelengths& lambda,
                     uint64_t seed, float* out) const override;
   const std::vector<Aov>& aovs() const { return aovs_; }

@@ -45,6 +45,24 @@ float AreaLightPdf(const Scene& scene, const Vec3f& ref, const SurfaceInteractio
   return scene.LightPmf(area) * area->PdfLi(ref, si);
 }
 
+SampledSpectrum EscapedRadiance(const Scene& scene, const Ray& ray, const SampledWavelengths& lambda, bool full,
+                                float bsdf_pdf) {
+  SampledSpectrum L(0.f);
+  for (const InfiniteLight* light : scene.infinite_lights()) {
+    const SampledSpectrum Le = light->Le(ray.d, lambda);
+    if (Le.IsBlack()) continue;
+    L += full ? Le : Le * PowerHeuristic(bsdf_pdf, scene.LightPmf(light) * light->PdfLi(ray.d));
+  }
+  return L;
+}
+
+SampledSpectrum HitEmission(const Scene& scene, const SurfaceInteraction& si, const SampledWavelengths& lambda,
+                            bool full, float bsdf_pdf, const Vec3f& prev_p) {
+  const SampledSpectrum Le = EmittedRadiance(si, lambda);
+  if (full || Le.IsBlack()) return Le;
+  return Le * PowerHeuristic(bsdf_pdf, AreaLightPdf(scene, prev_p, si));
+}
+
 SampledSpectrum SegmentTransmittance(const Ray& ray, const SurfaceInteraction& si, const SampledWavelengths& lambda) {
   const Material* m = si.shape ? si.shape->material.get() : nullptr;
   const Spectrum* sigma = m ? m->Absorption() : nullptr;

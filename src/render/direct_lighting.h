@@ -21,6 +21,16 @@ SampledSpectrum EmittedRadiance(const SurfaceInteraction& si, const SampledWavel
 // sampling from `ref` would have produced the hit si on an area light.
 float AreaLightPdf(const Scene& scene, const Vec3f& ref, const SurfaceInteraction& si);
 
+// The emission a path meets, weighted as the path tracer weights it: in full where the vertex
+// before could not sample the lights (`full`: the camera, a delta bounce), else by the power
+// heuristic between that vertex's BSDF sample (density bsdf_pdf, solid angle) and light
+// sampling from it (at prev_p). EscapedRadiance: the environment along a ray that left the
+// scene; HitEmission: an area light hit at si.
+SampledSpectrum EscapedRadiance(const Scene& scene, const Ray& ray, const SampledWavelengths& lambda, bool full,
+                                float bsdf_pdf);
+SampledSpectrum HitEmission(const Scene& scene, const SurfaceInteraction& si, const SampledWavelengths& lambda,
+                            bool full, float bsdf_pdf, const Vec3f& prev_p);
+
 // Beer-Lambert transmittance of the segment that ended at si if it ran inside an absorbing
 // dielectric (the ray hit the back of the surface).
 SampledSpectrum SegmentTransmittance(const Ray& ray, const SurfaceInteraction& si, const SampledWavelengths& lambda);

@@ -107,29 +107,11 @@ SampledSpectrum PathIntegrator::Li(const Ray& camera_ray, const std::optional<Su
     // Emitters found by the path count in full where the last vertex could not sample them.
     const bool full_emission = depth == 1 || specular_bounce || !sampled_emitters;
     if (!si) {
-      if (caustic) break;
-      for (const InfiniteLight* light : scene_.infinite_lights()) {
-        SampledSpectrum Le = light->Le(ray.d, lambda);
-        if (Le.IsBlack()) continue;
-        if (full_emission) {
-          L += beta * Le;
-        } else {
-          float light_pdf = scene_.LightPmf(light) * light->PdfLi(ray.d);
-          L += beta * Le * PowerHeuristic(bsdf_pdf, light_pdf);
-        }
-      }
+      if (!caustic) L += beta * EscapedRadiance(scene_, ray, lambda, full_emission, bsdf_pdf);
       break;
     }
     beta *= SegmentTransmittance(ray, *si, lambda);
-    SampledSpectrum Le = caustic ? SampledSpectrum(0.f) : EmittedRadiance(*si, lambda);
-    if (!Le.IsBlack()) {
-      if (full_emission) {
-        L += beta * Le;
-      } else {
-        float light_pdf = AreaLightPdf(scene_, prev_p, *si);
-        L += beta * Le * PowerHeuristic(bsdf_pdf, light_pdf);
-      }
-    }
+    if (!caustic) L += beta * HitEmission(scene_, *si, lambda, full_emission, bsdf_pdf, prev_p);
     if (max_depth_ >= 0 && depth >= max_depth_) break;
     const Material* material = si->shape->material.get();
     if (!material) break;

@@ -240,13 +240,7 @@ RenderStats SppmIntegrator::RenderImage(const Camera& camera, const Sampler& sam
           ++c.rays.closest;
           const std::optional<SurfaceInteraction> si = scene_.Intersect(ray);
           if (!si) {
-            SampledSpectrum Le_sum(0.f);
-            for (const InfiniteLight* light : scene_.infinite_lights()) {
-              const SampledSpectrum Le = light->Le(ray.d, lambda);
-              if (Le.IsBlack()) continue;
-              Le_sum += full_emission ? Le : Le * PowerHeuristic(bsdf_pdf, scene_.LightPmf(light) * light->PdfLi(ray.d));
-            }
-            L += beta * Le_sum;
+            L += beta * EscapedRadiance(scene_, ray, lambda, full_emission, bsdf_pdf);
             if (depth == 1 && keep_emitted) {
               const Vec3f xyz = SampledToXYZ(L, lambda);
               for (int k = 0; k < 3; ++k) px.emitted[k] += double(w) * xyz[k];
@@ -254,8 +248,7 @@ RenderStats SppmIntegrator::RenderImage(const Camera& camera, const Sampler& sam
             break;
           }
           beta *= SegmentTransmittance(ray, *si, lambda);
-          SampledSpectrum Le = EmittedRadiance(*si, lambda);
-          if (!Le.IsBlack() && !full_emission) Le *= PowerHeuristic(bsdf_pdf, AreaLightPdf(scene_, prev_p, *si));
+          const SampledSpectrum Le = HitEmission(scene_, *si, lambda, full_emission, bsdf_pdf, prev_p);
           L += beta * Le;
           if (depth == 1 && keep_emitted) {
             const Vec3f xyz = SampledToXYZ(beta * Le, lambda);

@@ -7,14 +7,21 @@
 
 namespace objektiv {
 
+namespace {
+// A reflectance texture's value at si, each wavelength clamped to [0, 1] (a bitmap may hold more).
+SampledSpectrum Reflectance(const SpectrumTexture& t, const SurfaceInteraction& si, const SampledWavelengths& lambda) {
+  SampledSpectrum r = t.Evaluate(si.uv, lambda);
+  for (int i = 0; i < kSpectrumSamples; ++i) r[i] = Clamp(r[i], 0, 1);
+  return r;
+}
+}  // namespace
+
 BSDF NullMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths&) const {
   return BSDF(si.shading, DiffuseBxDF{SampledSpectrum(0.f)}, false);
 }
 
 BSDF DiffuseMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const {
-  SampledSpectrum r = reflectance_->Evaluate(si.uv, lambda);
-  for (int i = 0; i < kSpectrumSamples; ++i) r[i] = Clamp(r[i], 0, 1);
-  return BSDF(si.shading, DiffuseBxDF{r}, two_sided_);
+  return BSDF(si.shading, DiffuseBxDF{Reflectance(*reflectance_, si, lambda)}, two_sided_);
 }
 
 DielectricMaterial::DielectricMaterial(IorModel int_ior, double ext_ior, float alpha_u, float alpha_v,
@@ -77,8 +84,7 @@ BSDF PlasticMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& 
   b.eta = eta_;
   b.fdr_int = fdr_int_;
   b.specular_sampling_weight = specular_weight_;
-  b.diffuse = diffuse_->Evaluate(si.uv, lambda);
-  for (int i = 0; i < kSpectrumSamples; ++i) b.diffuse[i] = Clamp(b.diffuse[i], 0, 1);
+  b.diffuse = Reflectance(*diffuse_, si, lambda);
   b.specular = specular_->Evaluate(si.uv, lambda);
   b.nonlinear = nonlinear_;
   return BSDF(si.shading, b, two_sided_);
@@ -94,8 +100,7 @@ BSDF RoughPlasticMaterial::GetBSDF(const SurfaceInteraction& si, SampledWaveleng
   RoughPlasticBxDF b;
   b.coat = &coat_;
   b.specular_sampling_weight = specular_weight_;
-  b.diffuse = diffuse_->Evaluate(si.uv, lambda);
-  for (int i = 0; i < kSpectrumSamples; ++i) b.diffuse[i] = Clamp(b.diffuse[i], 0, 1);
+  b.diffuse = Reflectance(*diffuse_, si, lambda);
   b.specular = specular_->Evaluate(si.uv, lambda);
   b.nonlinear = nonlinear_;
   return BSDF(si.shading, b, two_sided_);
@@ -111,8 +116,7 @@ float ScalarParameter(const SpectrumTexture& t, Vec2f uv) {
 BSDF PrincipledMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const {
   PrincipledBxDF b;
   b.tables = tables_.get();
-  b.base = p_.base_color->Evaluate(si.uv, lambda);
-  for (int i = 0; i < kSpectrumSamples; ++i) b.base[i] = Clamp(b.base[i], 0, 1);
+  b.base = Reflectance(*p_.base_color, si, lambda);
   // Mitsuba's tint colour base / luminance(base), per wavelength (see PrincipledBxDF).
   const float lum = Luminance(p_.base_color->Rgb(si.uv));
   for (int i = 0; i < kSpectrumSamples; ++i) b.tint[i] = lum > 0 ? std::min(1.f, b.base[i] / lum) : 1.f;
@@ -135,12 +139,10 @@ BSDF PrincipledMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelength
 
 BSDF PhongMaterial::GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const {
   PhongBxDF b;
-  b.kd = diffuse_->Evaluate(si.uv, lambda);
-  b.ks = specular_->Evaluate(si.uv, lambda);
+  b.kd = Reflectance(*diffuse_, si, lambda);
+  b.ks = Reflectance(*specular_, si, lambda);
   b.exponent = exponent_;
   for (int i = 0; i < kSpectrumSamples; ++i) {
-    b.kd[i] = Clamp(b.kd[i], 0, 1);
-    b.ks[i] = Clamp(b.ks[i], 0, 1);
     if (const float sum = b.kd[i] + b.ks[i]; sum > 1) {
       b.kd[i] /= sum;
       b.ks[i] /= sum;
