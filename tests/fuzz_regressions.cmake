@@ -50,3 +50,9 @@ fuzz_test(bmp_claims_3493896x8 1 "12-bmp-claims-3493896x8.bmp: cannot read image
   render ${FUZZ}/06-texture-scene.xml -D texfile=12-bmp-claims-3493896x8.bmp -o ${FUZZ_OUT}/12a.exr)
 fuzz_test(bmp_claims_13107208x8 1 "12-bmp-claims-13107208x8.bmp: cannot read image: its header claims 13107208x8 pixels"
   render ${FUZZ}/06-texture-scene.xml -D texfile=12-bmp-claims-13107208x8.bmp -o ${FUZZ_OUT}/12b.exr)
+# A run-length-coded BMP of 1094 bytes claiming 50000x50000 pixels: OpenImageIO's reader
+# decodes it inside open(), into a buffer of width x height bytes multiplied in an int, which
+# overflowed to a negative size: std::length_error, a crash (found by fuzz_image in CI). The
+# claim is now checked before the file is opened.
+fuzz_test(bmp_rle_claims_50000x50000 1 "13-bmp-rle8-50000x50000.bmp: the image is 50000x50000, more than the limit of 268435456 pixels"
+  render ${FUZZ}/06-texture-scene.xml -D texfile=13-bmp-rle8-50000x50000.bmp -o ${FUZZ_OUT}/13.exr)

@@ -167,6 +167,74 @@ TEST(BadImages, ExrAttributeSizesAreCheckedBeforeOpenExrAllocates) {
   EXPECT_FLOAT_EQ(m.At(3, 3, 2), 0.25f);
 }
 
+// A run-length-coded 8-bit BMP (RLE8) of width x height (the header's height field as given:
+// negative for rows top-down) whose rows are runs of `rows[y]` palette entries, y from the
+// bottom as stored; palette entry i is (red, green, blue) = (i, 255 - i, 7), or (i, i, i) if `grey`.
+std::string RleBmp(int32_t width, int32_t height, const std::vector<std::vector<std::pair<uint8_t, uint8_t>>>& rows,
+                   bool grey = false) {
+  auto le = [](uint32_t v, int bytes) {
+    std::string s;
+    for (int i = 0; i < bytes; ++i) s += char((v >> (8 * i)) & 0xff);
+    return s;
+  };
+  std::string data;
+  for (size_t y = 0; y < rows.size(); ++y) {
+    for (auto [count, index] : rows[y]) data += std::string{char(count), char(index)};
+    data += std::string(y + 1 < rows.size() ? "\0\0" : "\0\1", 2);  // end of line, of the bitmap
+  }
+  std::string palette;
+  for (int i = 0; i < 256; ++i)  // stored blue, green, red
+    palette += grey ? std::string{char(i), char(i), char(i), '\0'} : std::string{char(7), char(255 - i), char(i), '\0'};
+  const std::string info = le(40, 4) + le(uint32_t(width), 4) + le(uint32_t(height), 4) + le(1, 2) + le(8, 2) +
+                           le(1, 4) /* RLE8 */ + le(uint32_t(data.size()), 4) + le(2835, 4) + le(2835, 4) + le(0, 4) + le(0, 4);
+  const uint32_t offset = 14 + uint32_t(info.size() + palette.size());
+  return "BM" + le(offset + uint32_t(data.size()), 4) + le(0, 4) + le(offset, 4) + info + palette + data;
+}
+
+TEST(BadImages, RunLengthBmpClaimIsCheckedBeforeOpening) {
+  fs::path dir = TempDir("bmp_rle");
+  // A good one reads: 3 x 2, bottom row entries 200 200 10, top row 50 50 50.
+  fs::path good = dir / "good.bmp";
+  WriteBytes(good, RleBmp(3, 2, {{{2, 200}, {1, 10}}, {{3, 50}}}));
+  Image g = ReadImageRgb(good.string(), /*raw=*/true);
+  ASSERT_EQ(g.width, 3);
+  ASSERT_EQ(g.height, 2);
+  EXPECT_NEAR(g.At(0, 1, 0), 200 / 255.f, 1e-6f);
+  EXPECT_NEAR(g.At(2, 1, 1), 245 / 255.f, 1e-6f);
+  EXPECT_NEAR(g.At(1, 0, 0), 50 / 255.f, 1e-6f);
+  EXPECT_NEAR(g.At(1, 0, 2), 7 / 255.f, 1e-6f);
+  // With a grey palette OpenImageIO 2.4 made it one channel and wrote three bytes a pixel
+  // into its rows (the bottom row read 200 200 200, past the row's end).
+  fs::path grey = dir / "grey.bmp";
+  WriteBytes(grey, RleBmp(3, 2, {{{2, 200}, {1, 10}}, {{3, 50}}}, /*grey=*/true));
+  Image gr = ReadImageRgb(grey.string(), /*raw=*/true);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(gr.At(1, 1, c), 200 / 255.f, 1e-6f);
+    EXPECT_NEAR(gr.At(2, 1, c), 10 / 255.f, 1e-6f);
+    EXPECT_NEAR(gr.At(0, 0, c), 50 / 255.f, 1e-6f);
+  }
+  // OpenImageIO decodes RLE inside open(), into width * height bytes multiplied in an int:
+  // 50000 x 50000 overflowed to a negative size (std::length_error, an abort, found by
+  // fuzz_image), a top-down -50000 too; 16000 x 16000 (within the pixel limit, beyond 256
+  // pixels a byte of this file) took 256 MB before anything checked the claim.
+  fs::path huge = dir / "huge.bmp", top_down = dir / "top_down.bmp", large = dir / "large.bmp";
+  WriteBytes(huge, RleBmp(50000, 50000, {{{255, 1}}}));
+  WriteBytes(top_down, RleBmp(50000, -50000, {{{255, 1}}}));
+  WriteBytes(large, RleBmp(16000, 16000, {{{255, 1}}}));
+  const long before = PeakRssKiB();
+  ExpectImageError([&] { ReadImageRgb(huge.string()); }, huge, "50000x50000, more than the limit of 268435456 pixels");
+  ExpectImageError([&] { ReadImageRgb(top_down.string()); }, top_down, "50000x50000, more than the limit");
+  ExpectImageError([&] { ReadImageRgb(large.string()); }, large,
+                   "its header claims 16000x16000 pixels, more than a " + std::to_string(fs::file_size(large)) +
+                       "-byte BMP file can hold");
+  if (!kAddressSanitizer) {
+    EXPECT_LT(PeakRssKiB() - before, 100 * 1024);
+  }
+  // The fuzzing finding itself, through the replay folder and the command line too.
+  const fs::path finding = fs::path(OBJEKTIV_FUZZ_DIR) / "13-bmp-rle8-50000x50000.bmp";
+  ExpectImageError([&] { ReadImageRgb(finding.string()); }, finding, "more than the limit");
+}
+
 TEST(BadImages, FormatsOutsideTheListAreRefused) {
   fs::path dir = TempDir("formats");
   // Read by its extension only: a movie or a Maya IFF (whose reader takes a cut file without

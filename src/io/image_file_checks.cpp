@@ -62,4 +62,18 @@ void CheckExrHeaders(const std::string& path, uintmax_t file_size) {
   }
 }
 
+std::optional<ImageSize> BmpClaimedSize(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  uint8_t b[26];  // the 14-byte file header, then the information header's size and dimensions
+  if (!file.read(reinterpret_cast<char*>(b), sizeof b)) return std::nullopt;
+  auto u16 = [&](int at) { return uint32_t(b[at]) | uint32_t(b[at + 1]) << 8; };
+  auto u32 = [&](int at) { return u16(at) | u16(at + 2) << 16; };
+  const uint32_t header_size = u32(14);
+  if (header_size == 12) return ImageSize{u16(18), u16(20)};  // OS/2 1.x: unsigned 16-bit fields
+  if (header_size != 40 && header_size != 52 && header_size != 56 && header_size != 108 && header_size != 124)
+    return std::nullopt;
+  const int64_t width = int32_t(u32(18)), height = int32_t(u32(22));
+  return ImageSize{width, height < 0 ? -height : height};
+}
+
 }  // namespace objektiv

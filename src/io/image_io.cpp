@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <new>
+#include <optional>
 
 #include "base/error.h"
 #include "base/input_files.h"
@@ -62,6 +63,35 @@ constexpr const char* kImageFormats[] = {"openexr", "hdr",  "png", "jpeg",     "
                                          "bmp",     "pnm",  "webp", "jpeg2000", "gif",  "heif"};
 constexpr const char* kImageFormatList = "EXR, HDR, PNG, JPEG, TIFF, TGA, BMP, PNM, WebP, JPEG 2000, GIF, HEIF/AVIF";
 
+// Throws unless a width x height image (as its header claims) is within the pixel limit and,
+// for BMP and PNM, which store pixels raw or run-length coded (at most 255 pixels in two
+// bytes), within 256 pixels a byte of the file: OpenImageIO's BMP reader would allocate for a
+// false claim before finding no data (2.7 GB for 246 bytes, found by fuzz_image).
+void CheckPixelCount(const std::string& path, const std::string& format, uintmax_t file_size, int64_t width,
+                     int64_t height) {
+  const int64_t pixels = width * height;
+  if (pixels > kMaxImagePixels)
+    throw MakeInputError(path, 0, "the image is {}x{}, more than the limit of {} pixels ({}x{})", width, height,
+                         kMaxImagePixels, 1 << 14, 1 << 14);
+  if ((format == "bmp" || format == "pnm") && pixels > int64_t(std::min<uintmax_t>(file_size, INT64_MAX / 512)) * 256)
+    throw MakeInputError(path, 0, "cannot read image: its header claims {}x{} pixels, more than a {}-byte {} file can hold",
+                         width, height, file_size, format == "bmp" ? "BMP" : "PNM");
+}
+
+// decode(), with an exception from inside a decoder (a malformed file driving one of its
+// containers past its limits: std::length_error, std::out_of_range, ...) reported as the
+// file's error. An allocation failure goes on to NamingAllocationFailures.
+template <typename F>
+bool Decoding(const std::string& path, F decode) {
+  try {
+    return decode();
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw MakeInputError(path, 0, "cannot decode image: its decoder failed on malformed data ({})", e.what());
+  }
+}
+
 RawImage ReadRaw(const std::string& path) {
   const uintmax_t file_size = CheckInputFile(path, "image", UINTMAX_MAX);
   RecordInputFile(path);
@@ -71,36 +101,35 @@ RawImage ReadRaw(const std::string& path) {
   if (!in || std::none_of(std::begin(kImageFormats), std::end(kImageFormats),
                           [&](const char* f) { return std::string(in->format_name()) == f; }))
     throw MakeInputError(path, 0, "not an image format that is read (by its extension: {})", kImageFormatList);
-  if (std::string(in->format_name()) == "openexr") CheckExrHeaders(path, file_size);
-  OIIO::ImageSpec opened;
-  if (!in->open(path, opened)) throw MakeInputError(path, 0, "cannot read image: {}", in->geterror());
+  const std::string format = in->format_name();
+  if (format == "openexr") CheckExrHeaders(path, file_size);
+  if (format == "bmp")
+    if (const std::optional<ImageSize> claim = BmpClaimedSize(path))
+      CheckPixelCount(path, format, file_size, claim->width, claim->height);
+  OIIO::ImageSpec opened, config;
+  // OpenImageIO 2.4 reads a BMP whose palette is all grey as one channel, but decodes a
+  // run-length-coded one three bytes a pixel into that channel's rows: a wrong image, written
+  // past its buffer. Read as the three channels a BMP has.
+  if (format == "bmp") config.attribute("bmp:monochrome_detect", 0);
+  if (!Decoding(path, [&] { return in->open(path, opened, config); }))
+    throw MakeInputError(path, 0, "cannot read image: {}", in->geterror());
   if (std::string(in->format_name()) == "jpeg" && !JpegIsComplete(path))
     throw MakeInputError(path, 0, "cannot decode image: the JPEG data ends before its end-of-image marker (truncated)");
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
     throw MakeInputError(path, 0, "image has no pixels");
   if (spec.depth != 1) throw MakeInputError(path, 0, "volume images (depth {}) are not supported", spec.depth);
-  const int64_t pixels = int64_t(spec.width) * spec.height;
-  if (pixels > kMaxImagePixels)
-    throw MakeInputError(path, 0, "the image is {}x{}, more than the limit of {} pixels ({}x{})", spec.width,
-                         spec.height, kMaxImagePixels, 1 << 14, 1 << 14);
-  const int64_t bytes = pixels * spec.nchannels * int64_t(sizeof(float));
+  CheckPixelCount(path, format, file_size, spec.width, spec.height);
+  const int64_t bytes = int64_t(spec.width) * spec.height * spec.nchannels * int64_t(sizeof(float));
   if (bytes > kMaxImageBytes)
     throw MakeInputError(path, 0, "the {}x{} image with {} channels needs {} MiB as floats, more than the limit of {} MiB",
                          spec.width, spec.height, spec.nchannels, bytes >> 20, kMaxImageBytes >> 20);
   RawImage r;
-  // BMP and PNM store pixels raw or run-length coded (at most 255 pixels in two bytes): a header
-  // claiming more than 256 pixels a byte of file is false, and OpenImageIO's BMP reader would
-  // allocate for the claim before finding no data (2.7 GB for 246 bytes, found by fuzz_image).
-  const std::string format = in->format_name();
-  if ((format == "bmp" || format == "pnm") && pixels > int64_t(std::min<uintmax_t>(file_size, INT64_MAX / 512)) * 256)
-    throw MakeInputError(path, 0, "cannot read image: its header claims {}x{} pixels, more than a {}-byte {} file can hold",
-                         spec.width, spec.height, file_size, format == "bmp" ? "BMP" : "PNM");
   r.integer_format = !spec.format.is_floating_point();
   r.image.width = spec.width;
   r.image.height = spec.height;
   for (int c = 0; c < spec.nchannels; ++c) r.image.channels.push_back(spec.channel_name(c));
-  if (!ReadPixels(*in, r.image.pixels)) throw MakeInputError(path, 0, "cannot decode image: {}", in->geterror());
+  if (!Decoding(path, [&] { return ReadPixels(*in, r.image.pixels); })) throw MakeInputError(path, 0, "cannot decode image: {}", in->geterror());
   in->close();
   return r;
 }
