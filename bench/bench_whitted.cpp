@@ -1,8 +1,9 @@
 // The classic tracer as a preview: frames of the spheres on a checkerboard
 // (scenes/classic/spheres-checkerboard.xml) at 640 x 480, one sample per pixel, on every core,
-// the scene loaded once (as the live viewer renders frame after frame). Argument: the shadow
+// the scene loaded once (as the live viewer renders frame after frame). Arguments: the shadow
 // grid (n x n shadow rays per area light and the sky): 4 as shipped, 1 for a scene as POV-Ray
-// traces it by default (one shadow ray per light).
+// traces it by default (one shadow ray per light); the wavelength sets (4 as shipped: sixteen
+// wavelengths a pixel, no colour noise; 1: four, the colour noise of a spectral sample).
 #include <benchmark/benchmark.h>
 
 #include <spdlog/spdlog.h>
@@ -15,9 +16,9 @@ namespace {
 
 void BM_WhittedFrame(benchmark::State& state) {
   spdlog::set_level(spdlog::level::warn);
-  const int grid = int(state.range(0));
+  const int grid = int(state.range(0)), sets = int(state.range(1));
   const RenderSetup setup = LoadScene(OBJEKTIV_SCENES_DIR "/classic/spheres-checkerboard.xml",
-                                      {{"shadow_grid", std::to_string(grid)}});
+                                      {{"shadow_grid", std::to_string(grid)}, {"wavelength_sets", std::to_string(sets)}});
   std::unique_ptr<Sampler> sampler = MakeSampler(setup.sampler);
   RenderOptions options;
   options.spp_end = 1;
@@ -30,9 +31,15 @@ void BM_WhittedFrame(benchmark::State& state) {
   }
   state.counters["Mrays/s"] = benchmark::Counter(double(rays) * 1e-6, benchmark::Counter::kIsRate);
   state.counters["fps"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
-  state.SetLabel(fmt::format("whitted, 640x480, 1 spp, shadow grid {}x{}", grid, grid));
+  state.SetLabel(fmt::format("whitted, 640x480, 1 spp, shadow grid {}x{}, {} wavelength sets", grid, grid, sets));
 }
-BENCHMARK(BM_WhittedFrame)->Arg(4)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_WhittedFrame)
+    ->Args({4, 4})
+    ->Args({1, 4})
+    ->Args({4, 1})
+    ->Args({1, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace objektiv

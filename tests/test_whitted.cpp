@@ -178,13 +178,73 @@ TEST(Whitted, AmbientTermIsTheLightOfAnUnshadowedUniformSky) {
   ExpectSameImage(path, whitted, 0.03, "ambient");
 }
 
+// Per pixel, the mean absolute difference of neighbours' chromaticities (x and y, from the
+// image's RGB summed): the colour noise of an image whose colours vary smoothly.
+double ChromaNoise(const Image& img) {
+  double sum = 0;
+  int n = 0;
+  auto chroma = [&](int x, int y, int c) {
+    const double total = img.At(x, y, 0) + img.At(x, y, 1) + img.At(x, y, 2);
+    return total > 0 ? img.At(x, y, c) / total : 0.0;
+  };
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x + 1 < img.width; ++x, ++n)
+      for (int c : {0, 2}) sum += std::abs(chroma(x, y, c) - chroma(x + 1, y, c));
+  return sum / n;
+}
+
+// A grey floor under a blue sky, at one sample per pixel: four wavelengths a pixel leave its
+// colour noisy (the Z of a smooth spectrum 50% rms), four sets of them (sixteen) take the
+// noise out, and the two converge to the same image.
+TEST(Whitted, WavelengthSetsTakeTheColourNoiseOut) {
+  const char* floor = R"(<shape type="rectangle"><transform name="to_world"><rotate x="1" angle="-90"/><scale value="30"/></transform>
+    <bsdf type="diffuse"><rgb name="reflectance" value="0.5, 0.5, 0.5"/></bsdf></shape>
+    <emitter type="constant"><rgb name="radiance" value="0.25, 0.32, 0.45"/></emitter>)";
+  auto scene = [&](int sets, int spp, int seed) {
+    return Scene(Integrator("whitted", 2, fmt::format(R"(<integer name="wavelength_sets" value="{}"/>
+      <integer name="shadow_grid" value="8"/>)", sets)), floor, spp, seed);
+  };
+  const double one = ChromaNoise(RenderXml(scene(1, 1, 1)).image), four = ChromaNoise(RenderXml(scene(4, 1, 1)).image);
+  EXPECT_LT(four, 0.05 * one) << "colour noise with 4 wavelengths " << one << ", with 16 " << four;
+  const Estimate a = Estimated([&](int seed) { return scene(1, 4, seed); });
+  const Estimate b = Estimated([&](int seed) { return scene(4, 1, seed); });
+  ExpectSameImage(a, b, 0.01, "one set and four");
+}
+
+// Where nothing depends on wavelength the sets trace the first set's rays only (RayMemo; the
+// Phong ball, which picks its lobe by their spectral weights, parts a few); where glass
+// disperses, their rays part and each is traced, the image still the same as one set's.
+TEST(Whitted, WavelengthSetsShareTheirRaysUnlessGlassDisperses) {
+  const std::string lamp = R"(<shape type="rectangle">
+    <transform name="to_world"><scale x="0.5" y="0.3"/><rotate x="1" angle="90"/><translate x="-0.3" y="2" z="0.6"/></transform>
+    <emitter type="area"><rgb name="radiance" value="10, 9, 8"/></emitter></shape>)";
+  const std::string glass = R"(<shape type="sphere"><point name="center" x="0.1" y="0.5" z="0.6"/><float name="radius" value="0.35"/>
+    <bsdf type="dielectric">{}</bsdf></shape>)";
+  const char* constant = R"(<float name="int_ior" value="1.5"/>)";
+  const char* dispersive = R"(<string name="int_ior" value="N-BK7"/>)";
+  auto scene = [&](int sets, const char* ior, int seed, int spp = 1) {
+    return Scene(Integrator("whitted", 6, fmt::format(R"(<integer name="wavelength_sets" value="{}"/>)", sets)),
+                 kBalls + lamp + fmt::format(fmt::runtime(glass), ior), spp, seed);
+  };
+  const uint64_t one = RenderXml(scene(1, constant, 1)).stats.rays, four = RenderXml(scene(4, constant, 1)).stats.rays;
+  EXPECT_LT(double(four) / double(one), 1.1) << one << " rays with one set, " << four << " with four";
+  const uint64_t one_dispersive = RenderXml(scene(1, dispersive, 1)).stats.rays;
+  const uint64_t four_dispersive = RenderXml(scene(4, dispersive, 1)).stats.rays;
+  EXPECT_GT(double(four_dispersive) / double(one_dispersive), 1.05)
+      << one_dispersive << " rays with one set, " << four_dispersive << " with four";
+  const Estimate a = Estimated([&](int seed) { return scene(1, dispersive, seed + 100, 16); });
+  const Estimate b = Estimated([&](int seed) { return scene(4, dispersive, seed + 200, 16); });
+  ExpectSameImage(a, b, 0.02, "dispersive glass, one set and four");
+}
+
 TEST(Whitted, BadSettingsAreErrorsAtTheirLine) {
   // Every branch is followed: an unbounded depth or no bailout could recurse without end (two
   // mirrors facing each other) or branch without end (glass between them).
   for (const char* bad : {R"(<integer name="max_depth" value="0"/>)", R"(<integer name="max_depth" value="-1"/>)",
                           R"(<integer name="max_depth" value="65"/>)", R"(<integer name="shadow_grid" value="0"/>)",
                           R"(<float name="bailout" value="2"/>)", R"(<float name="bailout" value="0"/>)",
-                          R"(<float name="ambient" value="-1"/>)"}) {
+                          R"(<float name="ambient" value="-1"/>)", R"(<integer name="wavelength_sets" value="0"/>)",
+                          R"(<integer name="wavelength_sets" value="9"/>)"}) {
     const std::string xml = fmt::format(
         "<scene version=\"3.0.0\">\n<integrator type=\"whitted\">\n{}\n</integrator>\n<sensor type=\"perspective\"/>\n</scene>",
         bad);

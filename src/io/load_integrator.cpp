@@ -49,6 +49,7 @@ std::unique_ptr<Integrator> MakeWhitted(const Properties& p, const Scene& scene)
   // Every branch is followed: the depth needs a bound, and the bailout a floor.
   w.max_depth = int(p.IntIn("max_depth", w.max_depth, 1, WhittedSettings::kMaxDepth));
   w.shadow_grid = int(p.IntIn("shadow_grid", w.shadow_grid, 1, 64));
+  w.wavelength_sets = int(p.IntIn("wavelength_sets", w.wavelength_sets, 1, CameraPathIntegrator::kMaxWavelengthSets));
   w.bailout = float(p.FloatIn("bailout", w.bailout, WhittedSettings::kMinBailout, 1));
   if (auto ambient = p.SpectrumProp("ambient")) w.ambient = MakeSpectrum(*ambient, SpectrumUsage::kIlluminant);
   return std::make_unique<WhittedIntegrator>(scene, std::move(w));
@@ -107,6 +108,7 @@ const IntegratorRegistry& IntegratorPlugins() {
           {"whitted",
            {{"max_depth", PropType::kInteger},
             {"shadow_grid", PropType::kInteger},
+            {"wavelength_sets", PropType::kInteger},
             {"bailout", PropType::kFloat},
             {"ambient", PropType::kSpectrum}},
            MakeWhitted},

@@ -18,6 +18,8 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <optional>
+#include <span>
 
 #include "camera/camera.h"
 #include "render/adaptive_sampling.h"
@@ -120,16 +122,31 @@ class BlockContext {
   // A path whose throughput went non-finite (ended, and counted as a NaN sample).
   void CountNaN() { ++counters_.nan; }
 
-  // One camera sample of a pixel of this block, weighted by the filter's sample weight.
-  void AddSample(Vec2i pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, float filter_weight) {
-    if (Finite(L)) film_.AddSample(pixel, L, lambda, filter_weight);
+  // A camera sample's radiance at one or more sets of wavelengths as XYZ, the sets' average;
+  // empty (and counted) if any is not finite.
+  std::optional<Vec3f> SampleXyz(std::span<const SampledSpectrum> L, std::span<const SampledWavelengths> lambda) {
+    Vec3f xyz(0.f);
+    for (size_t k = 0; k < L.size(); ++k) {
+      if (!Finite(L[k])) return std::nullopt;
+      xyz += SampledToXYZ(L[k], lambda[k]);
+    }
+    return xyz / float(L.size());
   }
+  // One camera sample of a pixel of this block (SampleXyz), weighted by the filter's sample weight.
+  void AddSample(Vec2i pixel, const Vec3f& xyz, float filter_weight) { film_.AddXyzSample(pixel, xyz, filter_weight); }
   // The part of a camera sample that came straight from an emitter, when the film keeps it
-  // apart (Film::KeepEmitted).
+  // apart (Film::KeepEmitted): as SampleXyz, empty if any is not finite (not counted: the
+  // sample's radiance is).
   bool KeepsEmitted() const { return film_.keeps_emitted(); }
-  void AddEmitted(Vec2i pixel, const SampledSpectrum& Le, const SampledWavelengths& lambda, float filter_weight) {
-    if (!Le.HasNaN() && !Le.HasInf()) film_.AddEmitted(pixel, Le, lambda, filter_weight);
+  static std::optional<Vec3f> EmittedXyz(std::span<const SampledSpectrum> Le, std::span<const SampledWavelengths> lambda) {
+    Vec3f xyz(0.f);
+    for (size_t k = 0; k < Le.size(); ++k) {
+      if (Le[k].HasNaN() || Le[k].HasInf()) return std::nullopt;
+      xyz += SampledToXYZ(Le[k], lambda[k]);
+    }
+    return xyz / float(Le.size());
   }
+  void AddEmitted(Vec2i pixel, const Vec3f& xyz, float filter_weight) { film_.AddEmittedXyz(pixel, xyz, filter_weight); }
   // The AOVs of a camera sample of a pixel of this block (the film's channels: Film::KeepAovs).
   int AovChannels() const { return film_.aov_channels(); }
   void AddAovs(Vec2i pixel, const float* values, float filter_weight) { film_.AddAovs(pixel, values, filter_weight); }

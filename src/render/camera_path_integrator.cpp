@@ -1,5 +1,5 @@
 // The block loop of the camera-path integrators: a pixel's camera rays made and traced to their
-// first hits together, then each sample's path estimated by Li.
+// first hits together, then each sample's path estimated by Li (once per wavelength set).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -12,16 +12,17 @@
 namespace objektiv {
 
 namespace {
-constexpr int kCameraBatch = 64;  // samples of one pixel whose camera rays are made together
+constexpr int kCameraBatch = 64;  // camera rays of one pixel made together (samples x wavelength sets)
 
-// The samples of one batch; each keeps its sampler state so that its path goes on where the
-// camera ray left off, and what it estimated until it is written.
+// The slots of one batch, a camera sample's wavelength sets side by side (slot = sample x sets
+// + set); each slot keeps its sampler state so that its path goes on where the camera ray left
+// off, and what it estimated until it is written.
 struct CameraBatch {
   CameraBatch(const Sampler& prototype, int aov_channels)
       : samplers(kCameraBatch, prototype), filter_samples(kCameraBatch), weights(kCameraBatch),
-        lambdas(kCameraBatch), lambdas_emitted(kCameraBatch), camera_samples(kCameraBatch), rays(kCameraBatch), first_rays(kCameraBatch),
-        first_hits(kCameraBatch), L(kCameraBatch), Le(kCameraBatch),
-        aovs(size_t(kCameraBatch) * std::max(aov_channels, 0)) {}
+        lambdas(kCameraBatch), lambdas_emitted(kCameraBatch), camera_samples(kCameraBatch), rays(kCameraBatch),
+        first_rays(kCameraBatch), first_hits(kCameraBatch), L(kCameraBatch), Le(kCameraBatch), xyz(kCameraBatch),
+        xyz_emitted(kCameraBatch), aovs(size_t(kCameraBatch) * std::max(aov_channels, 0)) {}
   std::vector<Sampler> samplers;
   std::vector<FilterSample> filter_samples;
   std::vector<float> weights;  // the filter's sample weight x the pattern's
@@ -32,15 +33,16 @@ struct CameraBatch {
   std::vector<const Ray*> first_rays;
   std::vector<std::optional<SurfaceInteraction>> first_hits;
   std::vector<SampledSpectrum> L, Le;
-  std::vector<float> aovs;  // aov_channels per sample
+  // Per sample (not slot): its sets' average in XYZ (empty: not finite), of what it saw straight from emitters.
+  std::vector<std::optional<Vec3f>> xyz, xyz_emitted;
+  std::vector<float> aovs;  // aov_channels per sample, at its set 0's wavelengths
 };
 
 // A sample of the whitted mode's lattice, kept until the pixel's tree is done.
 struct LatticeSample {
-  SampledSpectrum L, Le;
-  SampledWavelengths lambda, lambda_emitted;
+  std::optional<Vec3f> xyz, xyz_emitted;
   float filter_weight = 0;
-  bool has_ray = false;
+  bool has_ray = false;  // its set 0's camera ray
   float Y = 0;
   double weight = 0;  // the sum of its leaves' shares of the pixel
   size_t aov = 0;     // its values' offset in the pixel's AOV store
@@ -60,56 +62,78 @@ void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
   const bool lens_sample = camera.UsesLensSample();
   const bool keep_emitted = ctx.KeepsEmitted();
   const int aov_channels = std::max(ctx.AovChannels(), 0);
+  const int sets = std::clamp(WavelengthSets(), 1, kMaxWavelengthSets);
+  const int batch_samples = kCameraBatch / sets;
   CameraBatch b(ctx.sampler(), aov_channels);
 
-  // Starts sample k of the batch at (pixel, index): its film position (the sampler's pattern,
-  // or `u_film` when given), its wavelengths (from `u_lambda` when given; the sampler's
-  // dimension is taken either way) and its lens position.
-  auto start = [&](int k, Vec2i pixel, int index, const Vec2f* u_film, const float* u_lambda) {
-    Sampler& sk = b.samplers[k];
-    sk.StartPixelSample(pixel, index);
-    PatternSample ps = sk.GetPixelSample();
+  // Starts set `set` of a sample in slot j, at (pixel, index): its film position (the
+  // sampler's pattern, or `u_film` when given), its wavelengths (from `u_lambda` when given;
+  // the sampler's dimension is taken either way) and its lens position. Every set of a sample
+  // starts its sampler alike.
+  auto start = [&](int j, int set, Vec2i pixel, int index, const Vec2f* u_film, const float* u_lambda) {
+    Sampler& sj = b.samplers[j];
+    sj.StartPixelSample(pixel, index);
+    PatternSample ps = sj.GetPixelSample();
     if (u_film) ps = {*u_film, 1.f};
-    b.filter_samples[k] = ctx.filter().Sample(ps.u);
-    b.weights[k] = b.filter_samples[k].weight * ps.weight;
-    const float ul = sk.Get1D();
-    b.lambdas[k] = SampledWavelengths::SampleVisible(u_lambda ? *u_lambda : ul);
-    const Vec2f offset = b.filter_samples[k].offset;
-    const Vec2f lens = lens_sample ? sk.Get2D() : Vec2f(0.5f, 0.5f);
-    b.camera_samples[k] = {Vec2f(pixel.x + 0.5f + offset.x, pixel.y + 0.5f + offset.y), lens, pixel};
+    b.filter_samples[j] = ctx.filter().Sample(ps.u);
+    b.weights[j] = b.filter_samples[j].weight * ps.weight;
+    const float ul = sj.Get1D();
+    float u = (u_lambda ? *u_lambda : ul) + float(set) / float(sets * kSpectrumSamples);
+    u = std::min(u - std::floor(u), kOneMinusEpsilon);
+    b.lambdas[j] = SampledWavelengths::SampleVisible(u);
+    const Vec2f offset = b.filter_samples[j].offset;
+    const Vec2f lens = lens_sample ? sj.Get2D() : Vec2f(0.5f, 0.5f);
+    b.camera_samples[j] = {Vec2f(pixel.x + 0.5f + offset.x, pixel.y + 0.5f + offset.y), lens, pixel};
   };
-  // Traces the batch's n samples (started) and estimates each: b.L, b.Le, b.aovs.
+  // Traces the batch's n samples (started, n x sets slots) and estimates each: b.xyz,
+  // b.xyz_emitted, b.aovs.
   auto trace = [&](Vec2i pixel, int n) {
-    camera.GenerateRays(std::span(b.camera_samples.data(), n), std::span(b.lambdas.data(), n),
-                        std::span(b.rays.data(), n), ctx.camera_rays());
-    for (int k = 0; k < n; ++k) {
-      b.first_rays[k] = b.rays[k] ? &b.rays[k]->ray : nullptr;
-      ctx.rays().closest += b.rays[k].has_value();
+    const int slots = n * sets;
+    camera.GenerateRays(std::span(b.camera_samples.data(), slots), std::span(b.lambdas.data(), slots),
+                        std::span(b.rays.data(), slots), ctx.camera_rays());
+    // A set whose camera ray is its set 0's (a camera that does not depend on wavelength)
+    // takes that ray's first hit.
+    auto same_ray = [&](int j) {
+      const int j0 = j - j % sets;
+      return j != j0 && b.rays[j] && b.rays[j0] && b.rays[j]->ray.o == b.rays[j0]->ray.o &&
+             b.rays[j]->ray.d == b.rays[j0]->ray.d && b.rays[j]->ray.tmax == b.rays[j0]->ray.tmax;
+    };
+    for (int j = 0; j < slots; ++j) {
+      b.first_rays[j] = b.rays[j] && !same_ray(j) ? &b.rays[j]->ray : nullptr;
+      ctx.rays().closest += b.first_rays[j] != nullptr;
     }
-    scene_.IntersectCoherent(std::span(b.first_rays.data(), n), std::span(b.first_hits.data(), n));
-    for (int k = 0; k < n; ++k) {
-      const std::optional<CameraRay>& cr = b.rays[k];
-      b.L[k] = SampledSpectrum(0.f);
+    scene_.IntersectCoherent(std::span(b.first_rays.data(), slots), std::span(b.first_hits.data(), slots));
+    for (int j = 0; j < slots; ++j) {
+      if (same_ray(j)) b.first_hits[j] = b.first_hits[j - j % sets];
+      const std::optional<CameraRay>& cr = b.rays[j];
+      b.L[j] = SampledSpectrum(0.f);
+      b.Le[j] = SampledSpectrum(0.f);
+      b.lambdas_emitted[j] = b.lambdas[j];
       // What the camera sees of emitters directly (before Li, which may drop wavelengths).
-      if (cr && keep_emitted) {
-        b.Le[k] = cr->weight * DirectEmission(cr->ray, b.first_hits[k], b.lambdas[k]);
-        b.lambdas_emitted[k] = b.lambdas[k];
-      }
-      if (aov_channels > 0 && cr)
-        EvaluateAovs(cr->ray, b.first_hits[k], b.lambdas[k],
-                     Hash(pixel.x, pixel.y, b.samplers[k].index(), 0xa0), &b.aovs[size_t(k) * aov_channels]);
-      if (cr) b.L[k] = cr->weight * Li(cr->ray, b.first_hits[k], b.lambdas[k], b.samplers[k], ctx);
-      TraceLightPaths(b.samplers[k], ctx);
+      if (cr && keep_emitted) b.Le[j] = cr->weight * DirectEmission(cr->ray, b.first_hits[j], b.lambdas[j]);
+      const int k = j / sets;
+      if (aov_channels > 0 && cr && j % sets == 0)
+        EvaluateAovs(cr->ray, b.first_hits[j], b.lambdas[j],
+                     Hash(pixel.x, pixel.y, b.samplers[j].index(), 0xa0), &b.aovs[size_t(k) * aov_channels]);
+      if (cr) b.L[j] = cr->weight * Li(cr->ray, b.first_hits[j], b.lambdas[j], b.samplers[j], ctx);
+      if (j % sets == 0) TraceLightPaths(b.samplers[j], ctx);
+    }
+    for (int k = 0; k < n; ++k) {
+      const size_t j0 = size_t(k) * sets;
+      b.xyz[k] = ctx.SampleXyz(std::span(b.L.data() + j0, sets), std::span(b.lambdas.data() + j0, sets));
+      b.xyz_emitted[k] = keep_emitted ? BlockContext::EmittedXyz(std::span(b.Le.data() + j0, sets),
+                                                                   std::span(b.lambdas_emitted.data() + j0, sets))
+                                      : std::nullopt;
     }
   };
-  // Writes an estimate with the given weight.
-  auto write = [&](Vec2i pixel, const SampledSpectrum& L, const SampledWavelengths& lambda, const SampledSpectrum& Le,
-                   const SampledWavelengths& lambda_emitted, bool has_ray, const float* aov, float weight) {
-    if (has_ray && keep_emitted) ctx.AddEmitted(pixel, Le, lambda_emitted, weight);
+  // Writes a sample's estimates with the given weight (`has_ray`: its set 0 made a camera ray,
+  // at whose wavelengths its AOVs are).
+  auto write = [&](Vec2i pixel, const std::optional<Vec3f>& xyz, const std::optional<Vec3f>& xyz_emitted, bool has_ray,
+                   const float* aov, float weight) {
+    if (xyz_emitted) ctx.AddEmitted(pixel, *xyz_emitted, weight);  // zero from a set without a camera ray
     if (has_ray && aov_channels > 0) ctx.AddAovs(pixel, aov, weight);
-    ctx.AddSample(pixel, L, lambda, weight);
+    if (xyz) ctx.AddSample(pixel, *xyz, weight);
   };
-
   if (ctx.sampler().adaptive().mode == AdaptiveMode::kWhitted) {
     const AdaptiveSettings& a = ctx.sampler().adaptive();
     const int cells = 1 << (a.max_depth + 1), side = cells + 1;  // lattice points per axis
@@ -147,18 +171,19 @@ void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
               todo.push_back(p.y * side + p.x);
             }
           }
-        for (size_t t0 = 0; t0 < todo.size(); t0 += kCameraBatch) {
-          const int n = int(std::min<size_t>(kCameraBatch, todo.size() - t0));
+        for (size_t t0 = 0; t0 < todo.size(); t0 += batch_samples) {
+          const int n = int(std::min<size_t>(batch_samples, todo.size() - t0));
           for (int k = 0; k < n; ++k) {
             const int id = todo[t0 + k];
             const Vec2f u(std::min(float(id % side) / cells, kOneMinusEpsilon),
                           std::min(float(id / side) / cells, kOneMinusEpsilon));
-            start(k, pixel, id, &u, &u_lambda);
+            for (int set = 0; set < sets; ++set) start(k * sets + set, set, pixel, id, &u, &u_lambda);
           }
           trace(pixel, n);
           for (int k = 0; k < n; ++k) {
-            LatticeSample ls{b.L[k], b.Le[k], b.lambdas[k], b.lambdas_emitted[k], b.weights[k], b.rays[k].has_value(),
-                             SampledToXYZ(b.L[k], b.lambdas[k]).y, 0, aov_store.size()};
+            const size_t j0 = size_t(k) * sets;
+            LatticeSample ls{b.xyz[k], b.xyz_emitted[k], b.weights[j0], b.rays[j0].has_value(),
+                             b.xyz[k] ? b.xyz[k]->y : 0.f, 0, aov_store.size()};
             aov_store.insert(aov_store.end(), b.aovs.begin() + size_t(k) * aov_channels,
                              b.aovs.begin() + size_t(k + 1) * aov_channels);
             at[todo[t0 + k]] = int(samples.size());
@@ -186,21 +211,21 @@ void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
         std::swap(level, next_level);
       }
       for (const LatticeSample& s : samples)
-        write(pixel, s.L, s.lambda, s.Le, s.lambda_emitted, s.has_ray, aov_store.data() + s.aov, float(s.weight * s.filter_weight));
+        write(pixel, s.xyz, s.xyz_emitted, s.has_ray, aov_store.data() + s.aov, float(s.weight * s.filter_weight));
       return int(samples.size());
     });
     return;
   }
 
   ctx.ForEachPixel([&](Vec2i pixel, SampleRange samples) {
-    for (int s0 = samples.begin; s0 < samples.end; s0 += kCameraBatch) {
-      const int n = std::min(kCameraBatch, samples.end - s0);
-      for (int k = 0; k < n; ++k) start(k, pixel, s0 + k, nullptr, nullptr);
+    for (int s0 = samples.begin; s0 < samples.end; s0 += batch_samples) {
+      const int n = std::min(batch_samples, samples.end - s0);
+      for (int k = 0; k < n; ++k)
+        for (int set = 0; set < sets; ++set) start(k * sets + set, set, pixel, s0 + k, nullptr, nullptr);
       trace(pixel, n);
       for (int k = 0; k < n; ++k)
-        write(pixel, b.L[k], b.lambdas[k], b.Le[k], b.lambdas_emitted[k], b.rays[k].has_value(),
-              b.aovs.data() + size_t(k) * aov_channels,
-              b.weights[k]);
+        write(pixel, b.xyz[k], b.xyz_emitted[k], b.rays[size_t(k) * sets].has_value(),
+              b.aovs.data() + size_t(k) * aov_channels, b.weights[size_t(k) * sets]);
     }
   });
 }

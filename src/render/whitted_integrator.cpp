@@ -26,11 +26,13 @@ SampledSpectrum WhittedIntegrator::Li(const Ray& ray, const std::optional<Surfac
                                       SampledWavelengths& lambda, Sampler& sampler, BlockContext& ctx) const {
   SampledSpectrum L = DirectEmission(ray, si, lambda);
   if (!si) return L;
-  return L + SegmentTransmittance(ray, *si, lambda) * Shade(*si, lambda, sampler, ctx.rays(), SampledSpectrum(1.f), 1);
+  RayMemo& rays = memos_.local();
+  rays.Begin(scene_, ray, ctx.rays());
+  return L + SegmentTransmittance(ray, *si, lambda) * Shade(*si, lambda, sampler, rays, SampledSpectrum(1.f), 1);
 }
 
 SampledSpectrum WhittedIntegrator::Shade(const SurfaceInteraction& si, SampledWavelengths& lambda, Sampler& sampler,
-                                         RayCounts& counts, const SampledSpectrum& weight, int segments) const {
+                                         RayMemo& rays, const SampledSpectrum& weight, int segments) const {
   // Each shadow ray and each reflected or refracted ray is one segment more.
   if (segments + 1 > settings_.max_depth) return {};
   const Material* material = si.shape->material.get();
@@ -38,7 +40,7 @@ SampledSpectrum WhittedIntegrator::Shade(const SurfaceInteraction& si, SampledWa
   const BSDF bsdf = material->GetBSDF(si, lambda);
   SampledSpectrum L(0.f);
   if (bsdf.Flags() & (kDiffuse | kGlossy)) {
-    L += LightFromSources(si, bsdf, lambda, sampler, counts);
+    L += LightFromSources(si, bsdf, lambda, sampler, rays);
     if (settings_.ambient) L += settings_.ambient->Sample(lambda) * bsdf.DiffuseReflectance(si.wo);
   }
   SpecularLobe lobes[kMaxSpecularLobes];
@@ -47,13 +49,12 @@ SampledSpectrum WhittedIntegrator::Shade(const SurfaceInteraction& si, SampledWa
     const SampledSpectrum w = weight * lobes[i].weight;
     if (w.Max() < settings_.bailout) continue;
     const Ray ray = si.SpawnRay(lobes[i].wi);
-    ++counts.closest;
-    const std::optional<SurfaceInteraction> hit = scene_.Intersect(ray);
+    const std::optional<SurfaceInteraction> hit = rays.Intersect(ray);
     SampledSpectrum Li(0.f);
     if (!hit) {
       for (const InfiniteLight* light : scene_.infinite_lights()) Li += light->Le(ray.d, lambda);
     } else {
-      Li = EmittedRadiance(*hit, lambda) + Shade(*hit, lambda, sampler, counts, w, segments + 1);
+      Li = EmittedRadiance(*hit, lambda) + Shade(*hit, lambda, sampler, rays, w, segments + 1);
       Li *= SegmentTransmittance(ray, *hit, lambda);
     }
     L += lobes[i].weight * Li;
@@ -63,12 +64,9 @@ SampledSpectrum WhittedIntegrator::Shade(const SurfaceInteraction& si, SampledWa
 
 SampledSpectrum WhittedIntegrator::LightFromSources(const SurfaceInteraction& si, const BSDF& bsdf,
                                                     const SampledWavelengths& lambda, Sampler& sampler,
-                                                    RayCounts& counts) const {
+                                                    RayMemo& rays) const {
   const Vec3f n = bsdf.frame().n;  // a bump map may have turned it
-  auto visible = [&](const Ray& ray) {
-    ++counts.shadow;
-    return !scene_.Occluded(ray);
-  };
+  auto visible = [&](const Ray& ray) { return !rays.Occluded(ray); };
   const int grid = std::max(1, settings_.shadow_grid), count = grid * grid;
   // A glossy lobe (Phong, rough metal and glass) is also sampled by the BSDF, as many times as
   // the light, the two combined by the power heuristic: light samples alone put a sharp
@@ -96,7 +94,7 @@ SampledSpectrum WhittedIntegrator::LightFromSources(const SurfaceInteraction& si
       const float w = glossy ? PowerHeuristic(ls->pdf, e.pdf) : 1.f;
       sum += f * ls->L * (w / ls->pdf);
     }
-    if (glossy) sum += BsdfSamplesOfLight(si, bsdf, *light, lambda, sampler, counts);
+    if (glossy) sum += BsdfSamplesOfLight(si, bsdf, *light, lambda, sampler, rays);
     L += sum / float(count);
   }
   return L;
@@ -104,7 +102,7 @@ SampledSpectrum WhittedIntegrator::LightFromSources(const SurfaceInteraction& si
 
 SampledSpectrum WhittedIntegrator::BsdfSamplesOfLight(const SurfaceInteraction& si, const BSDF& bsdf, const Light& light,
                                                       const SampledWavelengths& lambda, Sampler& sampler,
-                                                      RayCounts& counts) const {
+                                                      RayMemo& rays) const {
   const int grid = std::max(1, settings_.shadow_grid);
   const Vec2f offset = sampler.Get2D();
   const float uc0 = sampler.Get1D();
@@ -118,8 +116,7 @@ SampledSpectrum WhittedIntegrator::BsdfSamplesOfLight(const SurfaceInteraction& 
     const std::optional<BSDFSample> bs = bsdf.Sample(si.wo, uc, GridPoint(k, grid, offset));
     if (!bs || bs->IsSpecular()) continue;
     const Ray ray = si.SpawnRay(bs->wi);
-    ++counts.closest;
-    const std::optional<SurfaceInteraction> hit = scene_.Intersect(ray);
+    const std::optional<SurfaceInteraction> hit = rays.Intersect(ray);
     SampledSpectrum Le;
     float light_pdf = 0;
     if (hit) {

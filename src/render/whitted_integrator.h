@@ -16,6 +16,11 @@
 // absorption of the glass it runs in. Shadow rays stop at glass, as they do in the classic
 // tracers and in the path tracer's light sampling.
 //
+// Each camera sample is estimated at wavelength_sets sets of wavelengths (default 4: sixteen
+// wavelengths, CameraPathIntegrator::WavelengthSets), the sets' repeated rays answered by a
+// RayMemo: a frame without the colour noise of four wavelengths a pixel, for less than the
+// price of four frames (where glass disperses, the sets' rays part and each is traced).
+//
 // max_depth counts path segments as Mitsuba does (1: emitters seen directly, 2: direct
 // light, each reflection or refraction one more), at most kMaxDepth: every branch is followed,
 // so the recursion needs a bound (two mirrors facing each other never dim the light); a branch
@@ -24,7 +29,10 @@
 #pragma once
 #include <optional>
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include "render/integrator.h"
+#include "render/ray_memo.h"
 
 namespace objektiv {
 
@@ -33,6 +41,7 @@ struct WhittedSettings {
   static constexpr float kMinBailout = 1e-4f;
   int max_depth = 8;
   int shadow_grid = 4;  // n: n x n shadow rays per area or environment light
+  int wavelength_sets = 4;
   float bailout = 1.f / 255;
   std::optional<Spectrum> ambient;  // radiance from every direction, unshadowed
 };
@@ -44,19 +53,21 @@ class WhittedIntegrator final : public CameraPathIntegrator {
   SampledSpectrum Li(const Ray& ray, const std::optional<SurfaceInteraction>& first_hit, SampledWavelengths& lambda,
                      Sampler& sampler, BlockContext& ctx) const override;
   bool LightsTheSceneItself() const override { return settings_.ambient.has_value(); }
+  int WavelengthSets() const override { return settings_.wavelength_sets; }
 
  private:
   // Light leaving si toward the ray's origin (emission excluded); `weight` is the share of it
   // that reaches the camera, `segments` the path's segments so far.
   SampledSpectrum Shade(const SurfaceInteraction& si, SampledWavelengths& lambda, Sampler& sampler,
-                        RayCounts& counts, const SampledSpectrum& weight, int segments) const;
+                        RayMemo& rays, const SampledSpectrum& weight, int segments) const;
   SampledSpectrum LightFromSources(const SurfaceInteraction& si, const BSDF& bsdf, const SampledWavelengths& lambda,
-                                   Sampler& sampler, RayCounts& counts) const;
+                                   Sampler& sampler, RayMemo& rays) const;
   // n x n samples of a glossy BSDF toward an area or environment light, weighted against the
   // light's own samples (multiple importance sampling, power heuristic).
   SampledSpectrum BsdfSamplesOfLight(const SurfaceInteraction& si, const BSDF& bsdf, const Light& light,
-                                     const SampledWavelengths& lambda, Sampler& sampler, RayCounts& counts) const;
+                                     const SampledWavelengths& lambda, Sampler& sampler, RayMemo& rays) const;
   WhittedSettings settings_;
+  mutable tbb::enumerable_thread_specific<RayMemo> memos_;  // each thread's sample at a time
 };
 
 }  // namespace objektiv
