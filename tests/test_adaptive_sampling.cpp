@@ -8,10 +8,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "base/error.h"
 #include "image_estimates.h"
+#include "render/adaptive_sampling.h"
 #include "render/progressive_render.h"
 #include "render_helpers.h"
 #include "sanitizer_build.h"
@@ -307,15 +309,19 @@ TEST(AdaptiveSampling, WhittedSubdividesAtTheEdgeOnly) {
   const Rendered r = Render(EdgeScene("whitted", "<sampler type=\"sobol\">" + Whitted(3) + "</sampler>"));
   const double lit = MeanCount(r.counts, regions.flat_lit), dark = MeanCount(r.counts, regions.flat_dark),
                edge = MeanCount(r.counts, regions.edge);
-  std::printf("whitted depth 3: samples per pixel flat lit %.1f, flat dark %.1f, edge %.1f (5 to 289)\n", lit, dark,
+  std::printf("whitted depth 3: samples per pixel flat lit %.1f, flat dark %.1f, edge %.1f (5 to 145)\n", lit, dark,
               edge);
   EXPECT_EQ(dark, 5);
   EXPECT_EQ(lit, 5);
   EXPECT_GT(edge, 20);
+  // The corners and centres of every square of depth 3, (2^3 + 1)^2 + 4^3, and no more.
+  EXPECT_EQ(WhittedMaxSamples(3), 145);
+  uint32_t most = 0;
   for (uint32_t n : r.counts) {
     EXPECT_GE(n, 5u);
-    EXPECT_LE(n, 289u);
+    most = std::max(most, n);
   }
+  EXPECT_LE(most, 145u);
 }
 
 // Deeper subdivision traces the edge more finely: the edge pixels' coverage error against a

@@ -53,9 +53,13 @@ void ApplySamplingOptions(const RenderArgs& a, SamplerSettings& s) {
     const auto& t = kTypes.at(a.sampler);  // (checked by its option)
     s.kind = t.first, s.pattern = t.second;
   }
+  const AdaptiveMode scene_mode = s.adaptive.mode;
   if (a.adaptive == "none") s.adaptive.mode = AdaptiveMode::kNone;
   if (a.adaptive == "statistical") s.adaptive.mode = AdaptiveMode::kStatistical;
   if (a.adaptive == "whitted") s.adaptive.mode = AdaptiveMode::kWhitted;
+  // A mode other than the scene's takes its own default (a contrast and a relative error are
+  // not the same measure).
+  if (s.adaptive.mode != scene_mode) s.adaptive.threshold = AdaptiveSettings::DefaultThreshold(s.adaptive.mode);
   if (a.adaptive_threshold > 0) s.adaptive.threshold = a.adaptive_threshold;
   if (a.adaptive_min > 0) s.adaptive.min_samples = a.adaptive_min;
   if (a.adaptive_min > 0 && s.adaptive.mode != AdaptiveMode::kStatistical)
@@ -338,7 +342,7 @@ int RunRender(const RenderArgs& a) {
         const uint32_t n = film.SampleCount(Vec2i(x, y));
         lo = std::min(lo, n), hi = std::max(hi, n), total += n;
       }
-    std::printf("adaptive %s: %llu camera samples, %u to %u per pixel (mean %.4g)%s\n", AdaptiveModeName(adaptive),
+    std::printf("%s: %llu camera samples, %u to %u per pixel (mean %.4g)%s\n", DescribeSampling(setup.sampler).c_str(),
                 (unsigned long long)total, lo, hi, film.samples_per_pixel(),
                 a.sample_count_layer && !anaglyph ? ", channel sample_count" : "");
   } else if (!a.quiet && a.sample_count_layer && !anaglyph) {

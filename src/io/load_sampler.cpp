@@ -55,7 +55,7 @@ SamplerSettings BuildSamplerSettings(const ObjectNode* node) {
   AdaptiveSettings& a = s.adaptive;
   a.mode = p.Choice("adaptive", AdaptiveMode::kNone, kAdaptiveModes);
   const bool statistical = a.mode == AdaptiveMode::kStatistical, whitted = a.mode == AdaptiveMode::kWhitted;
-  a.threshold = p.FloatIn("adaptive_threshold", whitted ? 0.1 : 0.05, 1e-6, 1e6);
+  a.threshold = p.FloatIn("adaptive_threshold", AdaptiveSettings::DefaultThreshold(a.mode), 1e-6, 1e6);
   a.min_samples = int(p.IntIn("adaptive_min_samples", 16, 2, 1 << 24));
   a.floor = p.FloatIn("adaptive_floor", 0.01, 0, 1e30);
   a.max_depth = int(p.IntIn("adaptive_max_depth", 2, 0, 4));
@@ -77,7 +77,8 @@ SamplerSettings BuildSamplerSettings(const ObjectNode* node) {
                                    "the pixel's squares); it cannot take the {} pattern: use a sobol, stratified or "
                                    "independent sampler", p.loc().file, p.loc().line, PixelPatternName(s.pattern)));
     unused("sample_count",
-           "to adaptive = whitted: a pixel takes 5 to (2^(adaptive_max_depth+1)+1)^2 samples as its contrast asks");
+           "to adaptive = whitted: a pixel takes 5 to (2^adaptive_max_depth+1)^2 + 4^adaptive_max_depth samples as "
+           "its contrast asks (41 at depth 2)");
   }
   CheckSamplerSettings(s, fmt::format("{}:{}", p.loc().file, p.loc().line));
   p.WarnUnused();

@@ -56,8 +56,10 @@ uint64_t PixelsDone(const Film& film, const Sampler& sampler, int end) {
 }
 
 int WhittedMaxSamples(int max_depth) {
-  const int side = (1 << (max_depth + 1)) + 1;
-  return side * side;
+  // Every square of the deepest level: its corners, on a lattice 2^max_depth + 1 points a
+  // side, and its centre.
+  const int corners = (1 << max_depth) + 1;
+  return corners * corners + (1 << (2 * max_depth));
 }
 
 }  // namespace objektiv

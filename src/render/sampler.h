@@ -31,7 +31,8 @@ struct AdaptiveSettings {
   AdaptiveMode mode = AdaptiveMode::kNone;
   // statistical: the relative standard error of the pixel's mean luminance to reach;
   // whitted: the luminance contrast (max - min) / (max + min + floor) that subdivides.
-  double threshold = 0.05;
+  double threshold = 0.05;  // DefaultThreshold(mode) unless given
+  static double DefaultThreshold(AdaptiveMode m) { return m == AdaptiveMode::kWhitted ? 0.1 : 0.05; }
   int min_samples = 16;  // statistical: the pilot every pixel takes (the cap is the sample count)
   // Luminance (the film's linear Y, before exposure) under which a pixel counts as dark: the
   // relative error is taken against max(|mean|, floor), the contrast's denominator adds it.
