@@ -178,6 +178,23 @@ TEST(Whitted, AmbientTermIsTheLightOfAnUnshadowedUniformSky) {
   ExpectSameImage(path, whitted, 0.03, "ambient");
 }
 
+// Rough glass is seen through: a slab of rough glass in front of a glowing wall shows the wall as
+// the path tracer shows it with the same paths (max_depth 3: through the slab's two faces to
+// the wall). It was black: only the light sources were taken through rough glass, and shadow
+// rays stop at glass; the wall's light is found from the slab's back face. (A lit wall would
+// not do: the slab's blur of its own shadow moves light between the blocks compared.) The
+// wall reflects nothing, and the slab's edges are out of view (they take light in through its
+// sides by total internal reflection).
+TEST(Whitted, RoughGlassShowsWhatLiesBehindIt) {
+  const std::string shapes = R"(
+  <shape type="rectangle"><transform name="to_world"><scale value="3"/><translate y="0.5" z="-1.5"/></transform>
+    <bsdf type="diffuse"><rgb name="reflectance" value="0"/></bsdf>
+    <emitter type="area"><rgb name="radiance" value="0.7, 0.6, 0.5"/></emitter></shape>
+  <shape type="cube"><transform name="to_world"><scale x="3" y="3" z="0.05"/><translate y="0.5" z="0"/></transform>
+    <bsdf type="roughdielectric"><float name="alpha" value="0.05"/></bsdf></shape>)";
+  ExpectSameAsPathTracer(shapes, 3, 16, 4, 0.03, "rough glass slab");
+}
+
 // Per pixel, the mean absolute difference of neighbours' chromaticities (x and y, from the
 // image's RGB summed): the colour noise of an image whose colours vary smoothly.
 double ChromaNoise(const Image& img) {

@@ -59,7 +59,25 @@ SampledSpectrum WhittedIntegrator::Shade(const SurfaceInteraction& si, SampledWa
     }
     L += lobes[i].weight * Li;
   }
+  if ((bsdf.Flags() & kGlossy) && (bsdf.Flags() & kTransmission))
+    L += GlossyTransmission(si, bsdf, lambda, sampler, rays, weight, segments);
   return L;
+}
+
+SampledSpectrum WhittedIntegrator::GlossyTransmission(const SurfaceInteraction& si, const BSDF& bsdf,
+                                                      SampledWavelengths& lambda, Sampler& sampler, RayMemo& rays,
+                                                      const SampledSpectrum& weight, int segments) const {
+  const float uc = sampler.Get1D();
+  const Vec2f u = sampler.Get2D();
+  const std::optional<BSDFSample> bs = bsdf.Sample(si.wo, uc, u);
+  if (!bs || bs->IsSpecular() || !bs->IsTransmission() || !(bs->pdf > 0)) return {};
+  const SampledSpectrum t = bs->f * (AbsDot(bs->wi, bsdf.frame().n) / bs->pdf);
+  const SampledSpectrum w = weight * t;
+  if (!(w.Max() >= settings_.bailout)) return {};
+  const Ray ray = si.SpawnRay(bs->wi);
+  const std::optional<SurfaceInteraction> hit = rays.Intersect(ray);
+  if (!hit) return {};  // the sky through it: BsdfSamplesOfLight's
+  return t * SegmentTransmittance(ray, *hit, lambda) * Shade(*hit, lambda, sampler, rays, w, segments + 1);
 }
 
 SampledSpectrum WhittedIntegrator::LightFromSources(const SurfaceInteraction& si, const BSDF& bsdf,

@@ -13,8 +13,11 @@
 // multiple importance sampling; an optional ambient radiance times the diffuse reflectance; then each
 // delta lobe (mirror, Fresnel-weighted reflection and refraction of smooth glass, total internal
 // reflection included, plastic's coat) followed by a ray of its own, through the Beer-Lambert
-// absorption of the glass it runs in. Shadow rays stop at glass, as they do in the classic
-// tracers and in the path tracer's light sampling.
+// absorption of the glass it runs in; a glossy transmitter (rough glass) sends one ray sampled
+// from its BSDF through, where the sample is a transmission (Cook's distributed ray tracing:
+// what lies behind rough glass, blurred and, at one sample, grainy). Shadow rays stop at glass,
+// as they do in the classic tracers and in the path tracer's light sampling: a light source seen
+// through glass is found by the BSDF's samples only (its MIS share: dimmer than in `path`).
 //
 // Each camera sample is estimated at wavelength_sets sets of wavelengths (default 4: sixteen
 // wavelengths, CameraPathIntegrator::WavelengthSets), the sets' repeated rays answered by a
@@ -62,6 +65,10 @@ class WhittedIntegrator final : public CameraPathIntegrator {
                         RayMemo& rays, const SampledSpectrum& weight, int segments) const;
   SampledSpectrum LightFromSources(const SurfaceInteraction& si, const BSDF& bsdf, const SampledWavelengths& lambda,
                                    Sampler& sampler, RayMemo& rays) const;
+  // What lies behind a glossy transmitter (rough glass): one ray sampled from its BSDF, followed
+  // where it is transmitted (the light sources seen through it are BsdfSamplesOfLight's).
+  SampledSpectrum GlossyTransmission(const SurfaceInteraction& si, const BSDF& bsdf, SampledWavelengths& lambda,
+                                     Sampler& sampler, RayMemo& rays, const SampledSpectrum& weight, int segments) const;
   // n x n samples of a glossy BSDF toward an area or environment light, weighted against the
   // light's own samples (multiple importance sampling, power heuristic).
   SampledSpectrum BsdfSamplesOfLight(const SurfaceInteraction& si, const BSDF& bsdf, const Light& light,
