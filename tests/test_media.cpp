@@ -221,6 +221,32 @@ TEST(Media, PureAbsorberDimsEveryPixelByItsTransmittanceWithoutNoise) {
   EXPECT_LT(worst, 1.5e-4) << "largest deviation of a pixel's ratio from exp(-sigma_t)";
 }
 
+// A medium inside a surface that lets no light through is never entered: said, with its line;
+// inside glass, a null boundary or a blend holding glass, nothing is said.
+TEST(Media, AMediumInsideAnOpaqueSurfaceIsWarnedAbout) {
+  auto warnings = [](const std::string& bsdf) {
+    test::LogCapture log;
+    LoadSceneFromString(fmt::format(R"(<scene version="3.0.0">{}
+  <shape type="sphere">{}
+    <medium type="homogeneous" name="interior"><float name="sigma_t" value="1"/></medium>
+  </shape>
+</scene>)",
+                                    Sensor(1, 4), bsdf),
+                        "opaque.xml", {});
+    return log.Text();
+  };
+  const std::string diffuse = warnings(R"(<bsdf type="diffuse"/>)");
+  EXPECT_NE(diffuse.find("opaque.xml:"), std::string::npos) << diffuse;
+  EXPECT_NE(diffuse.find("interior medium is never entered"), std::string::npos) << diffuse;
+  EXPECT_NE(warnings(R"(<bsdf type="bumpmap"><texture type="checkerboard"/><bsdf type="conductor"/></bsdf>)")
+                .find("never entered"),
+            std::string::npos);
+  for (const char* passes : {R"(<bsdf type="dielectric"/>)", R"(<bsdf type="null"/>)", R"(<bsdf type="thindielectric"/>)",
+                             R"(<bsdf type="roughdielectric"/>)", R"(<bsdf type="principled"/>)",
+                             R"(<bsdf type="blendbsdf"><bsdf type="diffuse"/><bsdf type="dielectric"/></bsdf>)"})
+    EXPECT_EQ(warnings(passes).find("never entered"), std::string::npos) << passes;
+}
+
 // A phase function or sample_emitters on a medium that scatters nowhere changes nothing: said.
 TEST(Media, ScatteringSettingsOfAPureAbsorberAreWarnedAbout) {
   auto warnings = [](const std::string& medium) {

@@ -72,8 +72,24 @@ void ApplySamplingOptions(const RenderArgs& a, SamplerSettings& s) {
                                                          PixelPatternName(s.pattern)));
 }
 
+// The camera samples each pixel of the crop took: fewest, most, all (adaptive sampling's spread).
+struct PixelSampleCounts {
+  uint32_t lo = UINT32_MAX, hi = 0;
+  uint64_t total = 0;
+};
+PixelSampleCounts CountPixelSamples(const Film& film, const CropWindow& crop) {
+  PixelSampleCounts c;
+  for (int y = crop.y0; y < crop.y1; ++y)
+    for (int x = crop.x0; x < crop.x1; ++x) {
+      const uint32_t n = film.SampleCount(Vec2i(x, y));
+      c.lo = std::min(c.lo, n), c.hi = std::max(c.hi, n), c.total += n;
+    }
+  return c;
+}
+
+// `counts`: with adaptive sampling, the pixels' sample counts ("spp" is then the cap).
 void WriteStatsJson(const std::string& path, const RenderStats& s, int threads, const LensLayers& layers,
-                    const ProgressiveResult& r) {
+                    const ProgressiveResult& r, const std::optional<PixelSampleCounts>& counts) {
   nlohmann::ordered_json j = {{"seconds", s.seconds},
                               {"spp", s.spp},
                               {"width", s.width},
@@ -93,6 +109,11 @@ void WriteStatsJson(const std::string& path, const RenderStats& s, int threads, 
                               {"render_end", RenderEndName(r.end)},
                               {"rendering_seconds_in_all", r.elapsed}};
   if (r.noise >= 0) j["noise"] = r.noise;
+  if (counts) {
+    j["samples_per_pixel_min"] = counts->lo;
+    j["samples_per_pixel_max"] = counts->hi;
+    j["samples_per_pixel_mean"] = s.pixels ? double(counts->total) / double(s.pixels) : 0.0;
+  }
   if (!layers.ghosts.empty()) {
     j["ghost_seconds"] = layers.ghost_seconds;
     j["ghosts_traced"] = layers.ghosts_traced;
@@ -319,7 +340,9 @@ int RunRender(const RenderArgs& a) {
   // Ctrl-C during the lens's passes leaves the samples whole but the image not: partial too.
   const bool stopped = interrupted || InterruptSignal() != 0;
   if (!stopped && fs::exists(checkpoint)) fs::remove(checkpoint);
-  if (!a.stats_json.empty()) WriteStatsJson(a.stats_json, stats, threads, layers, result);
+  const std::optional<PixelSampleCounts> counts =
+      adaptive != AdaptiveMode::kNone ? std::optional(CountPixelSamples(film, fs_.crop)) : std::nullopt;
+  if (!a.stats_json.empty()) WriteStatsJson(a.stats_json, stats, threads, layers, result, counts);
   // An anaglyph's film holds both eyes side by side; its image is one eye wide.
   const auto* rig = dynamic_cast<const StereoCamera*>(setup.camera.get());
   const bool anaglyph = rig && rig->layout() == StereoLayout::kAnaglyph;
@@ -334,16 +357,9 @@ int RunRender(const RenderArgs& a) {
                                        : "no camera ray traced",
                 (unsigned long long)stats.nan_count, (unsigned long long)stats.inf_count, exr.string().c_str(),
                 part ? "" : (", " + png.string()).c_str(), stopped ? " (partial)" : "");
-  if (!a.quiet && adaptive != AdaptiveMode::kNone) {
-    uint32_t lo = UINT32_MAX, hi = 0;
-    uint64_t total = 0;
-    for (int y = fs_.crop.y0; y < fs_.crop.y1; ++y)
-      for (int x = fs_.crop.x0; x < fs_.crop.x1; ++x) {
-        const uint32_t n = film.SampleCount(Vec2i(x, y));
-        lo = std::min(lo, n), hi = std::max(hi, n), total += n;
-      }
+  if (!a.quiet && counts) {
     std::printf("%s: %llu camera samples, %u to %u per pixel (mean %.4g)%s\n", DescribeSampling(setup.sampler).c_str(),
-                (unsigned long long)total, lo, hi, film.samples_per_pixel(),
+                (unsigned long long)counts->total, counts->lo, counts->hi, film.samples_per_pixel(),
                 a.sample_count_layer && !anaglyph ? ", channel sample_count" : "");
   } else if (!a.quiet && a.sample_count_layer && !anaglyph) {
     std::printf("%llu camera samples in all, channel sample_count\n", (unsigned long long)stats.samples);

@@ -1,5 +1,7 @@
 // The <shape> plugins: meshes from files and analytic shapes (with their BSDFs and area
 // emitters), shape groups and their instances.
+#include <spdlog/spdlog.h>
+
 #include "io/loader_context.h"
 #include "io/mesh_io.h"
 #include "scene/analytic_shape.h"
@@ -88,6 +90,10 @@ void AddSurfaces(const Properties& props, ShapeList shapes, LoaderContext& ctx, 
     throw ErrorAt(props.LocOf(props.Has("interior") ? "interior" : "exterior"),
                   "a shape that bounds a medium cannot have a mask BSDF (rays through its holes would not enter the "
                   "medium): bound the medium by a null or a closed surface of its own");
+  if (interior && !material->MayTransmit())
+    spdlog::warn("{}:{}: this shape's interior medium is never entered: its BSDF lets no light through (a medium "
+                 "inside glass needs a dielectric, roughdielectric, thindielectric, principled with spec_trans, or null)",
+                 props.LocOf("interior").file, props.LocOf("interior").line);
   if (group >= 0) {
     if (medium_interface)
       throw ErrorAt(props.LocOf(props.Has("interior") ? "interior" : "exterior"),

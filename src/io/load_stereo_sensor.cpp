@@ -74,14 +74,14 @@ std::unique_ptr<Camera> BuildStereo(const Properties& p, const SensorBase& b) {
     if (!(convergence > 0 && convergence < 1e30))
       throw ErrorAt(p.LocOf("convergence_distance"), "convergence_distance must be a distance above 0 and below 1e30 (metres), got {}",
                     convergence);
+  } else if (in.type == "orthographic") {
+    throw ErrorAt(p.LocOf("frustum"), "an orthographic camera moved sideways sees the same picture, shifted: with "
+                  "frustum 'parallel' its eyes would show no depth; use 'offaxis' (the eyes turn toward the "
+                  "convergence plane)");
   } else if (p.Has("convergence_distance")) {
     spdlog::warn("{}:{}: convergence_distance does nothing with frustum 'parallel' (the frusta are not shifted)",
                  p.LocOf("convergence_distance").file, p.LocOf("convergence_distance").line);
   }
-  if (in.type == "orthographic" && !offaxis)
-    throw ErrorAt(p.LocOf("frustum"), "an orthographic camera moved sideways sees the same picture, shifted: with "
-                  "frustum 'parallel' its eyes would show no depth; use 'offaxis' (the eyes turn toward the "
-                  "convergence plane)");
   // The left eye at +x (the camera's left), the right one at -x.
   std::unique_ptr<Camera> left = BuildEye(in, b, {separation / 2, convergence});
   std::unique_ptr<Camera> right;

@@ -25,6 +25,7 @@ class BlendMaterial final : public Material {
   float Opacity(const SurfaceInteraction& si) const override;
   bool HasOpacity() const override { return a_->HasOpacity() || b_->HasOpacity(); }
   int Leaves() const override { return a_->Leaves() + b_->Leaves(); }
+  bool MayTransmit() const override { return a_->MayTransmit() || b_->MayTransmit(); }
 
  private:
   std::shared_ptr<Material> a_, b_;

@@ -33,6 +33,9 @@ class Material {
   // Mitsuba 3's `null`: not a surface at all, only the boundary of a medium, which rays pass
   // straight through (the path tracer steps over it; it has no BSDF to sample).
   virtual bool IsNull() const { return false; }
+  // Whether light may pass through the surface (glass, a null boundary, what holds one): a
+  // medium behind a surface that passes none is never entered.
+  virtual bool MayTransmit() const { return false; }
 
  protected:
   bool two_sided_ = false;
@@ -44,6 +47,7 @@ class NullMaterial final : public Material {
  public:
   BSDF GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const override;
   bool IsNull() const override { return true; }
+  bool MayTransmit() const override { return true; }
 };
 
 class DiffuseMaterial final : public Material {
@@ -64,6 +68,7 @@ class DielectricMaterial final : public Material {
   BSDF GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const override;
   const Spectrum* Absorption() const override { return absorption_ ? &*absorption_ : nullptr; }
   void SetAbsorption(Spectrum sigma_a) { absorption_ = std::move(sigma_a); }
+  bool MayTransmit() const override { return true; }
 
  private:
   std::optional<Spectrum> absorption_;
@@ -82,6 +87,7 @@ class ThinDielectricMaterial final : public Material {
       : int_ior_(std::move(int_ior)), ext_ior_(ext_ior), specular_reflectance_(std::move(specular_reflectance)),
         specular_transmittance_(std::move(specular_transmittance)) {}
   BSDF GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const override;
+  bool MayTransmit() const override { return true; }
 
  private:
   IorModel int_ior_;
@@ -141,6 +147,7 @@ class PrincipledMaterial final : public Material {
   };
   explicit PrincipledMaterial(Parameters p) : p_(std::move(p)), tables_(PrincipledTables::For(p_.eta)) {}
   BSDF GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const override;
+  bool MayTransmit() const override { return true; }  // (where spec_trans > 0)
 
  private:
   Parameters p_;

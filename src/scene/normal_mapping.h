@@ -39,6 +39,7 @@ class PerturbedNormalMaterial : public Material {
   float Opacity(const SurfaceInteraction& si) const override { return inner_->Opacity(si); }
   bool HasOpacity() const override { return inner_->HasOpacity(); }
   int Leaves() const override { return inner_->Leaves(); }
+  bool MayTransmit() const override { return inner_->MayTransmit(); }
 
  protected:
   virtual Frame Perturb(const SurfaceInteraction& si) const = 0;
