@@ -43,6 +43,12 @@ TEST(RayMemo, RepeatsAnswersOnlyForTheSameRaysOfTheSameCameraRay) {
   EXPECT_TRUE(memo.Occluded(shadow));
   EXPECT_EQ(counts.closest, 3u);
   EXPECT_EQ(counts.shadow, 3u);
+  // Not recording (a sample of one set): nothing is kept, a set begun after it replays nothing.
+  memo.Begin(scene, camera, counts, /*record=*/false);
+  EXPECT_TRUE(memo.Intersect(to_ball));
+  memo.Begin(scene, camera, counts);
+  EXPECT_TRUE(memo.Intersect(to_ball));
+  EXPECT_EQ(counts.closest, 5u);
 }
 
 }  // namespace

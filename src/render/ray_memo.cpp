@@ -8,9 +8,17 @@ namespace {
 bool SameRay(const Ray& a, const Ray& b) { return a.o == b.o && a.d == b.d && a.tmax == b.tmax; }
 }  // namespace
 
-void RayMemo::Begin(const Scene& scene, const Ray& camera_ray, RayCounts& counts) {
+void RayMemo::Begin(const Scene& scene, const Ray& camera_ray, RayCounts& counts, bool record) {
   counts_ = &counts;
   cursor_ = 0;
+  recording_ = record;
+  if (!record) {
+    scene_ = &scene;
+    replaying_ = false;
+    entries_.clear();
+    hits_.clear();
+    return;
+  }
   replaying_ = scene_ == &scene && SameRay(camera_ray, camera_ray_);
   if (replaying_) return;
   scene_ = &scene;
@@ -34,7 +42,7 @@ std::optional<SurfaceInteraction> RayMemo::Intersect(const Ray& ray) {
   if (const Entry* e = Find(ray, false)) return hits_[e->hit];
   ++counts_->closest;
   std::optional<SurfaceInteraction> hit = scene_->Intersect(ray);
-  if (entries_.size() < kMaxEntries) {
+  if (recording_ && entries_.size() < kMaxEntries) {
     entries_.push_back({ray, false, false, hits_.size()});
     hits_.push_back(hit);
   }
@@ -45,7 +53,7 @@ bool RayMemo::Occluded(const Ray& ray) {
   if (const Entry* e = Find(ray, true)) return e->answer;
   ++counts_->shadow;
   const bool occluded = scene_->Occluded(ray);
-  if (entries_.size() < kMaxEntries) {
+  if (recording_ && entries_.size() < kMaxEntries) {
     entries_.push_back({ray, true, occluded});
   }
   return occluded;

@@ -6,8 +6,9 @@
 // (origin, direction, tmax) and kind of query, so it is always what the scene would answer; a
 // ray not recorded is traced (and counted) and recorded.
 //
-// Begin(scene, camera ray, counts) starts a set: a camera ray or scene other than the last
-// one's starts a new record, made without looking anything up. A later set looks its rays up
+// Begin(scene, camera ray, counts, record) starts a set: a camera ray or scene other than the
+// last one's starts a new record, made without looking anything up (none with record false:
+// a sample of one set has nothing to share, and every ray goes straight to the scene). A later set looks its rays up
 // in the order they were recorded: at the cursor or up to kWindow entries after it (where a
 // branch of the first set's path was not taken, its rays are passed over); a ray not found
 // there is traced and added. At most kMaxEntries rays a sample.
@@ -23,7 +24,7 @@ namespace objektiv {
 class RayMemo {
  public:
   static constexpr size_t kMaxEntries = 4096, kWindow = 64;
-  void Begin(const Scene& scene, const Ray& camera_ray, RayCounts& counts);
+  void Begin(const Scene& scene, const Ray& camera_ray, RayCounts& counts, bool record = true);
   std::optional<SurfaceInteraction> Intersect(const Ray& ray);
   bool Occluded(const Ray& ray);
 
@@ -42,6 +43,7 @@ class RayMemo {
   std::vector<std::optional<SurfaceInteraction>> hits_;
   size_t cursor_ = 0;
   bool replaying_ = false;  // a later set of the recorded sample
+  bool recording_ = true;
 };
 
 }  // namespace objektiv

@@ -27,7 +27,7 @@ SampledSpectrum WhittedIntegrator::Li(const Ray& ray, const std::optional<Surfac
   SampledSpectrum L = DirectEmission(ray, si, lambda);
   if (!si) return L;
   RayMemo& rays = memos_.local();
-  rays.Begin(scene_, ray, ctx.rays());
+  rays.Begin(scene_, ray, ctx.rays(), settings_.wavelength_sets > 1);
   return L + SegmentTransmittance(ray, *si, lambda) * Shade(*si, lambda, sampler, rays, SampledSpectrum(1.f), 1);
 }
 
