@@ -166,6 +166,21 @@ TEST(LensLayers, DiffractionKernelMatchesTheStopsPsf) {
   EXPECT_NEAR(ks, 1, 1e-5);
 }
 
+// The kernel's pixels are summed in one order whatever the threads (they were summed from
+// per-thread accumulators, in an order that depended on which thread took which wavelength).
+TEST(LensLayers, DiffractionKernelIsTheSameOnAnyNumberOfThreads) {
+  const StopShape iris = StopShape::Iris(7, 0.3, 0.1);
+  const PupilFunction pupil = [&](double u, double v) { return iris.Contains(u, v) ? 1.0 : 0.0; };
+  auto kernel = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    return MakeDiffractionKernel(pupil, 5.6, 4, 5, 60, 8);
+  };
+  const DiffractionKernel one = kernel(1), four = kernel(4);
+  ASSERT_EQ(one.radius, four.radius);
+  ASSERT_EQ(one.xyz.size(), four.xyz.size());
+  for (size_t i = 0; i < one.xyz.size(); ++i) ASSERT_EQ(one.xyz[i], four.xyz[i]) << i;
+}
+
 TEST(LensLayers, AnApertureMasksGreyLevelsDimTheLightsImageAndGhosts) {
   SKIP_UNDER_SANITIZERS("RealisticCamera.ApertureMaskWeightsTheLightThroughTheStop and LensLayers.GhostsFallAsTheCoatingsReflectancesPredict");
   // A uniform grey mask (128 of 255, read raw: 0.502) passes half the light everywhere.

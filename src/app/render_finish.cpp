@@ -69,9 +69,13 @@ void AddLensLayers(const LensLayers& layers, const ColorSpace& cs, float exposur
     header.push_back({"objektiv:ghosts_traced", layers.ghosts_traced});
     header.push_back({"objektiv:ghosts_culled", layers.ghosts_culled});
     header.push_back({"objektiv:glare_paths", double(layers.glare_paths)});
-    spdlog::info("ghosts: {} bright point{}, {} ghosts traced, {} culled as too dim, {} let no light through; {:.2f} s",
-                 layers.flare_sources, layers.flare_sources == 1 ? "" : "s", layers.ghosts_traced, layers.ghosts_culled,
-                 layers.ghosts_dark, layers.ghost_seconds);
+    if (layers.flare_sources > 0)
+      spdlog::info("ghosts: {} bright point{}, {} ghosts traced, {} culled as too dim, {} let no light through; {:.2f} s",
+                   layers.flare_sources, layers.flare_sources == 1 ? "" : "s", layers.ghosts_traced,
+                   layers.ghosts_culled, layers.ghosts_dark, layers.ghost_seconds);
+    else
+      spdlog::info("ghosts: no point, spot or directional light in front of the lens to trace ghost bundles from{}",
+                   layers.glare_paths > 0 ? " (the other lights' ghosts come from light tracing, below)" : "");
   }
   if (layers.glare_paths < layers.glare_paths_asked)
     spdlog::warn("interrupted: ghosts and glare by light tracing from {} of the {} paths asked for (noisier)",
