@@ -238,11 +238,13 @@ TEST(Media, AMediumInsideAnOpaqueSurfaceIsWarnedAbout) {
   const std::string diffuse = warnings(R"(<bsdf type="diffuse"/>)");
   EXPECT_NE(diffuse.find("opaque.xml:"), std::string::npos) << diffuse;
   EXPECT_NE(diffuse.find("interior medium is never entered"), std::string::npos) << diffuse;
-  EXPECT_NE(warnings(R"(<bsdf type="bumpmap"><texture type="checkerboard"/><bsdf type="conductor"/></bsdf>)")
-                .find("never entered"),
-            std::string::npos);
+  for (const char* opaque : {R"(<bsdf type="bumpmap"><texture type="checkerboard"/><bsdf type="conductor"/></bsdf>)",
+                             R"(<bsdf type="principled"/>)",  // spec_trans 0 by default
+                             R"(<bsdf type="dielectric"><rgb name="specular_transmittance" value="0"/></bsdf>)"})
+    EXPECT_NE(warnings(opaque).find("never entered"), std::string::npos) << opaque;
   for (const char* passes : {R"(<bsdf type="dielectric"/>)", R"(<bsdf type="null"/>)", R"(<bsdf type="thindielectric"/>)",
-                             R"(<bsdf type="roughdielectric"/>)", R"(<bsdf type="principled"/>)",
+                             R"(<bsdf type="roughdielectric"/>)",
+                             R"(<bsdf type="principled"><float name="spec_trans" value="0.5"/></bsdf>)",
                              R"(<bsdf type="blendbsdf"><bsdf type="diffuse"/><bsdf type="dielectric"/></bsdf>)"})
     EXPECT_EQ(warnings(passes).find("never entered"), std::string::npos) << passes;
 }

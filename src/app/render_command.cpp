@@ -20,7 +20,6 @@
 #include "io/render_part.h"
 #include "render/adaptive_sampling.h"
 #include "render/progressive_render.h"
-#include "render/whitted_integrator.h"
 
 namespace objektiv {
 namespace {
@@ -72,13 +71,16 @@ void ApplySamplingOptions(const RenderArgs& a, SamplerSettings& s) {
                                                          PixelPatternName(s.pattern)));
 }
 
-// The camera samples each pixel of the crop took: fewest, most, all (adaptive sampling's spread).
+// The camera samples each pixel of the crop took: fewest, most, all (adaptive sampling's
+// spread), and the most a pixel may take (the cap).
 struct PixelSampleCounts {
   uint32_t lo = UINT32_MAX, hi = 0;
   uint64_t total = 0;
+  int cap = 0;
 };
-PixelSampleCounts CountPixelSamples(const Film& film, const CropWindow& crop) {
+PixelSampleCounts CountPixelSamples(const Film& film, const CropWindow& crop, const SamplerSettings& sampler) {
   PixelSampleCounts c;
+  c.cap = sampler.adaptive.mode == AdaptiveMode::kWhitted ? WhittedMaxSamples(sampler.adaptive.max_depth) : sampler.spp;
   for (int y = crop.y0; y < crop.y1; ++y)
     for (int x = crop.x0; x < crop.x1; ++x) {
       const uint32_t n = film.SampleCount(Vec2i(x, y));
@@ -110,6 +112,7 @@ void WriteStatsJson(const std::string& path, const RenderStats& s, int threads, 
                               {"rendering_seconds_in_all", r.elapsed}};
   if (r.noise >= 0) j["noise"] = r.noise;
   if (counts) {
+    j["spp"] = counts->cap;
     j["samples_per_pixel_min"] = counts->lo;
     j["samples_per_pixel_max"] = counts->hi;
     j["samples_per_pixel_mean"] = s.pixels ? double(counts->total) / double(s.pixels) : 0.0;
@@ -220,7 +223,7 @@ int RunRender(const RenderArgs& a) {
   if (adaptive == AdaptiveMode::kWhitted && a.spp > 0)
     spdlog::warn("--spp does not apply to adaptive whitted: a pixel takes 5 to {} samples as its contrast asks",
                  WhittedMaxSamples(setup.sampler.adaptive.max_depth));
-  if (adaptive == AdaptiveMode::kWhitted && !dynamic_cast<const WhittedIntegrator*>(setup.integrator.get()))
+  if (adaptive == AdaptiveMode::kWhitted && !setup.integrator->NearlyNoiseFree())
     spdlog::warn("{}: adaptive whitted subdivides where a pixel's samples differ; this integrator's noise makes them "
                  "differ everywhere (--adaptive statistical is meant for it)", a.scene);
   if (adaptive != AdaptiveMode::kNone && setup.integrator->TracesLightToCamera())
@@ -341,7 +344,7 @@ int RunRender(const RenderArgs& a) {
   const bool stopped = interrupted || InterruptSignal() != 0;
   if (!stopped && fs::exists(checkpoint)) fs::remove(checkpoint);
   const std::optional<PixelSampleCounts> counts =
-      adaptive != AdaptiveMode::kNone ? std::optional(CountPixelSamples(film, fs_.crop)) : std::nullopt;
+      adaptive != AdaptiveMode::kNone ? std::optional(CountPixelSamples(film, fs_.crop, setup.sampler)) : std::nullopt;
   if (!a.stats_json.empty()) WriteStatsJson(a.stats_json, stats, threads, layers, result, counts);
   // An anaglyph's film holds both eyes side by side; its image is one eye wide.
   const auto* rig = dynamic_cast<const StereoCamera*>(setup.camera.get());

@@ -55,6 +55,7 @@ class AovIntegrator final : public CameraPathIntegrator {
   // medium boundary included), which the loader warns about.
   bool RendersMedia() const override { return inner_->RendersMedia(); }
   int WavelengthSets() const override { return inner_->WavelengthSets(); }
+  bool NearlyNoiseFree() const override { return inner_->NearlyNoiseFree(); }
   int AovChannels() const override;
   // The AOVs' exact sums in the film, then their float channels in the image (twice: the
   // image is copied): 16 + 2 x 4 bytes per channel and the weight.

@@ -78,7 +78,12 @@ void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
     b.filter_samples[j] = ctx.filter().Sample(ps.u);
     b.weights[j] = b.filter_samples[j].weight * ps.weight;
     const float ul = sj.Get1D();
-    float u = (u_lambda ? *u_lambda : ul) + float(set) / float(sets * kSpectrumSamples);
+    // Set k's four at u + k / (4 sets) + i / 4; its first (the hero, which dispersive glass
+    // keeps alone) turned to the (k mod 4)th of them, so that the sets' heroes spread over the
+    // quarters of the range instead of sharing the first one (through dispersive glass four
+    // sets were little better than two).
+    float u = (u_lambda ? *u_lambda : ul) + float(set) / float(sets * kSpectrumSamples) +
+              float(set % kSpectrumSamples) / float(kSpectrumSamples);
     u = std::min(u - std::floor(u), kOneMinusEpsilon);
     b.lambdas[j] = SampledWavelengths::SampleVisible(u);
     const Vec2f offset = b.filter_samples[j].offset;

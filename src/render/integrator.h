@@ -20,6 +20,9 @@ class Integrator {
   virtual bool TracesLightToCamera() const { return false; }
   // Whether it lights the scene without emitters (whitted's ambient term).
   virtual bool LightsTheSceneItself() const { return false; }
+  // Whether one sample per pixel is nearly free of noise (the classic tracer), so that where a
+  // pixel's samples differ the image does: what adaptive whitted subdivision is meant for.
+  virtual bool NearlyNoiseFree() const { return false; }
   // Whether it follows light through participating media and across null surfaces
   // (Scene::HasMedia): the scene loader refuses such scenes to integrators that do not.
   virtual bool RendersMedia() const { return false; }
@@ -60,7 +63,8 @@ class CameraPathIntegrator : public Integrator {
   // estimated at (1 to kMaxWavelengthSets). With n sets, a sample's wavelength number u places
   // its n x kSpectrumSamples wavelengths at u + j / (n kSpectrumSamples) (mod 1) of the visible
   // density, set k taking j = k, k + n, ...: stratified, each set alone distributed as one
-  // set is. Each set is a camera ray (the same one where the camera does not depend on
+  // set is; set k's hero (the wavelength dispersive glass keeps) is its (k mod 4)th, so that
+  // the sets' heroes spread over the range too. Each set is a camera ray (the same one where the camera does not depend on
   // wavelength: traced to its first hit once) and a call of Li with a copy of the sample's
   // sampler started alike, so that everything but the spectra repeats; the sample is the
   // sets' average in XYZ. Four wavelengths a sample leave colour noise in every pixel

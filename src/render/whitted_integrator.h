@@ -57,6 +57,7 @@ class WhittedIntegrator final : public CameraPathIntegrator {
                      Sampler& sampler, BlockContext& ctx) const override;
   bool LightsTheSceneItself() const override { return settings_.ambient.has_value(); }
   int WavelengthSets() const override { return settings_.wavelength_sets; }
+  bool NearlyNoiseFree() const override { return true; }
 
  private:
   // Light leaving si toward the ray's origin (emission excluded); `weight` is the share of it

@@ -68,7 +68,10 @@ class DielectricMaterial final : public Material {
   BSDF GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const override;
   const Spectrum* Absorption() const override { return absorption_ ? &*absorption_ : nullptr; }
   void SetAbsorption(Spectrum sigma_a) { absorption_ = std::move(sigma_a); }
-  bool MayTransmit() const override { return true; }
+  // (Texture values are not negative: a mean of zero is zero everywhere.)
+  bool MayTransmit() const override {
+    return !specular_transmittance_ || specular_transmittance_->MeanRgb() != Vec3f(0.f);
+  }
 
  private:
   std::optional<Spectrum> absorption_;
@@ -87,7 +90,9 @@ class ThinDielectricMaterial final : public Material {
       : int_ior_(std::move(int_ior)), ext_ior_(ext_ior), specular_reflectance_(std::move(specular_reflectance)),
         specular_transmittance_(std::move(specular_transmittance)) {}
   BSDF GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const override;
-  bool MayTransmit() const override { return true; }
+  bool MayTransmit() const override {
+    return !specular_transmittance_ || specular_transmittance_->MeanRgb() != Vec3f(0.f);
+  }
 
  private:
   IorModel int_ior_;
@@ -147,7 +152,7 @@ class PrincipledMaterial final : public Material {
   };
   explicit PrincipledMaterial(Parameters p) : p_(std::move(p)), tables_(PrincipledTables::For(p_.eta)) {}
   BSDF GetBSDF(const SurfaceInteraction& si, SampledWavelengths& lambda) const override;
-  bool MayTransmit() const override { return true; }  // (where spec_trans > 0)
+  bool MayTransmit() const override { return p_.spec_trans && p_.spec_trans->MeanRgb() != Vec3f(0.f); }
 
  private:
   Parameters p_;
