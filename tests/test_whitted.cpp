@@ -228,6 +228,23 @@ TEST(Whitted, WavelengthSetsTakeTheColourNoiseOut) {
   ExpectSameImage(a, b, 0.01, "one set and four");
 }
 
+// Dispersive glass keeps each set's hero wavelength alone: the sets' heroes are spread over the
+// range (they lay in its first quarter, and four sets took the colour grain of a white wall
+// seen through flint glass only from 1.96 to 1.34; now to 0.45).
+TEST(Whitted, WavelengthSetsSpreadTheirHeroesThroughDispersiveGlass) {
+  auto scene = [](int sets) {
+    return Scene(Integrator("whitted", 6, fmt::format(R"(<integer name="wavelength_sets" value="{}"/>)", sets)), R"(
+  <shape type="rectangle"><transform name="to_world"><scale value="3"/><translate y="0.5" z="-1.5"/></transform>
+    <bsdf type="diffuse"><rgb name="reflectance" value="0"/></bsdf>
+    <emitter type="area"><rgb name="radiance" value="1, 1, 1"/></emitter></shape>
+  <shape type="cube"><transform name="to_world"><scale x="3" y="3" z="0.1"/><rotate y="1" angle="30"/><translate y="0.5"/></transform>
+    <bsdf type="dielectric"><string name="int_ior" value="N-SF11"/></bsdf></shape>)",
+                 1, 1);
+  };
+  const double one = ChromaNoise(RenderXml(scene(1)).image), four = ChromaNoise(RenderXml(scene(4)).image);
+  EXPECT_LT(four, 0.5 * one) << "colour noise through flint glass with one set " << one << ", with four " << four;
+}
+
 // Where nothing depends on wavelength the sets trace the first set's rays only (RayMemo; the
 // Phong ball, which picks its lobe by their spectral weights, parts a few); where glass
 // disperses, their rays part and each is traced, the image still the same as one set's.
