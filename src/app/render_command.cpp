@@ -65,6 +65,10 @@ void ApplySamplingOptions(const RenderArgs& a, SamplerSettings& s) {
     throw CLI::ValidationError("--adaptive-min-samples", "applies to statistical adaptive sampling only (--adaptive statistical)");
   if (a.adaptive_threshold > 0 && s.adaptive.mode == AdaptiveMode::kNone)
     throw CLI::ValidationError("--adaptive-threshold", "applies to adaptive sampling only (--adaptive statistical or whitted)");
+  if (s.adaptive.mode == AdaptiveMode::kWhitted && scene_mode != AdaptiveMode::kWhitted && s.spp_given && a.spp <= 0)
+    spdlog::warn("--adaptive whitted: the scene's sample_count ({}) does not apply: a pixel takes 5 to {} samples as "
+                 "its contrast asks",
+                 s.spp, WhittedMaxSamples(s.adaptive.max_depth));
   if (s.adaptive.mode == AdaptiveMode::kWhitted && s.pattern != PixelPattern::kSampler)
     throw CLI::ValidationError("--adaptive", fmt::format("whitted places its own samples; it cannot take the {} pattern "
                                                          "(use a sobol, stratified or independent sampler)",

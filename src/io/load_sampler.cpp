@@ -48,6 +48,7 @@ SamplerSettings BuildSamplerSettings(const ObjectNode* node) {
   s.kind = type.kind;
   s.pattern = type.pattern;
   s.spp = int(p.IntIn("sample_count", 4, 1, 1 << 24));
+  s.spp_given = p.Has("sample_count");
   s.seed = uint64_t(p.IntIn("seed", 0, 0, INT64_MAX));
   if (!p.Bool("jitter", true))  // stratified/multijitter: always jittered here
     spdlog::warn("{}:{}: sampler: jitter = false is not supported; samples are jittered", p.LocOf("jitter").file,

@@ -29,6 +29,7 @@ struct SamplerSettings {
   SamplerKind kind = SamplerKind::kIndependent;
   PixelPattern pattern = PixelPattern::kSampler;
   int spp = 4;
+  bool spp_given = false;  // the scene's sampler wrote sample_count
   uint64_t seed = 0;
   AdaptiveSettings adaptive;
 };
