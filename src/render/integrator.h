@@ -64,12 +64,12 @@ class CameraPathIntegrator : public Integrator {
   // its n x kSpectrumSamples wavelengths at u + j / (n kSpectrumSamples) (mod 1) of the visible
   // density, set k taking j = k, k + n, ...: stratified, each set alone distributed as one
   // set is; set k's hero (the wavelength dispersive glass keeps) is its (k mod 4)th, so that
-  // the sets' heroes spread over the range too. Each set is a camera ray (the same one where the camera does not depend on
-  // wavelength: traced to its first hit once) and a call of Li with a copy of the sample's
-  // sampler started alike, so that everything but the spectra repeats; the sample is the
-  // sets' average in XYZ. Four wavelengths a sample leave colour noise in every pixel
-  // (a flat white's Z estimate 50% rms); sixteen, 1.7%. For an integrator that repeats its
-  // paths' rays cheaply (whitted's RayMemo).
+  // the sets' heroes spread over the range too. Each set is a camera ray (the same one where
+  // the camera does not depend on wavelength: traced to its first hit once) and a call of Li
+  // with a copy of the sample's sampler started alike, so that everything but the spectra
+  // repeats; the sample is the sets' average in XYZ. Four wavelengths a sample leave colour
+  // noise in every pixel (a flat white's Z estimate 50% rms); sixteen, 1.7%. For an
+  // integrator that repeats its paths' rays cheaply (whitted's RayMemo).
   static constexpr int kMaxWavelengthSets = 8;
   virtual int WavelengthSets() const { return 1; }
 

@@ -16,8 +16,8 @@
 // absorption of the glass it runs in; a glossy transmitter (rough glass) sends one ray sampled
 // from its BSDF through, where the sample is a transmission (Cook's distributed ray tracing:
 // what lies behind rough glass, blurred and, at one sample, grainy). Shadow rays stop at glass,
-// as they do in the classic tracers and in the path tracer's light sampling: a light source seen
-// through glass is found by the BSDF's samples only (its MIS share: dimmer than in `path`).
+// as they do in the classic tracers and in the path tracer's light sampling: a light source
+// behind a piece of rough glass is found from the glass's far side, where that ray leaves it.
 //
 // Each camera sample is estimated at wavelength_sets sets of wavelengths (default 4: sixteen
 // wavelengths, CameraPathIntegrator::WavelengthSets), the sets' repeated rays answered by a
