@@ -65,10 +65,6 @@ void ApplySamplingOptions(const RenderArgs& a, SamplerSettings& s) {
     throw CLI::ValidationError("--adaptive-min-samples", "applies to statistical adaptive sampling only (--adaptive statistical)");
   if (a.adaptive_threshold > 0 && s.adaptive.mode == AdaptiveMode::kNone)
     throw CLI::ValidationError("--adaptive-threshold", "applies to adaptive sampling only (--adaptive statistical or whitted)");
-  if (s.adaptive.mode == AdaptiveMode::kWhitted && scene_mode != AdaptiveMode::kWhitted && s.spp_given && a.spp <= 0)
-    spdlog::warn("--adaptive whitted: the scene's sample_count ({}) does not apply: a pixel takes 5 to {} samples as "
-                 "its contrast asks",
-                 s.spp, WhittedMaxSamples(s.adaptive.max_depth));
   if (s.adaptive.mode == AdaptiveMode::kWhitted && s.pattern != PixelPattern::kSampler)
     throw CLI::ValidationError("--adaptive", fmt::format("whitted places its own samples; it cannot take the {} pattern "
                                                          "(use a sobol, stratified or independent sampler)",
@@ -193,6 +189,8 @@ int RunRender(const RenderArgs& a) {
   if (!a.stats_json.empty()) outputs.push_back({"--stats-json", a.stats_json});
   CheckOutputsWritable(outputs);
   RenderSetup setup = LoadScene(a.scene, defines, GlassCatalog::Default());
+  // (The scene's sample_count under its own adaptive whitted is warned about by the loader.)
+  const bool scene_count_given = setup.sampler.spp_given && setup.sampler.adaptive.mode != AdaptiveMode::kWhitted;
   if (a.spp > 0) setup.sampler.spp = a.spp;
   ApplySamplingOptions(a, setup.sampler);
   const AdaptiveMode adaptive = setup.sampler.adaptive.mode;
@@ -224,8 +222,9 @@ int RunRender(const RenderArgs& a) {
     throw InputError(fmt::format("{}: adaptive whitted takes each pixel whole in one go, so it has no passes to stop "
                                  "after: --time-limit and --noise-target cannot apply (--adaptive statistical can)",
                                  a.scene));
-  if (adaptive == AdaptiveMode::kWhitted && a.spp > 0)
-    spdlog::warn("--spp does not apply to adaptive whitted: a pixel takes 5 to {} samples as its contrast asks",
+  if (adaptive == AdaptiveMode::kWhitted && (a.spp > 0 || scene_count_given))
+    spdlog::warn("{} does not apply to adaptive whitted: a pixel takes 5 to {} samples as its contrast asks",
+                 a.spp > 0 ? std::string("--spp") : fmt::format("the scene's sample_count ({})", setup.sampler.spp),
                  WhittedMaxSamples(setup.sampler.adaptive.max_depth));
   if (adaptive == AdaptiveMode::kWhitted && !setup.integrator->NearlyNoiseFree())
     spdlog::warn("{}: adaptive whitted subdivides where a pixel's samples differ; this integrator's noise makes them "

@@ -125,12 +125,7 @@ class BlockContext {
   // A camera sample's radiance at one or more sets of wavelengths as XYZ, the sets' average;
   // empty (and counted) if any is not finite.
   std::optional<Vec3f> SampleXyz(std::span<const SampledSpectrum> L, std::span<const SampledWavelengths> lambda) {
-    Vec3f xyz(0.f);
-    for (size_t k = 0; k < L.size(); ++k) {
-      if (!Finite(L[k])) return std::nullopt;
-      xyz += SampledToXYZ(L[k], lambda[k]);
-    }
-    return xyz / float(L.size());
+    return AverageXyz(L, lambda, [&](const SampledSpectrum& s) { return Finite(s); });
   }
   // One camera sample of a pixel of this block (SampleXyz), weighted by the filter's sample weight.
   void AddSample(Vec2i pixel, const Vec3f& xyz, float filter_weight) { film_.AddXyzSample(pixel, xyz, filter_weight); }
@@ -139,12 +134,7 @@ class BlockContext {
   // sample's radiance is).
   bool KeepsEmitted() const { return film_.keeps_emitted(); }
   static std::optional<Vec3f> EmittedXyz(std::span<const SampledSpectrum> Le, std::span<const SampledWavelengths> lambda) {
-    Vec3f xyz(0.f);
-    for (size_t k = 0; k < Le.size(); ++k) {
-      if (Le[k].HasNaN() || Le[k].HasInf()) return std::nullopt;
-      xyz += SampledToXYZ(Le[k], lambda[k]);
-    }
-    return xyz / float(Le.size());
+    return AverageXyz(Le, lambda, [](const SampledSpectrum& s) { return !s.HasNaN() && !s.HasInf(); });
   }
   void AddEmitted(Vec2i pixel, const Vec3f& xyz, float filter_weight) { film_.AddEmittedXyz(pixel, xyz, filter_weight); }
   // The AOVs of a camera sample of a pixel of this block (the film's channels: Film::KeepAovs).
@@ -176,6 +166,17 @@ class BlockContext {
   CameraRayCount& camera_rays() { return counters_.camera; }
 
  private:
+  // The average in XYZ of spectra at their wavelengths; empty if `usable` refuses one.
+  template <class Usable>
+  static std::optional<Vec3f> AverageXyz(std::span<const SampledSpectrum> L, std::span<const SampledWavelengths> lambda,
+                                         Usable&& usable) {
+    Vec3f xyz(0.f);
+    for (size_t k = 0; k < L.size(); ++k) {
+      if (!usable(L[k])) return std::nullopt;
+      xyz += SampledToXYZ(L[k], lambda[k]);
+    }
+    return xyz / float(L.size());
+  }
   // Non-finite radiance is counted and dropped, never written to the film; so is radiance
   // beyond kLargestRadiance, which the film's conversion to XYZ (over a wavelength's density)
   // and its sums over samples would carry past single precision into Inf and NaN pixels.

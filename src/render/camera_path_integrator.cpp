@@ -109,7 +109,7 @@ void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
     }
     scene_.IntersectCoherent(std::span(b.first_rays.data(), slots), std::span(b.first_hits.data(), slots));
     for (int j = 0; j < slots; ++j) {
-      if (same_ray(j)) b.first_hits[j] = b.first_hits[j - j % sets];
+      if (b.rays[j] && !b.first_rays[j]) b.first_hits[j] = b.first_hits[j - j % sets];  // (same_ray)
       const std::optional<CameraRay>& cr = b.rays[j];
       b.L[j] = SampledSpectrum(0.f);
       b.Le[j] = SampledSpectrum(0.f);

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "base/bounds.h"
+#include "base/lowdiscrepancy.h"
 #include "base/progress.h"
 #include "base/rng.h"
 #include "render/adaptive_sampling.h"
@@ -24,16 +25,6 @@
 namespace objektiv {
 
 namespace {
-
-// The base-2 radical inverse of i (its bits mirrored about the binary point), in [0, 1).
-float SppmRadicalInverse2(uint32_t i) {
-  i = (i << 16) | (i >> 16);
-  i = ((i & 0x00ff00ffu) << 8) | ((i & 0xff00ff00u) >> 8);
-  i = ((i & 0x0f0f0f0fu) << 4) | ((i & 0xf0f0f0f0u) >> 4);
-  i = ((i & 0x33333333u) << 2) | ((i & 0xccccccccu) >> 2);
-  i = ((i & 0x55555555u) << 1) | ((i & 0xaaaaaaaau) >> 1);
-  return std::min(float(i) * 0x1p-32f, kOneMinusEpsilon);
-}
 
 // A pixel's visible point of the current iteration: where its camera path first met a surface
 // that is not purely specular. `beta` is the camera path's throughput there (the camera's
@@ -207,7 +198,7 @@ RenderStats SppmIntegrator::RenderImage(const Camera& camera, const Sampler& sam
   // whole image that changed with the seed (blue 14% low at 16 iterations). Each iteration's
   // four lie one in each quarter of the range of the visible density's inverse, at u + j/4 with
   // u uniform in [0, 1/4) (unbiased on its own); u is the base-2 radical inverse of the
-  // iteration, turned by one random offset, scaled into [0, 1/4): after 2^k iterations the
+  // iteration (Sobol's first dimension), turned by one random offset, scaled into [0, 1/4): after 2^k iterations the
   // 4 x 2^k wavelengths are stratified evenly over the range (sixteen after four iterations:
   // a smooth spectrum's X, Y, Z within 2%).
   Sampler lambda_sampler(sampler);
@@ -215,7 +206,7 @@ RenderStats SppmIntegrator::RenderImage(const Camera& camera, const Sampler& sam
   const float lambda_offset = lambda_sampler.Get1D();
   for (int it = 0; it < iterations; ++it) {
     if (options.stop && options.stop->load(std::memory_order_relaxed)) break;
-    float u_lambda = SppmRadicalInverse2(uint32_t(it)) + lambda_offset;
+    float u_lambda = std::min(float(Sobol0(uint32_t(it))) * 0x1p-32f, kOneMinusEpsilon) + lambda_offset;
     u_lambda = std::min((u_lambda - std::floor(u_lambda)) * 0.25f, 0.25f * kOneMinusEpsilon);
     const SampledWavelengths lambda_it = SampledWavelengths::SampleVisible(u_lambda);
 
