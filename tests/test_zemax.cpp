@@ -109,12 +109,63 @@ TEST(Zemax, UnsupportedThingsAreNamed) {
     ParseZemaxLens(unknown_glass, "g.zmx", GlassCatalog::Default());
     ADD_FAILURE();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("g.zmx:9: unknown glass 'NOPE'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("g.zmx:9: glass NOPE is in no catalog (searched SCHOTT, OHARA, HOYA, CDGM, SUMITA, HIKARI); give it in "
+                                                 "g.glass beside the lens (a line 'glass NOPE nd=N vd=V'"), std::string::npos) << e.what();
   }
   // An unknown keyword is a warning, not an error.
   std::string odd = "WEIRD 1 2 3\nSURF 0\n DISZ INFINITY\nSURF 1\n STOP\n DISZ 1\n DIAM 4\n ODDITY 5\nSURF 2\n CURV 0.01\n"
                     " GLAS N-BK7\n DISZ 3\n DIAM 4\nSURF 3\n DISZ 10\n DIAM 4\nSURF 4\n DISZ 0\n DIAM 4\n";
   EXPECT_NO_THROW(ParseZemaxLens(odd, "o.zmx", GlassCatalog::Default()));
+}
+
+// MODE, ENVD and MNUM were ignored silently: a non-sequential file loaded, a lens at 60 C and a
+// zoom's other configurations went unmentioned.
+TEST(Zemax, ModeEnvironmentAndConfigurationsAreReadOrWarnedAbout) {
+  const std::string lens = "SURF 0\n DISZ INFINITY\nSURF 1\n STOP\n DISZ 1\n DIAM 4\nSURF 2\n CURV 0.01\n GLAS N-BK7\n"
+                           " DISZ 3\n DIAM 4\nSURF 3\n DISZ 10\n DIAM 4\nSURF 4\n";
+  try {
+    ParseZemaxLens("MODE NSC\n" + lens, "n.zmx", GlassCatalog::Default());
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("n.zmx:1: MODE NSC: not a sequential lens file"), std::string::npos) << e.what();
+  }
+  test::LogCapture log;
+  ParseZemaxLens("MODE SEQ\nENVD 2.0E+1 1 0\nMNUM 1 1\n" + lens, "q.zmx", GlassCatalog::Default());
+  EXPECT_TRUE(log.Text().empty()) << log.Text();
+  ParseZemaxLens("ENVD 60 1 1\nMNUM 3 2\n" + lens, "e.zmx", GlassCatalog::Default());
+  EXPECT_TRUE(log.Has("e.zmx:1: ENVD: the lens at 60 C and 1 atm is not modelled")) << log.Text();
+  EXPECT_TRUE(log.Has("e.zmx:2: a file of 3 configurations: the lens is read as stored (configuration 2)")) << log.Text();
+}
+
+// A dummy plane in air with DIAM 0 (Zemax computed no semi-diameter) neither refracts nor
+// clips: it is left out and its thickness joins the gap before it (it was an error).
+TEST(Zemax, DummyPlaneWithoutSemiDiameterIsLeftOut) {
+  const std::string with_dummy = "SURF 0\n DISZ INFINITY\nSURF 1\n STOP\n DISZ 1\n DIAM 4\nSURF 2\n CURV 0.01\n"
+                                 " GLAS N-BK7\n DISZ 3\n DIAM 4\nSURF 3\n DISZ 4\n DIAM 4\nSURF 4\n DISZ 6\n DIAM 0\nSURF 5\n";
+  LensPrescription lens = ParseZemaxLens(with_dummy, "d.zmx", GlassCatalog::Default());
+  ASSERT_EQ(lens.surfaces.size(), 3u);
+  EXPECT_DOUBLE_EQ(lens.surfaces.back().thickness, 10);
+  // In glass, or curved, DIAM 0 is still an error.
+  std::string in_glass = with_dummy;
+  in_glass.replace(in_glass.find(" DISZ 4"), 7, " GLAS N-BK7\n DISZ 4");
+  EXPECT_THROW(ParseZemaxLens(in_glass, "d.zmx", GlassCatalog::Default()), InputError);
+}
+
+// CLAP rmin rmax is a circular aperture that clips (Zemax's DIAM does not): the semi-diameter.
+TEST(Zemax, CircularApertureIsTheSemiDiameter) {
+  const std::string lens = "SURF 0\n DISZ INFINITY\nSURF 1\n STOP\n DISZ 1\n DIAM 4\nSURF 2\n CURV 0.01\n GLAS N-BK7\n"
+                           " DISZ 3\n DIAM 4\n CLAP 0 3.5 0\nSURF 3\n DISZ 10\n DIAM 4\nSURF 4\n";
+  LensPrescription l = ParseZemaxLens(lens, "c.zmx", GlassCatalog::Default());
+  EXPECT_DOUBLE_EQ(l.surfaces[1].semi_diameter, 3.5);
+  EXPECT_DOUBLE_EQ(l.surfaces[2].semi_diameter, 4);
+  std::string annular = lens;
+  annular.replace(annular.find("CLAP 0 3.5"), 10, "CLAP 1 3.5");
+  try {
+    ParseZemaxLens(annular, "c.zmx", GlassCatalog::Default());
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("c.zmx:12: CLAP 1 3.5: an annular aperture"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Zemax, NonFiniteValuesAndIndicesBelowOneNameTheLine) {
@@ -148,7 +199,8 @@ TEST(Zemax, NonFiniteValuesAndIndicesBelowOneNameTheLine) {
       {13, "  GLAS ___BLANK 1 0 0.5 50", false, "model glass needs nd >= 1 and vd > 0, got nd 0.5"},
       {13, "  GLAS ___BLANK 1 0 1.67 -50", false, "model glass needs nd >= 1 and vd > 0"},
       {13, "  GLAS ___BLANK 1 0 1.67 Infinity", false, "not a finite number"},
-      {13, "  GLAS NOT-A-GLASS 1 0 0.9 50", false, "model glass needs nd >= 1"},
+      {13, "  GLAS NOT-A-GLASS 1 0 0.9 50", false, "glass NOT-A-GLASS: the stated nd 0.9 and vd 50 are no glass's"},
+      {13, "  GLAS N-SF5 1 0 0.9 50", false, "glass N-SF5: the stated nd 0.9 and vd 50 are no glass's"},
       {15, "  PARM 2.5 1", true, "PARM index '2.5' is not an integer from 1 to 8"},
       {15, "  PARM 1e10 1", true, "PARM index '1e10'"},
       {15, "  PARM -2147483649 1", true, "PARM index"},

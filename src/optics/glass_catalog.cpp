@@ -13,15 +13,11 @@
 #include "base/text_file.h"
 
 namespace objektiv {
-namespace {
-
-std::string Upper(std::string_view s) {
+std::string GlassKey(std::string_view s) {
   std::string r(s);
   for (char& c : r) c = char(std::toupper(static_cast<unsigned char>(c)));
   return r;
 }
-
-}  // namespace
 
 void GlassCatalog::LoadAgf(const std::string& path, const std::string& name) {
   LoadAgfText(ReadTextFile(path, "glass catalog"), path, name);
@@ -29,8 +25,9 @@ void GlassCatalog::LoadAgf(const std::string& path, const std::string& name) {
 
 void GlassCatalog::LoadAgfText(const std::string& raw, const std::string& path, const std::string& catalog) {
   std::string text = DecodeToAscii(raw);
-  auto& table = glasses_[catalog];
-  if (std::find(order_.begin(), order_.end(), catalog) == order_.end()) order_.push_back(catalog);
+  const std::string key = GlassKey(catalog);
+  auto& table = glasses_[key];
+  if (std::find(order_.begin(), order_.end(), key) == order_.end()) order_.push_back(key);
   Glass* current = nullptr;
   std::istringstream lines(text);
   std::string line;
@@ -51,10 +48,10 @@ void GlassCatalog::LoadAgfText(const std::string& raw, const std::string& path, 
       auto glass = std::make_unique<Glass>(f[0], catalog, *formula, std::array<double, 10>{});
       glass->catalog_nd = ParseFiniteNumber(f[3], path, number);
       glass->catalog_vd = ParseFiniteNumber(f[4], path, number);
-      std::string key = Upper(f[0]);
-      if (table.count(key)) throw MakeInputError(path, number, "glass {} is listed twice", f[0]);
+      std::string glass_key = GlassKey(f[0]);
+      if (table.count(glass_key)) throw MakeInputError(path, number, "glass {} is listed twice", f[0]);
       current = glass.get();
-      table[key] = std::move(glass);
+      table[glass_key] = std::move(glass);
     } else if (type == "CD" || type == "LD" || type == "IT") {
       if (!current) throw MakeInputError(path, number, "{} line before any NM line", type);
       if (type == "CD") {
@@ -104,19 +101,27 @@ const GlassCatalog& GlassCatalog::Default() {
 
 const Glass* GlassCatalog::Find(std::string_view name) const {
   size_t colon = name.find(':');
-  if (colon != std::string_view::npos) {
-    std::string cat = Upper(name.substr(0, colon));
-    auto it = glasses_.find(cat);
-    if (it == glasses_.end()) return nullptr;
-    auto g = it->second.find(Upper(name.substr(colon + 1)));
-    return g == it->second.end() ? nullptr : g->second.get();
-  }
-  std::string key = Upper(name);
-  for (const std::string& cat : order_) {
-    const auto& table = glasses_.at(cat);
-    if (auto g = table.find(key); g != table.end()) return g->second.get();
-  }
+  if (colon != std::string_view::npos) return FindIn(name.substr(0, colon), name.substr(colon + 1));
+  for (const std::string& cat : order_)
+    if (const Glass* g = FindIn(cat, name)) return g;
   return nullptr;
+}
+
+const Glass* GlassCatalog::FindIn(std::string_view catalog, std::string_view name) const {
+  auto it = glasses_.find(GlassKey(catalog));
+  if (it == glasses_.end()) return nullptr;
+  auto g = it->second.find(GlassKey(name));
+  return g == it->second.end() ? nullptr : g->second.get();
+}
+
+bool GlassCatalog::HasCatalog(std::string_view catalog) const { return glasses_.count(GlassKey(catalog)) > 0; }
+
+bool GlassCatalog::Add(const std::string& catalog, Glass glass) {
+  std::string key = GlassKey(catalog);
+  auto& table = glasses_[key];
+  if (std::find(order_.begin(), order_.end(), key) == order_.end()) order_.push_back(key);
+  std::string glass_key = GlassKey(glass.name());
+  return table.emplace(std::move(glass_key), std::make_unique<Glass>(std::move(glass))).second;
 }
 
 std::vector<const Glass*> GlassCatalog::All() const {

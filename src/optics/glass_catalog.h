@@ -24,6 +24,12 @@ class GlassCatalog {
 
   // "N-BK7" (case-insensitive; catalogs searched in load order) or "OHARA:S-BSL7".
   const Glass* Find(std::string_view name) const;
+  // `name` in catalog `catalog` only (both case-insensitive); null when either is absent.
+  const Glass* FindIn(std::string_view catalog, std::string_view name) const;
+  bool HasCatalog(std::string_view catalog) const;
+  // Adds `glass` to `catalog` (created at the end of the lookup order when new); false, and
+  // nothing added, when the catalog already holds a glass of that name.
+  bool Add(const std::string& catalog, Glass glass);
   std::vector<const Glass*> All() const;
   const std::vector<std::string>& catalogs() const { return order_; }
 
@@ -32,6 +38,9 @@ class GlassCatalog {
   // catalog -> upper-case glass name -> glass
   std::map<std::string, std::map<std::string, std::unique_ptr<Glass>>> glasses_;
 };
+
+// How catalogs compare glass and catalog names: upper case.
+std::string GlassKey(std::string_view name);
 
 // Folder of the shipped data (glass catalogs, lenses).
 std::string DataDirectory();

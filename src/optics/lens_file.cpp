@@ -13,6 +13,7 @@
 #include "base/text_file.h"
 #include "optics/coating_library.h"
 #include "optics/glass_catalog.h"
+#include "optics/lens_glasses.h"
 #include "optics/pbrt_lens.h"
 #include "optics/zemax_lens.h"
 
@@ -21,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::shared_ptr<const Glass> ParseMedium(const std::string& m, const GlassCatalog& glasses, const std::string& path,
+std::shared_ptr<const Glass> ParseMedium(const std::string& m, const LensGlasses& glasses, const std::string& path,
                                          int line) {
   if (m == "air") return nullptr;
   if (m.rfind("n=", 0) == 0) {
@@ -37,10 +38,13 @@ std::shared_ptr<const Glass> ParseMedium(const std::string& m, const GlassCatalo
     if (nd < 1 || vd <= 0) throw MakeInputError(path, line, "model glass needs nd >= 1 and vd > 0");
     return std::make_shared<const Glass>(Glass::Model(nd, vd));
   }
-  const Glass* g = glasses.Find(m);
-  if (!g) throw MakeInputError(path, line, "unknown glass '{}' (a catalog glass, air, n=..., or nd=...,vd=...)", m);
-  // Catalog glasses live as long as the program: share without owning.
-  return std::shared_ptr<const Glass>(std::shared_ptr<const Glass>(), g);
+  std::optional<GlassMatch> g = glasses.Find(m, line);
+  if (!g)
+    throw MakeInputError(path, line,
+                         "unknown glass '{}' (a glass of the catalogs {} or of a glass file {} beside the lens, air, "
+                         "n=..., or nd=...,vd=...)",
+                         m, glasses.lookup().SearchedCatalogs(), fs::path(path).filename().replace_extension(".glass").string());
+  return g->glass;
 }
 
 // The coatings a lens file defines (`coating NAME ...` lines), and which of them it used.
@@ -91,6 +95,7 @@ struct FileCoatings {
 }  // namespace
 
 LensPrescription ParseNativeLens(const std::string& text, const std::string& path, const GlassCatalog& glasses) {
+  const LensGlasses lens_glasses(path, glasses);
   LensPrescription lens;
   lens.name = fs::path(path).stem().string();
   lens.source = path;
@@ -153,7 +158,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
     }
     s.thickness = ParseFiniteNumber(f[next], path, number);
     if (s.thickness < 0) throw MakeInputError(path, number, "thickness must not be negative");
-    s.medium = ParseMedium(f[next + 1], glasses, path, number);
+    s.medium = ParseMedium(f[next + 1], lens_glasses, path, number);
     s.semi_diameter = ParseFiniteNumber(f[next + 2], path, number);
     if (!(s.semi_diameter > 0)) throw MakeInputError(path, number, "semi-diameter must be positive");
     std::vector<std::string> keys;  // each option once
@@ -211,6 +216,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
                    default_coating->name());
   }
   coatings.WarnUnused(path);
+  lens_glasses.WarnUnused();
   for (const FileCoatings::Defined& d : coatings.defined) lens.defined_coatings.push_back(d.coating);
   return lens;
 }

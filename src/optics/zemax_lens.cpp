@@ -1,5 +1,6 @@
 #include "optics/zemax_lens.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -13,6 +14,7 @@
 #include "base/text_file.h"
 #include "optics/coating_library.h"
 #include "optics/glass_catalog.h"
+#include "optics/lens_glasses.h"
 
 namespace objektiv {
 namespace {
@@ -22,6 +24,7 @@ struct ZSurface {
   std::string coat;  // COAT: a coating name (Zemax's COATING.DAT or I.xx)
   std::string type = "STANDARD";
   double curv = 0, disz = 0, diam = 0, coni = 0;
+  double clear_aperture = 0;  // CLAP: the radius that clips, where the file sets one
   bool stop = false, infinite_thickness = false;
   std::string glass;
   double model_nd = 0, model_vd = 0;
@@ -34,6 +37,64 @@ struct ZSurface {
 double Thickness(const std::string& s, const std::string& path, int line) {
   if (s == "INFINITY" || s == "Infinity" || s == "inf") return INFINITY;
   return ParseFiniteNumber(s, path, line);
+}
+
+// The nearest shipped glasses to a stated nd and Vd, for the message about a glass in no catalog.
+std::string NearestGlasses(const StatedGlass& stated, const GlassCatalog& shipped) {
+  std::vector<std::pair<double, const Glass*>> by_distance;
+  for (const Glass* g : shipped.All()) {
+    double dn = (g->catalog_nd - stated.nd) / 1e-3, dv = (g->catalog_vd - stated.vd) / 0.5;
+    by_distance.emplace_back(dn * dn + dv * dv, g);
+  }
+  const size_t n = std::min<size_t>(3, by_distance.size());
+  std::partial_sort(by_distance.begin(), by_distance.begin() + n, by_distance.end(),
+                    [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::string out;
+  for (size_t i = 0; i < n; ++i) {
+    const Glass& g = *by_distance[i].second;
+    out += fmt::format("{}{}:{} {:.5f}/{:.2f}", i ? ", " : "", g.catalog(), g.name(), g.catalog_nd, g.catalog_vd);
+  }
+  return out;
+}
+
+// A surface's glass (GLAS NAME ? ? nd Vd ...): Zemax's model glass ___BLANK through the stated nd
+// and Vd, or a glass found by name (glass_lookup.h). A name in no catalog is an error that says
+// how to supply it; a found glass whose nd and Vd disagree with the stated ones is warned about.
+std::shared_ptr<const Glass> SurfaceGlass(const ZSurface& z, const LensGlasses& glasses, const std::string& path) {
+  const GlassLookup& lookup = glasses.lookup();
+  if (z.glass == "___BLANK") {
+    if (z.model_nd < 1 || !(z.model_vd > 0))
+      throw MakeInputError(path, z.glass_line, "model glass needs nd >= 1 and vd > 0, got nd {} vd {}", z.model_nd,
+                           z.model_vd);
+    return std::make_shared<const Glass>(Glass::Model(z.model_nd, z.model_vd));
+  }
+  // A catalog glass's line carries an nd and Vd too: the glass's own in some files, Zemax's
+  // placeholder 1.5 and 40 or zeros in others (which state nothing).
+  if ((z.model_nd != 0 && z.model_nd < 1) || z.model_vd < 0)
+    throw MakeInputError(path, z.glass_line, "glass {}: the stated nd {} and vd {} are no glass's (nd >= 1, vd >= 0)",
+                         z.glass, z.model_nd, z.model_vd);
+  std::optional<StatedGlass> stated;
+  if (z.model_nd >= 1 && z.model_vd > 0 && !(z.model_nd == 1.5 && z.model_vd == 40))
+    stated = StatedGlass{z.model_nd, z.model_vd};
+  std::optional<GlassMatch> m = glasses.Find(z.glass, z.glass_line, stated);
+  if (!m) {
+    std::string values = stated ? fmt::format(" nd={} vd={}", stated->nd, stated->vd) : " nd=N vd=V";
+    throw MakeInputError(
+        path, z.glass_line,
+        "glass {} is in no catalog (searched {}){}; give it in {} beside the lens (a line 'glass {}{}', or an index "
+        "table: docs/lens-format.md), or put its maker's AGF catalog there and name it on the GCAT line",
+        z.glass, lookup.SearchedCatalogs(),
+        stated ? fmt::format(". The file states nd {} vd {}; the nearest shipped glasses are {}", stated->nd, stated->vd,
+                             NearestGlasses(*stated, lookup.shipped()))
+               : "",
+        std::filesystem::path(path).filename().replace_extension(".glass").string(), z.glass, values);
+  }
+  const Glass& g = *m->glass;
+  if (stated && !AgreesWith(g, *stated))
+    spdlog::warn("{}:{}: glass {}: the file states nd {} vd {}, but {}:{} has nd {:.5f} vd {:.2f} (another glass of that "
+                 "name?)", path, z.glass_line, z.glass, stated->nd, stated->vd, g.catalog(), g.name(),
+                 g.catalog_nd > 0 ? g.catalog_nd : g.ComputedNd(), g.catalog_vd > 0 ? g.catalog_vd : g.ComputedVd());
+  return m->glass;
 }
 
 }  // namespace
@@ -56,11 +117,16 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
   };
   // Keywords that carry nothing for sequential refraction of a rotationally symmetric lens.
   static const std::set<std::string> kIgnored = {
-      "VERS", "MODE", "NOTE", "PFIL", "LANG", "ENVD", "GFAC", "GCAT", "RAIM", "PUSH", "SDMA", "FTYP", "ROPD",
+      "VERS", "NOTE", "PFIL", "LANG", "GFAC", "RAIM", "PUSH", "SDMA", "FTYP", "ROPD",
       "PICB", "XFLN", "YFLN", "FWGN", "VDXN", "VDYN", "VCXN", "VCYN", "VANN", "WAVM", "PWAV", "GLRS", "GSTD", "NSCD",
-      "COFN", "SUMM", "MNUM", "MOFF", "TOL", "MNCA", "MNEA", "MNCG", "MNEG", "MXCA", "MXCG", "RGLA", "TRAC",
+      "COFN", "SUMM", "MOFF", "TOL", "MNCA", "MNEA", "MNCG", "MNEG", "MXCA", "MXCG", "RGLA", "TRAC",
       "HIDE", "SLAB", "MAZH", "COMM", "FLAP", "POPS", "BLNK", "TCEN", "XDAT", "YDAT", "FIMP", "OBNA", "ZVDX", "ZVDY",
-      "ZVCX", "ZVCY", "ZVAN", "WAVN", "WWGN", "CONF", "DMFS", "OPDX", "MIRR", "XFIE", "YFIE"};
+      "ZVCX", "ZVCY", "ZVAN", "WAVN", "WWGN", "CONF", "DMFS", "OPDX", "MIRR", "XFIE", "YFIE",
+      // Author and date; polarisation of analyses; the mechanical semi-diameter and chip zone
+      // (they do not clip in Zemax; DIAM does here); pickups and variables, whose solved values
+      // the file holds.
+      "AUTH", "DBDT", "POLS", "MEMA", "OEMA", "PZUP", "PPAR", "VPAR", "VCUR", "VDSZ", "VCON"};
+  std::vector<NamedCatalog> catalogs;  // GCAT: where glass names are looked up first
   ZSurface* cur = nullptr;
   while (std::getline(lines, line)) {
     ++number;
@@ -82,6 +148,32 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
       std::string rest;
       for (const auto& s : f) rest += (rest.empty() ? "" : " ") + s;
       if (!rest.empty()) name = rest;
+      continue;
+    }
+    if (key == "MODE") {
+      need(1);
+      if (f[0] != "SEQ")
+        throw MakeInputError(path, number, "MODE {}: not a sequential lens file (this reader takes MODE SEQ)", f[0]);
+      continue;
+    }
+    if (key == "ENVD") {  // temperature (C) and pressure (atm) of the lens's surroundings
+      need(2);
+      double t = ParseFiniteNumber(f[0], path, number), p = ParseFiniteNumber(f[1], path, number);
+      if (std::abs(t - 20) > 0.5 || std::abs(p - 1) > 0.01)
+        spdlog::warn("{}:{}: ENVD: the lens at {} C and {} atm is not modelled: indices are the catalogs', at their "
+                     "reference temperature in air at 1 atm", path, number, t, p);
+      continue;
+    }
+    if (key == "MNUM") {  // configurations (zoom positions ...): the surfaces hold the active one's
+      need(1);
+      std::optional<int> n = ParseIntegerIn(f[0], 0, 1 << 20);
+      if (n && *n > 1)
+        spdlog::warn("{}:{}: a file of {} configurations: the lens is read as stored (configuration {}); the other "
+                     "configurations are ignored", path, number, *n, f.size() > 1 ? f[1] : "1");
+      continue;
+    }
+    if (key == "GCAT") {
+      for (const std::string& c : f) catalogs.push_back({c, number});
       continue;
     }
     if (key == "UNIT") {
@@ -126,6 +218,14 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
     } else if (key == "CONI") {
       need(1);
       cur->coni = ParseFiniteNumber(f[0], path, number);
+    } else if (key == "CLAP") {  // CLAP rmin rmax: a circular aperture, which clips (DIAM does not in Zemax)
+      need(2);
+      double rmin = ParseFiniteNumber(f[0], path, number), rmax = ParseFiniteNumber(f[1], path, number);
+      if (rmin != 0)
+        throw MakeInputError(path, number, "CLAP {} {}: an annular aperture (inner radius above 0) is not supported", rmin,
+                             rmax);
+      if (!(rmax > 0)) throw MakeInputError(path, number, "CLAP: the aperture's radius must be above 0, got {}", rmax);
+      cur->clear_aperture = rmax;
     } else if (key == "STOP") {
       cur->stop = true;
     } else if (key == "GLAS") {
@@ -151,6 +251,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
   }
   if (surfs.size() < 3) throw MakeInputError(path, 0, "a lens needs an object surface, at least one surface and an image surface");
 
+  const LensGlasses lens_glasses(path, glasses, catalogs);
   LensPrescription lens;
   lens.name = name;
   lens.source = path;
@@ -159,10 +260,17 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
   for (size_t i = 1; i + 1 < surfs.size(); ++i) {
     const ZSurface& z = surfs[i];
     if (z.infinite_thickness) throw MakeInputError(path, z.line, "an infinite thickness inside the lens");
-    if (!(z.diam > 0)) throw MakeInputError(path, z.line, "surface {} has no semi-diameter (DIAM)", i);
+    const bool in_air = (z.glass.empty() || z.glass == "AIR") && (lens.surfaces.empty() || !lens.surfaces.back().medium);
+    if (z.diam == 0 && z.clear_aperture == 0 && in_air && z.curv == 0 && z.type == "STANDARD" && !z.stop) {
+      // A dummy plane in air without a semi-diameter (Zemax writes 0 where it computed none):
+      // it neither refracts nor clips; its thickness joins the gap before it.
+      if (!lens.surfaces.empty()) lens.surfaces.back().thickness += z.disz * unit;
+      continue;
+    }
+    if (!(z.diam > 0) && !(z.clear_aperture > 0)) throw MakeInputError(path, z.line, "surface {} has no semi-diameter (DIAM)", i);
     LensSurface s;
     s.thickness = z.disz * unit;
-    s.semi_diameter = z.diam * unit;
+    s.semi_diameter = (z.clear_aperture > 0 ? z.clear_aperture : z.diam) * unit;
     s.conic = z.coni;
     s.SetCurvature(z.curv / unit);
     if (z.type == "EVENASPH") {
@@ -172,21 +280,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
     }
     if (!z.glass.empty() && z.glass != "AIR") {
       if (z.glass == "MIRROR") throw MakeInputError(path, z.line, "mirrors are not supported by the sequential refracting tracer");
-      const Glass* g = z.glass == "___BLANK" ? nullptr : glasses.Find(z.glass);
-      if (g) {
-        s.medium = std::shared_ptr<const Glass>(std::shared_ptr<const Glass>(), g);
-      } else if (z.glass == "___BLANK" || (z.model_nd > 0 && z.model_vd > 0)) {
-        // Zemax's model glass (___BLANK), or the stand-in for a glass in no catalog.
-        if (z.model_nd < 1 || !(z.model_vd > 0))
-          throw MakeInputError(path, z.glass_line, "model glass needs nd >= 1 and vd > 0, got nd {} vd {}", z.model_nd,
-                               z.model_vd);
-        if (z.glass != "___BLANK")
-          spdlog::warn("{}:{}: glass {} is in no catalog; using a model glass nd {} vd {}", path, z.glass_line, z.glass,
-                       z.model_nd, z.model_vd);
-        s.medium = std::make_shared<const Glass>(Glass::Model(z.model_nd, z.model_vd));
-      } else {
-        throw MakeInputError(path, z.glass_line, "unknown glass '{}'", z.glass);
-      }
+      s.medium = SurfaceGlass(z, lens_glasses, path);
     }
     if (!z.coat.empty()) {
       // Zemax's MGF2 is a quarter wave of MgF2, as ours; its other COATING.DAT stacks are not known here.
@@ -220,6 +314,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
     lens.surfaces.push_back(std::move(s));
   }
   if (!have_stop) throw MakeInputError(path, 0, "no STOP surface");
+  lens_glasses.WarnUnused();
   if (lens.surfaces.back().medium) throw MakeInputError(path, surfs[surfs.size() - 2].line, "the last surface must leave the lens into air");
   return lens;
 }

@@ -1,0 +1,264 @@
+// Glass names as lens designers write them: GCAT catalogs first, withdrawn names and their
+// successors, names shared by different glasses, and glasses the user supplies beside the lens.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "base/error.h"
+#include "log_capture.h"
+#include "optics/glass_file.h"
+#include "optics/glass_lookup.h"
+#include "optics/glass_aliases.h"
+#include "optics/lens_file.h"
+#include "optics/zemax_lens.h"
+
+namespace objektiv {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path FreshDir(const std::string& name) {
+  fs::path dir = fs::temp_directory_path() / ("objektiv_glass_lookup_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+void Write(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+
+// A singlet in Zemax form: the stop, then one element of glass line `glas` (e.g. "GLAS BK7 1 0
+// 1.5168 64.17"), after the `head` lines (GCAT ...).
+std::string Singlet(const std::string& head, const std::string& glas) {
+  return head + "UNIT MM\nSURF 0\n DISZ INFINITY\nSURF 1\n STOP\n DISZ 1\n DIAM 4\nSURF 2\n CURV 0.01\n " + glas +
+         "\n DISZ 3\n DIAM 4\nSURF 3\n DISZ 10\n DIAM 4\nSURF 4\n DISZ 0\n DIAM 4\n";
+}
+
+const Glass& ElementGlass(const LensPrescription& lens) {
+  for (const LensSurface& s : lens.surfaces)
+    if (s.medium) return *s.medium;
+  throw std::runtime_error("no glass");
+}
+
+std::string ErrorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(GlassSuccessors, EachMakersEcoPrefixAndSchottsOldInfix) {
+  EXPECT_EQ(SuccessorCandidates("SCHOTT", "BK7"), std::vector<std::string>{"N-BK7"});
+  EXPECT_EQ(SuccessorCandidates("SCHOTT", "LAKN22"), (std::vector<std::string>{"N-LAKN22", "N-LAK22"}));
+  EXPECT_EQ(SuccessorCandidates("SCHOTT", "SF56A"), (std::vector<std::string>{"N-SF56", "N-SF56A"}));
+  EXPECT_EQ(SuccessorCandidates("OHARA", "BSL7"), std::vector<std::string>{"S-BSL7"});
+  EXPECT_EQ(SuccessorCandidates("CDGM", "ZF52"), std::vector<std::string>{"H-ZF52"});
+  EXPECT_TRUE(SuccessorCandidates("SCHOTT", "N-BK7").empty());  // already a successor's name
+  EXPECT_TRUE(SuccessorCandidates("SUMITA", "BK7").empty());    // no rule for that maker
+}
+
+TEST(GlassLookup, WithdrawnNamesFindTheirSuccessorsAndUnknownNamesNothing) {
+  GlassLookup lookup(GlassCatalog::Default());
+  auto bk7 = lookup.Find("BK7");
+  ASSERT_TRUE(bk7);
+  EXPECT_EQ(bk7->glass->name(), "N-BK7");
+  EXPECT_EQ(bk7->how, GlassMatch::How::kSuccessor);
+  EXPECT_EQ(SubstitutionNote("BK7", *bk7), "glass BK7 is withdrawn; its successor SCHOTT:N-BK7 is used");
+  EXPECT_EQ(lookup.Find("schott:bk7")->glass->name(), "N-BK7");
+  auto exact = lookup.Find("N-BK7");
+  ASSERT_TRUE(exact);
+  EXPECT_EQ(exact->how, GlassMatch::How::kExactName);
+  EXPECT_EQ(SubstitutionNote("N-BK7", *exact), "");
+  auto lak22 = lookup.Find("LAKN22");  // Schott's old infix name
+  ASSERT_TRUE(lak22);
+  EXPECT_EQ(lak22->glass->name(), "N-LAK22");
+  EXPECT_EQ(lookup.Find("SSKN8")->glass->name(), "N-SSK8");
+  // Zemax's generic material names: the same material in a shipped catalog.
+  auto silica = lookup.Find("SILICA");
+  ASSERT_TRUE(silica);
+  EXPECT_EQ(silica->how, GlassMatch::How::kSameMaterial);
+  EXPECT_EQ(SubstitutionNote("SILICA", *silica), "glass SILICA is read as SCHOTT:LITHOSIL-Q (the same material)");
+  // Malitson's fused silica (the formula Zemax's SILICA is) at d: 1.458462.
+  EXPECT_NEAR(silica->glass->Index(587.5618), 1.458462, 3e-5);
+  EXPECT_EQ(lookup.Find("CaF2")->glass->name(), "LITHOTEC-CAF2");
+  EXPECT_FALSE(lookup.Find("LLF7"));  // in no catalog: never a guess
+  EXPECT_FALSE(lookup.Find("OHARA:N-BK7"));
+  EXPECT_FALSE(lookup.Find("NOSUCH:N-BK7"));
+}
+
+TEST(GlassLookup, ANameOfTwoGlassesIsTheOneWhoseStatedValuesAgreeOrTheFileCatalogs) {
+  // CDGM's F2 (1.6129/36.99) is not Schott's F2 (1.62004/36.37).
+  GlassLookup lookup(GlassCatalog::Default());
+  EXPECT_EQ(lookup.Find("F2")->glass->catalog(), "SCHOTT");
+  EXPECT_EQ(lookup.Find("F2", StatedGlass{1.6129, 36.99})->glass->catalog(), "CDGM");
+  EXPECT_EQ(lookup.Find("F2", StatedGlass{1.62004, 36.37})->glass->catalog(), "SCHOTT");
+  // No glass of the name agrees: the first of the search order (the caller warns).
+  EXPECT_EQ(lookup.Find("F2", StatedGlass{1.7, 30})->glass->catalog(), "SCHOTT");
+  lookup.Prefer({"CDGM"}, nullptr);
+  EXPECT_EQ(lookup.Find("F2")->glass->catalog(), "CDGM");
+  EXPECT_EQ(lookup.SearchedCatalogs(), "CDGM, SCHOTT, OHARA, HOYA, SUMITA, HIKARI");
+  // SK16 is HIKARI's (a Nikon glass under the old Schott name) unless the file names SCHOTT:
+  // then Schott's successor N-SK16.
+  GlassLookup plain(GlassCatalog::Default());
+  EXPECT_EQ(plain.Find("SK16")->glass->catalog(), "HIKARI");
+  plain.Prefer({"SCHOTT"}, nullptr);
+  auto sk16 = plain.Find("SK16");
+  EXPECT_EQ(sk16->glass->name(), "N-SK16");
+  EXPECT_EQ(sk16->how, GlassMatch::How::kSuccessor);
+}
+
+TEST(GlassFile, ModelConstantAndTableGlasses) {
+  // Five rows of N-BK7's catalog formula: the fitted formula gives its nd to 2e-6 and Vd to 0.05
+  // (four terms through five points of a smooth curve), and the table's range.
+  const Glass& bk7 = *GlassCatalog::Default().Find("N-BK7");
+  std::string table = "# measured\nglass MY-BK7\n";
+  for (double nm : {435.8343, 486.1327, 546.0740, 587.5618, 656.2725})
+    table += fmt::format("{:.7f} {:.7f}\n", nm * 1e-3, bk7.Index(nm));
+  GlassCatalog c;
+  ParseGlassFile(c, table + "glass B270 nd=1.5230 vd=58.5\nglass SAPPHIRE n=1.768\nglass OLD nd=1.6,vd=40\n", "t.glass",
+                 "t.glass");
+  const Glass* mine = c.Find("my-bk7");
+  ASSERT_TRUE(mine);
+  EXPECT_NEAR(mine->ComputedNd(), bk7.ComputedNd(), 2e-6);
+  EXPECT_NEAR(mine->ComputedVd(), bk7.ComputedVd(), 0.05);
+  EXPECT_NEAR(mine->Index(500), bk7.Index(500), 5e-6);
+  EXPECT_DOUBLE_EQ(mine->lambda_min_um, 0.4358343);
+  EXPECT_DOUBLE_EQ(mine->lambda_max_um, 0.6562725);
+  EXPECT_NEAR(c.Find("B270")->ComputedNd(), 1.523, 1e-12);
+  EXPECT_NEAR(c.Find("B270")->ComputedVd(), 58.5, 1e-9);
+  EXPECT_EQ(c.Find("SAPPHIRE")->Index(450), 1.768);
+  EXPECT_NEAR(c.Find("OLD")->ComputedVd(), 40, 1e-9);
+  // Two rows: Cauchy's form through both.
+  std::array<double, 10> two = FitSchottFormula({{0.5, 1.52}, {0.6, 1.515}});
+  Glass cauchy("two", "t", DispersionFormula::kSchott, two);
+  EXPECT_NEAR(cauchy.Index(500), 1.52, 1e-12);
+  EXPECT_NEAR(cauchy.Index(600), 1.515, 1e-12);
+}
+
+TEST(GlassFile, ATableRowTheFormulaMissesIsWarnedAboutByLine) {
+  test::LogCapture log;
+  GlassCatalog c;
+  ParseGlassFile(c, "glass X\n0.45 1.525\n0.5 1.522\n0.55 1.5198\n0.6 1.518\n0.65 1.5265\n", "x.glass", "x.glass");
+  EXPECT_TRUE(log.Has("x.glass:6: glass X: the dispersion formula fitted to the table misses this row")) << log.Text();
+}
+
+TEST(GlassFile, BadLinesNameFileAndLine) {
+  struct Case {
+    std::string text, part;
+  };
+  for (const Case& k : std::vector<Case>{
+           {"glass A nd=1.5 vd=60\nglass a n=1.6\n", "g.glass:2: glass a is given twice"},
+           {"glass A\n0.5 1.5\n", "g.glass:1: glass A needs an index table of 2 or more rows"},
+           {"glass A\n486.1 1.52\n", "g.glass:2: wavelength 486.1 is not in micrometres"},
+           {"glass A\n0.5 1.52\n0.5 1.53\n", "g.glass:3: glass A: wavelength 0.5 um is given twice (first on line 2)"},
+           {"glass A\n0.5 0.9\n", "g.glass:2: index 0.9 is not between 1 and 5"},
+           {"0.5 1.52\n", "g.glass:1: expected 'glass NAME"},
+           {"glass A nd=0.5 vd=60\n", "g.glass:1: glass A needs nd from 1 to 5"},
+           {"glass A nd=1.5 vd=nan\n", "not a finite number"},
+           {"glass A vd=60 nd=1.5\n", "g.glass:1: glass A: expected nd=N vd=V"},
+           {"glass\n", "g.glass:1: a glass line needs a name"},
+           {"glass A\n0.5 1.52 7\n", "g.glass:2: expected"},
+       }) {
+    GlassCatalog c;
+    EXPECT_NE(ErrorOf([&] { ParseGlassFile(c, k.text, "g.glass", "g.glass"); }).find(k.part), std::string::npos)
+        << k.text << " -> " << ErrorOf([&] { ParseGlassFile(c, k.text, "g.glass", "g.glass"); });
+  }
+}
+
+TEST(ZemaxGlasses, WithdrawnNameIsItsSuccessorWithAWarning) {
+  test::LogCapture log;
+  LensPrescription lens = ParseZemaxLens(Singlet("", "GLAS BK7 1 0 1.5168 64.17 0 0"), "w.zmx", GlassCatalog::Default());
+  EXPECT_EQ(ElementGlass(lens).name(), "N-BK7");
+  EXPECT_TRUE(log.Has("w.zmx:10: glass BK7 is withdrawn; its successor SCHOTT:N-BK7 is used")) << log.Text();
+  EXPECT_FALSE(log.Has("another glass")) << log.Text();
+}
+
+TEST(ZemaxGlasses, ASubstitutionIsNotedOncePerName) {
+  test::LogCapture log;
+  std::string two = "SURF 0\n DISZ INFINITY\nSURF 1\n STOP\n DISZ 1\n DIAM 4\nSURF 2\n CURV 0.01\n GLAS PSK3\n DISZ 3\n"
+                    " DIAM 4\nSURF 3\n DISZ 1\n DIAM 4\nSURF 4\n CURV 0.01\n GLAS PSK3\n DISZ 3\n DIAM 4\nSURF 5\n DISZ 10\n"
+                    " DIAM 4\nSURF 6\n";
+  ParseZemaxLens(two, "t.zmx", GlassCatalog::Default());
+  EXPECT_EQ(log.Count("glass PSK3 is withdrawn"), 1) << log.Text();
+  EXPECT_TRUE(log.Has("t.zmx:9: glass PSK3 is withdrawn; its successor SCHOTT:N-PSK3 is used")) << log.Text();
+}
+
+TEST(ZemaxGlasses, GcatOrderAndStatedValuesPickAmongGlassesOfOneName) {
+  test::LogCapture log;
+  EXPECT_EQ(ElementGlass(ParseZemaxLens(Singlet("GCAT CDGM SCHOTT\n", "GLAS F2"), "c.zmx", GlassCatalog::Default()))
+                .catalog(), "CDGM");
+  EXPECT_EQ(ElementGlass(ParseZemaxLens(Singlet("", "GLAS F2 1 0 1.6129 36.99"), "c.zmx", GlassCatalog::Default()))
+                .catalog(), "CDGM");
+  EXPECT_TRUE(log.Text().empty()) << log.Text();
+  // Zemax's placeholder values (1.5, 40) and zeros state nothing.
+  ParseZemaxLens(Singlet("", "GLAS N-BK7 0 0 1.50E+00 4.00E+01 0 0"), "p.zmx", GlassCatalog::Default());
+  ParseZemaxLens(Singlet("", "GLAS N-BK7 0 0 0 0 0 0"), "p.zmx", GlassCatalog::Default());
+  EXPECT_TRUE(log.Text().empty()) << log.Text();
+  // A found glass that disagrees with the file's own values is warned about.
+  ParseZemaxLens(Singlet("", "GLAS N-BK7 1 0 1.6 40"), "d.zmx", GlassCatalog::Default());
+  EXPECT_TRUE(log.Has("d.zmx:10: glass N-BK7: the file states nd 1.6 vd 40, but SCHOTT:N-BK7 has nd 1.51680 vd 64.17"))
+      << log.Text();
+}
+
+TEST(ZemaxGlasses, AGlassInNoCatalogIsAnErrorThatSaysHowToSupplyIt) {
+  std::string e = ErrorOf([] { ParseZemaxLens(Singlet("", "GLAS B270 1 0 1.5230 58.5"), "v.zmx", GlassCatalog::Default()); });
+  EXPECT_NE(e.find("v.zmx:10: glass B270 is in no catalog (searched SCHOTT, OHARA, HOYA, CDGM, SUMITA, HIKARI). The file "
+                   "states nd 1.523 vd 58.5; the nearest shipped glasses are "),
+            std::string::npos) << e;
+  EXPECT_NE(e.find("give it in v.glass beside the lens (a line 'glass B270 nd=1.523 vd=58.5'"), std::string::npos) << e;
+}
+
+TEST(ZemaxGlasses, GlassFileAndCatalogsBesideTheLens) {
+  fs::path dir = FreshDir("beside");
+  Write(dir / "vendor.zmx", Singlet("GCAT SCHOTT LIGHTPATH MISC\n", "GLAS D-ZK3M 1 0 1.5891 61.2"));
+  // No glass file yet, and no LIGHTPATH.AGF: MISC and LIGHTPATH are named and missing.
+  {
+    test::LogCapture log;
+    EXPECT_NE(ErrorOf([&] { ReadLensFile((dir / "vendor.zmx").string(), GlassCatalog::Default()); })
+                  .find("glass D-ZK3M is in no catalog"), std::string::npos);
+    EXPECT_TRUE(log.Has("vendor.zmx:1: glass catalog LIGHTPATH is not shipped")) << log.Text();
+    EXPECT_TRUE(log.Has("glass catalog MISC is not shipped")) << log.Text();
+  }
+  // The maker's catalog beside the lens (any case of name), named by GCAT.
+  Write(dir / "lightpath.agf", "NM D-ZK3M 2 589612 1.5891 61.2 0 0 0\nCD 1.3 0.0078 0.19 0.024 0.87 96 0 0 0 0\n");
+  {
+    test::LogCapture log;
+    const Glass& g = ElementGlass(ReadLensFile((dir / "vendor.zmx").string(), GlassCatalog::Default()));
+    EXPECT_EQ(g.catalog(), "LIGHTPATH");
+    EXPECT_FALSE(log.Has("LIGHTPATH is not shipped")) << log.Text();
+  }
+  // A glass file beside the lens comes first; its unused glasses are named.
+  Write(dir / "vendor.glass", "glass D-ZK3M nd=1.5891 vd=61.2\nglass SPARE n=1.5\n");
+  {
+    test::LogCapture log;
+    const Glass& g = ElementGlass(ReadLensFile((dir / "vendor.zmx").string(), GlassCatalog::Default()));
+    EXPECT_EQ(g.catalog(), "vendor.glass");
+    EXPECT_NEAR(g.ComputedNd(), 1.5891, 1e-12);
+    EXPECT_TRUE(log.Has("vendor.glass: glass(es) no surface of the lens uses: SPARE")) << log.Text();
+  }
+  // A bad glass file is an error naming it, not a lens without its glasses.
+  Write(dir / "vendor.glass", "glass D-ZK3M nd=1.5891\n");
+  EXPECT_NE(ErrorOf([&] { ReadLensFile((dir / "vendor.zmx").string(), GlassCatalog::Default()); })
+                .find("vendor.glass:1: glass D-ZK3M: expected nd=N vd=V"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST(NativeLensGlasses, WithdrawnNamesAndAGlassFileBesideTheLens) {
+  fs::path dir = FreshDir("native");
+  const std::string lens = "surface 50 5 BK7 10\nsurface -50 5 air 10\nstop 40 air 5\n";
+  Write(dir / "old.lens", lens);
+  {
+    test::LogCapture log;
+    EXPECT_EQ(ElementGlass(ReadLensFile((dir / "old.lens").string(), GlassCatalog::Default())).name(), "N-BK7");
+    EXPECT_TRUE(log.Has("old.lens:1: glass BK7 is withdrawn; its successor SCHOTT:N-BK7 is used")) << log.Text();
+  }
+  Write(dir / "old.glass", "glass BK7 nd=1.5168 vd=64.17\n");
+  EXPECT_EQ(ElementGlass(ReadLensFile((dir / "old.lens").string(), GlassCatalog::Default())).catalog(), "old.glass");
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace objektiv
