@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "base/error.h"
+#include "camera/lens_camera_setup.h"
 #include "log_capture.h"
 #include "optics/glass_file.h"
 #include "optics/glass_lookup.h"
@@ -138,6 +139,49 @@ TEST(GlassFile, ModelConstantAndTableGlasses) {
   EXPECT_NEAR(cauchy.Index(600), 1.515, 1e-12);
 }
 
+// A filter's glass: a transmittance curve over a thickness, on a value glass or a table glass.
+TEST(GlassFile, TransmittanceRowsGiveTheInternalTransmittance) {
+  GlassCatalog c;
+  ParseGlassFile(c,
+                 "glass RED n=1.52\ntransmittance 2\n0.40 1e-6\n0.58 1e-6\n0.62 0.9\n0.80 0.9\n"
+                 "glass T\n0.5 1.52\n0.6 1.515\ntransmittance 10  # over 10 mm\n0.5 0.81\n",
+                 "f.glass", "f.glass");
+  const Glass& red = *c.Find("RED");
+  EXPECT_FALSE(red.IsDispersive());
+  EXPECT_TRUE(red.Absorbs());
+  EXPECT_NEAR(red.InternalTransmittance(700, 2), 0.9, 1e-12);
+  EXPECT_NEAR(red.InternalTransmittance(700, 4), 0.81, 1e-12);  // Beer-Lambert in the thickness
+  EXPECT_NEAR(red.InternalTransmittance(450, 2), 1e-6, 1e-12);
+  EXPECT_NEAR(c.Find("T")->InternalTransmittance(500, 5), 0.9, 1e-12);
+  EXPECT_NEAR(c.Find("T")->Index(500), 1.52, 1e-12);
+}
+
+// A constant-index filter plate in front of a lens: every wavelength takes one path, but the
+// plate transmits each differently, so the camera keeps only the hero wavelength and weighs it
+// by the plate's transmittance at that wavelength.
+TEST(GlassFile, AFilterPlateWeighsTheCameraRayByItsWavelength) {
+  fs::path dir = FreshDir("filter");
+  Write(dir / "f.glass", "glass RED n=1.52\ntransmittance 2\n0.40 1e-6\n0.58 1e-6\n0.62 0.9\n0.80 0.9\n");
+  Write(dir / "f.lens", "surface inf 2 RED 12\nsurface inf 1 air 12\nsurface 50 3 n=1.9 10\nstop 1 air 8\n"
+                        "surface inf 45 air 10\n");
+  LensCameraSpec s;
+  s.lens = ReadLensFile((dir / "f.lens").string(), GlassCatalog::Default());
+  s.fnumber = 8;
+  auto camera = MakeLensCamera(Transform(), 11, 11, s);
+  double weight[2];
+  int k = 0;
+  for (float u : {0.05f, 0.9f}) {  // a blue and a red hero wavelength
+    SampledWavelengths l = SampledWavelengths::SampleVisible(u);
+    auto r = camera->GenerateRay({Vec2f(5.5f, 5.5f), Vec2f(0.4f, 0.6f)}, l);
+    ASSERT_TRUE(r);
+    EXPECT_TRUE(l.SecondaryTerminated());
+    weight[k++] = r->weight[0];
+    EXPECT_EQ(l[0] < 580, u < 0.5f) << l[0];
+  }
+  EXPECT_LT(weight[0], 1e-5 * weight[1]);
+  fs::remove_all(dir);
+}
+
 TEST(GlassFile, ATableRowTheFormulaMissesIsWarnedAboutByLine) {
   test::LogCapture log;
   GlassCatalog c;
@@ -153,7 +197,7 @@ TEST(GlassFile, BadLinesNameFileAndLine) {
            {"glass A nd=1.5 vd=60\nglass a n=1.6\n", "g.glass:2: glass a is given twice"},
            {"glass A\n0.5 1.5\n", "g.glass:1: glass A needs an index table of 2 or more rows"},
            {"glass A\n486.1 1.52\n", "g.glass:2: wavelength 486.1 is not in micrometres"},
-           {"glass A\n0.5 1.52\n0.5 1.53\n", "g.glass:3: glass A: wavelength 0.5 um is given twice (first on line 2)"},
+           {"glass A\n0.5 1.52\n0.5 1.53\n", "g.glass:3: glass A: the index table gives wavelength 0.5 um twice (first on line 2)"},
            {"glass A\n0.5 0.9\n", "g.glass:2: index 0.9 is not between 1 and 5"},
            {"0.5 1.52\n", "g.glass:1: expected 'glass NAME"},
            {"glass A nd=0.5 vd=60\n", "g.glass:1: glass A needs nd from 1 to 5"},
@@ -161,6 +205,16 @@ TEST(GlassFile, BadLinesNameFileAndLine) {
            {"glass A vd=60 nd=1.5\n", "g.glass:1: glass A: expected nd=N vd=V"},
            {"glass\n", "g.glass:1: a glass line needs a name"},
            {"glass A\n0.5 1.52 7\n", "g.glass:2: expected"},
+           {"transmittance 2\n0.5 0.5\n", "g.glass:1: a transmittance line belongs after a glass line"},
+           {"glass A n=1.5\n0.5 0.5\n", "g.glass:2: expected"},
+           {"glass A n=1.5\ntransmittance 2\n", "g.glass:2: glass A: a transmittance line needs rows"},
+           {"glass A n=1.5\ntransmittance 2\n0.5 0\n", "g.glass:3: transmittance 0 is not above 0"},
+           {"glass A n=1.5\ntransmittance 2\n0.5 1.5\n", "g.glass:3: transmittance 1.5 is not above 0"},
+           {"glass A n=1.5\ntransmittance 0\n", "g.glass:2: thickness 0 mm is not above 0"},
+           {"glass A n=1.5\ntransmittance\n", "g.glass:2: a transmittance line is 'transmittance THICKNESS_MM'"},
+           {"glass A n=1.5\ntransmittance 2\n0.5 0.5\ntransmittance 3\n", "g.glass:4: glass A: a second transmittance"},
+           {"glass A n=1.5\ntransmittance 2\n0.5 0.5\n0.5 0.6\n",
+            "g.glass:4: glass A: the transmittance gives wavelength 0.5 um twice (first on line 3)"},
        }) {
     GlassCatalog c;
     EXPECT_NE(ErrorOf([&] { ParseGlassFile(c, k.text, "g.glass", "g.glass"); }).find(k.part), std::string::npos)

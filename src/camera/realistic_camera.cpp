@@ -19,11 +19,12 @@ bool IsDispersive(const LensPrescription& lens) {
 }
 
 // Whether a camera ray's transmittance depends on its wavelength without the path doing so:
-// a coated surface's reflectance changes with the wavelength, so one wavelength's
+// a coated surface's reflectance changes with the wavelength, and so does the absorption of a
+// glass with transmittance data (a colour filter of constant index), so one wavelength's
 // transmittance cannot stand for the others'.
-bool HasCoating(const LensSystem& lens) {
+bool TransmittanceVariesWithWavelength(const LensSystem& lens) {
   for (int i = 0; i < lens.SurfaceCount(); ++i)
-    if (lens.Coated(i)) return true;
+    if (lens.Coated(i) || (lens.surface(i).medium && lens.surface(i).medium->Absorbs())) return true;
   return false;
 }
 
@@ -48,7 +49,7 @@ RealisticCamera::RealisticCamera(const Transform& to_world, int width, int heigh
     : LensCamera(to_world, width, height, settings), lens_(lens), fast_(MakeFastTracer(lens, settings.vignetting)),
       bounds_(lens, FilmRadius(), BoundsOptions(lens, settings.vignetting)), film_z_(lens.FilmZ()),
       stop_radius_(float(lens.StopSemiDiameter())), dispersive_(IsDispersive(lens.prescription())),
-      one_wavelength_(dispersive_ || (settings.transmission && HasCoating(lens))) {
+      one_wavelength_(dispersive_ || (settings.transmission && TransmittanceVariesWithWavelength(lens))) {
   const ParaxialData& p = lens.paraxial();
   SetOriginZ(lens.VertexZ(0) + p.entrance_pupil_position);
 }

@@ -33,6 +33,8 @@ class Glass {
   double ComputedNd() const { return Index(kLambdad); }
   double ComputedVd() const { return (Index(kLambdad) - 1) / (Index(kLambdaF) - Index(kLambdaC)); }
   bool IsDispersive() const { return kind_ != Kind::kConstant; }
+  // Whether the glass has transmittance data (InternalTransmittance is not 1 everywhere).
+  bool Absorbs() const { return !absorption_.empty(); }
 
   const std::string& name() const { return name_; }
   const std::string& catalog() const { return catalog_; }

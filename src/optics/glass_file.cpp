@@ -1,5 +1,6 @@
 #include "optics/glass_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <sstream>
@@ -50,37 +51,70 @@ bool Solve(std::vector<std::vector<double>> a, std::vector<double> b, std::vecto
   return true;
 }
 
-struct Table {
-  std::string name;
-  int line = 0;
-  std::vector<std::pair<double, double>> rows;  // (um, index)
-  std::vector<int> row_lines;
+// Rows "wavelength_um value" with the line each came from.
+struct Rows {
+  std::vector<std::pair<double, double>> values;
+  std::vector<int> lines;
+
+  void Add(double l, double v, int line) {
+    values.emplace_back(l, v);
+    lines.push_back(line);
+  }
+  // Throws, naming the second line, where a wavelength is given twice (sorted copy: a table of
+  // a million rows is checked in n log n).
+  void CheckDistinct(const std::string& path, const std::string& glass, const char* what) const {
+    std::vector<size_t> order(values.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return values[a].first < values[b].first; });
+    for (size_t k = 1; k < order.size(); ++k)
+      if (values[order[k]].first == values[order[k - 1]].first)
+        throw MakeInputError(path, lines[order[k]], "glass {}: the {} gives wavelength {} um twice (first on line {})",
+                             glass, what, values[order[k]].first, lines[order[k - 1]]);
+  }
 };
 
-void AddTable(GlassCatalog& into, const Table& t, const std::string& path, const std::string& catalog) {
-  if (t.rows.size() < 2)
-    throw MakeInputError(path, t.line, "glass {} needs an index table of 2 or more rows (wavelength_um index) or a value "
-                                       "(nd=N vd=V, n=N)", t.name);
-  for (size_t i = 0; i < t.rows.size(); ++i)
-    for (size_t j = 0; j < i; ++j)
-      if (t.rows[i].first == t.rows[j].first)
-        throw MakeInputError(path, t.row_lines[i], "glass {}: wavelength {} um is given twice (first on line {})", t.name,
-                             t.rows[i].first, t.row_lines[j]);
-  std::array<double, 10> c = FitSchottFormula(t.rows);
-  Glass g(t.name, catalog, DispersionFormula::kSchott, c);
-  double lo = t.rows.front().first, hi = lo;
-  for (const auto& [l, n] : t.rows) lo = std::min(lo, l), hi = std::max(hi, l);
-  g.lambda_min_um = lo;
-  g.lambda_max_um = hi;
-  for (size_t i = 0; i < t.rows.size(); ++i) {
-    double miss = g.Index(t.rows[i].first * 1e3) - t.rows[i].second;
+// The glass being read: a value glass (nd/vd, n) or an index table, and its transmittance rows.
+struct Pending {
+  std::string name;
+  int line = 0;
+  std::optional<Glass> value;  // empty: an index table
+  Rows index;
+  double transmittance_mm = 0;  // the thickness the transmittance rows are for; 0: none given
+  int transmittance_line = 0;
+  Rows transmittance;
+};
+
+Glass TableGlass(const Pending& g, const std::string& path, const std::string& catalog) {
+  if (g.index.values.size() < 2)
+    throw MakeInputError(path, g.line, "glass {} needs an index table of 2 or more rows (wavelength_um index) or a value "
+                                       "(nd=N vd=V, n=N)", g.name);
+  g.index.CheckDistinct(path, g.name, "index table");
+  Glass glass(g.name, catalog, DispersionFormula::kSchott, FitSchottFormula(g.index.values));
+  double lo = g.index.values.front().first, hi = lo;
+  for (const auto& [l, n] : g.index.values) lo = std::min(lo, l), hi = std::max(hi, l);
+  glass.lambda_min_um = lo;
+  glass.lambda_max_um = hi;
+  for (size_t i = 0; i < g.index.values.size(); ++i) {
+    double miss = glass.Index(g.index.values[i].first * 1e3) - g.index.values[i].second;
     if (!(std::abs(miss) <= 2e-4))
       spdlog::warn("{}:{}: glass {}: the dispersion formula fitted to the table misses this row by {:.1e} (a typing "
-                   "error?)", path, t.row_lines[i], t.name, miss);
+                   "error?)", path, g.index.lines[i], g.name, miss);
   }
-  g.catalog_nd = g.ComputedNd();
-  g.catalog_vd = g.ComputedVd();
-  if (!into.Add(catalog, std::move(g))) throw MakeInputError(path, t.line, "glass {} is given twice", t.name);
+  glass.catalog_nd = glass.ComputedNd();
+  glass.catalog_vd = glass.ComputedVd();
+  return glass;
+}
+
+void AddPending(GlassCatalog& into, const Pending& g, const std::string& path, const std::string& catalog) {
+  Glass glass = g.value ? *g.value : TableGlass(g, path, catalog);
+  if (g.transmittance_mm > 0) {
+    if (g.transmittance.values.empty())
+      throw MakeInputError(path, g.transmittance_line, "glass {}: a transmittance line needs rows 'wavelength_um "
+                                                       "transmittance' after it", g.name);
+    g.transmittance.CheckDistinct(path, g.name, "transmittance");
+    for (const auto& [l, tau] : g.transmittance.values) glass.AddTransmission(l, tau, g.transmittance_mm);
+  }
+  if (!into.Add(catalog, std::move(glass))) throw MakeInputError(path, g.line, "glass {} is given twice", g.name);
 }
 
 }  // namespace
@@ -110,30 +144,54 @@ void ParseGlassFile(GlassCatalog& into, const std::string& text, const std::stri
   std::istringstream lines(DecodeToAscii(text));
   std::string line;
   int number = 0;
-  std::optional<Table> table;  // the glass whose rows are being read
+  std::optional<Pending> pending;  // the glass whose rows are being read
   auto finish = [&] {
-    if (table) AddTable(into, *table, path, catalog);
-    table.reset();
+    if (pending) AddPending(into, *pending, path, catalog);
+    pending.reset();
   };
   while (std::getline(lines, line)) {
     ++number;
     if (size_t hash = line.find('#'); hash != std::string::npos) line.erase(hash);
     std::vector<std::string> f = SplitFields(line);
     if (f.empty()) continue;
+    if (f[0] == "transmittance") {
+      if (!pending)
+        throw MakeInputError(path, number, "a transmittance line belongs after a glass line");
+      if (pending->transmittance_mm > 0)
+        throw MakeInputError(path, number, "glass {}: a second transmittance line (the first is on line {})",
+                             pending->name, pending->transmittance_line);
+      if (f.size() != 2)
+        throw MakeInputError(path, number, "a transmittance line is 'transmittance THICKNESS_MM' (the rows that follow "
+                                           "give the internal transmittance through that thickness)");
+      double mm = ParseFiniteNumber(f[1], path, number);
+      if (!(mm > 0 && mm <= 1000)) throw MakeInputError(path, number, "thickness {} mm is not above 0 (at most 1000)", mm);
+      pending->transmittance_mm = mm;
+      pending->transmittance_line = number;
+      continue;
+    }
     if (f[0] != "glass") {
-      if (!table || f.size() != 2)
+      const bool transmittance_rows = pending && pending->transmittance_mm > 0;
+      if (!pending || f.size() != 2 || (pending->value && !transmittance_rows))
         throw MakeInputError(path, number, "expected 'glass NAME nd=N vd=V', 'glass NAME n=N' or 'glass NAME' and "
-                                           "its table rows 'wavelength_um index', got '{}'", f[0]);
-      double l = ParseFiniteNumber(f[0], path, number), n = ParseFiniteNumber(f[1], path, number);
+                                           "its table rows 'wavelength_um index', or 'transmittance THICKNESS_MM' and "
+                                           "its rows 'wavelength_um transmittance', got '{}'", f[0]);
+      double l = ParseFiniteNumber(f[0], path, number), v = ParseFiniteNumber(f[1], path, number);
       if (!(l >= 0.2 && l <= 25))
         throw MakeInputError(path, number, "wavelength {} is not in micrometres (0.2 to 25)", l);
-      if (!(n >= 1 && n <= 5)) throw MakeInputError(path, number, "index {} is not between 1 and 5", n);
-      table->rows.emplace_back(l, n);
-      table->row_lines.push_back(number);
+      if (transmittance_rows) {
+        if (!(v > 0 && v <= 1))
+          throw MakeInputError(path, number, "transmittance {} is not above 0 and at most 1 (an opaque band: a small "
+                                             "value such as 1e-6)", v);
+        pending->transmittance.Add(l, v, number);
+      } else {
+        if (!(v >= 1 && v <= 5)) throw MakeInputError(path, number, "index {} is not between 1 and 5", v);
+        pending->index.Add(l, v, number);
+      }
       continue;
     }
     finish();
     if (f.size() < 2) throw MakeInputError(path, number, "a glass line needs a name");
+    pending = Pending{f[1], number, std::nullopt, {}, 0, 0, {}};
     const std::string& name = f[1];
     std::vector<std::string> values(f.begin() + 2, f.end());
     if (values.size() == 1 && values[0].find(",vd=") != std::string::npos) {  // nd=N,vd=V as in a lens file
@@ -145,24 +203,20 @@ void ParseGlassFile(GlassCatalog& into, const std::string& text, const std::stri
       if (field.rfind(k, 0) != 0) return std::nullopt;
       return ParseFiniteNumber(field.substr(k.size()), path, number);
     };
-    std::optional<Glass> g;
-    if (values.empty()) {
-      table = Table{name, number, {}, {}};
-      continue;
-    } else if (values.size() == 1 && value(values[0], "n")) {
+    if (values.empty()) continue;  // an index table follows
+    if (values.size() == 1 && value(values[0], "n")) {
       double n = *value(values[0], "n");
       if (!(n >= 1 && n <= 5)) throw MakeInputError(path, number, "index {} is not between 1 and 5", n);
-      g = Glass::Constant(n).Named(name, catalog);
+      pending->value = Glass::Constant(n).Named(name, catalog);
     } else if (values.size() == 2 && value(values[0], "nd") && value(values[1], "vd")) {
       double nd = *value(values[0], "nd"), vd = *value(values[1], "vd");
       if (!(nd >= 1 && nd <= 5) || !(vd > 0 && vd <= 200))
         throw MakeInputError(path, number, "glass {} needs nd from 1 to 5 and vd above 0 (at most 200), got nd {} vd {}",
                              name, nd, vd);
-      g = Glass::Model(nd, vd).Named(name, catalog);
+      pending->value = Glass::Model(nd, vd).Named(name, catalog);
     } else {
       throw MakeInputError(path, number, "glass {}: expected nd=N vd=V, n=N, or nothing (a table follows)", name);
     }
-    if (!into.Add(catalog, std::move(*g))) throw MakeInputError(path, number, "glass {} is given twice", name);
   }
   finish();
 }
