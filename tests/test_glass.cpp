@@ -139,7 +139,7 @@ TEST(GlassCatalog, MalformedLinesNameFileAndLine) {
 
 TEST(GlassCatalog, ImplausibleTransmissionRowsAreSkipped) {
   GlassCatalog c;
-  c.LoadAgfText("NM G1 2 0 1.5 60\nIT 0.4 1.7 10\nIT 0.5 0.9 10\n", "t.agf", "T");
+  c.LoadAgfText("NM G1 1 0 1.5 60\nCD 2.25\nIT 0.4 1.7 10\nIT 0.5 0.9 10\n", "t.agf", "T");
   ASSERT_NE(c.Find("G1"), nullptr);
   EXPECT_NEAR(c.Find("G1")->InternalTransmittance(400, 10), 0.9, 1e-9);  // only the good row
 }

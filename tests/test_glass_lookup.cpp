@@ -182,11 +182,60 @@ TEST(GlassFile, AFilterPlateWeighsTheCameraRayByItsWavelength) {
   fs::remove_all(dir);
 }
 
+// N-BK7's indices at eight wavelengths with one typing error (5e-4 too high): the warning names
+// that row alone (the formula fitted to the other rows misses it most).
 TEST(GlassFile, ATableRowTheFormulaMissesIsWarnedAboutByLine) {
+  const Glass& bk7 = *GlassCatalog::Default().Find("N-BK7");
+  const double nm[] = {404.6561, 435.8343, 479.9914, 486.1327, 546.0740, 587.5618, 643.8469, 656.2725};
+  for (int bad = 0; bad < 8; ++bad) {
+    std::string table = "glass X\n";
+    for (int i = 0; i < 8; ++i) table += fmt::format("{:.7f} {:.6f}\n", nm[i] * 1e-3, bk7.Index(nm[i]) + (i == bad ? 5e-4 : 0));
+    test::LogCapture log;
+    GlassCatalog c;
+    ParseGlassFile(c, table, "x.glass", "x.glass");
+    EXPECT_EQ(log.Count("the dispersion formula fitted to the other rows misses this row"), 1) << log.Text();
+    EXPECT_TRUE(log.Has(fmt::format("x.glass:{}: glass X", bad + 2))) << bad << ": " << log.Text();
+  }
+  // Without the error, no warning.
+  std::string good = "glass X\n";
+  for (double l : nm) good += fmt::format("{:.7f} {:.6f}\n", l * 1e-3, bk7.Index(l));
   test::LogCapture log;
   GlassCatalog c;
-  ParseGlassFile(c, "glass X\n0.45 1.525\n0.5 1.522\n0.55 1.5198\n0.6 1.518\n0.65 1.5265\n", "x.glass", "x.glass");
-  EXPECT_TRUE(log.Has("x.glass:6: glass X: the dispersion formula fitted to the table misses this row")) << log.Text();
+  ParseGlassFile(c, good, "x.glass", "x.glass");
+  EXPECT_TRUE(log.Text().empty()) << log.Text();
+}
+
+// A table whose fitted formula is not an index that falls with the wavelength across the
+// visible (rows only in the infrared, a three-row typo, two rows 0.1 nm apart) is an error: the
+// renderer would extrapolate it into nonsense.
+TEST(GlassFile, ATableThatDoesNotDescribeTheVisibleIsAnError) {
+  for (const char* table : {"glass X\n10 2.4\n12 2.39\n", "glass X\n0.4861327 1.52238\n0.5875618 1.79100\n0.6562725 1.51432\n",
+                            "glass X\n0.4861327 1.52238\n0.5875618 1.51100\n0.6562725 1.51432\n"}) {
+    GlassCatalog c;
+    EXPECT_NE(ErrorOf([&] { ParseGlassFile(c, table, "x.glass", "x.glass"); })
+                  .find("x.glass:1: glass X: the dispersion formula fitted to its index table gives n"),
+              std::string::npos) << table << " -> " << ErrorOf([&] { ParseGlassFile(c, table, "x.glass", "x.glass"); });
+  }
+  // A table of the visible's middle only is extrapolated, with a warning; a dispersion no
+  // optical material has (two rows 0.1 nm apart) is warned about.
+  test::LogCapture log;
+  GlassCatalog c;
+  ParseGlassFile(c, "glass Y\n0.5 1.521\n0.55 1.519\n0.6 1.5175\nglass Z\n0.5875 1.5168\n0.5876 1.5167\n", "y.glass",
+                 "y.glass");
+  EXPECT_TRUE(log.Has("y.glass:1: glass Y: its index table covers 0.5 to 0.6 um; the renderer extrapolates")) << log.Text();
+  EXPECT_TRUE(log.Has("y.glass:5: glass Z: the index table gives an Abbe number Vd of ")) << log.Text();
+}
+
+TEST(GlassFile, NamesALensFileCouldNotUseAreErrorsAndAnEmptyFileIsNoted) {
+  for (const char* bad : {"glass A:B n=1.5\n", "glass air n=1.5\n", "glass n=1.6 n=1.5\n"}) {
+    GlassCatalog c;
+    EXPECT_NE(ErrorOf([&] { ParseGlassFile(c, bad, "n.glass", "n.glass"); }).find("cannot name a glass"), std::string::npos)
+        << bad;
+  }
+  test::LogCapture log;
+  GlassCatalog c;
+  ParseGlassFile(c, "# nothing yet\n", "e.glass", "e.glass");
+  EXPECT_TRUE(log.Has("e.glass: no glass in this glass file")) << log.Text();
 }
 
 TEST(GlassFile, BadLinesNameFileAndLine) {
@@ -194,7 +243,7 @@ TEST(GlassFile, BadLinesNameFileAndLine) {
     std::string text, part;
   };
   for (const Case& k : std::vector<Case>{
-           {"glass A nd=1.5 vd=60\nglass a n=1.6\n", "g.glass:2: glass a is given twice"},
+           {"glass A nd=1.5 vd=60\nglass a n=1.6\n", "g.glass:2: glass a is given twice (first on line 1)"},
            {"glass A\n0.5 1.5\n", "g.glass:1: glass A needs an index table of 2 or more rows"},
            {"glass A\n486.1 1.52\n", "g.glass:2: wavelength 486.1 is not in micrometres"},
            {"glass A\n0.5 1.52\n0.5 1.53\n", "g.glass:3: glass A: the index table gives wavelength 0.5 um twice (first on line 2)"},
@@ -251,10 +300,20 @@ TEST(ZemaxGlasses, GcatOrderAndStatedValuesPickAmongGlassesOfOneName) {
   ParseZemaxLens(Singlet("", "GLAS N-BK7 0 0 1.50E+00 4.00E+01 0 0"), "p.zmx", GlassCatalog::Default());
   ParseZemaxLens(Singlet("", "GLAS N-BK7 0 0 0 0 0 0"), "p.zmx", GlassCatalog::Default());
   EXPECT_TRUE(log.Text().empty()) << log.Text();
-  // A found glass that disagrees with the file's own values is warned about.
-  ParseZemaxLens(Singlet("", "GLAS N-BK7 1 0 1.6 40"), "d.zmx", GlassCatalog::Default());
-  EXPECT_TRUE(log.Has("d.zmx:10: glass N-BK7: the file states nd 1.6 vd 40, but SCHOTT:N-BK7 has nd 1.51680 vd 64.17"))
-      << log.Text();
+  // A found glass that disagrees a little with the file's own values is warned about; one that
+  // is clearly another material is an error.
+  ParseZemaxLens(Singlet("", "GLAS N-BK7 1 0 1.519 64.17"), "d.zmx", GlassCatalog::Default());
+  EXPECT_TRUE(log.Has("d.zmx:10: glass N-BK7: the file states nd 1.519 vd 64.17, but SCHOTT:N-BK7 has nd 1.51680 vd "
+                      "64.17")) << log.Text();
+  EXPECT_NE(ErrorOf([] { ParseZemaxLens(Singlet("", "GLAS BAF2 0 0 1.474 81.8"), "m.zmx", GlassCatalog::Default()); })
+                .find("m.zmx:10: glass BAF2: the file states nd 1.474 vd 81.8, but "),
+            std::string::npos);
+  // A glass of the name outside the GCAT catalogs that agrees with the stated values is taken,
+  // with a warning.
+  const Glass& f2 = ElementGlass(ParseZemaxLens(Singlet("GCAT SCHOTT\n", "GLAS F2 0 0 1.6129 36.99"), "x.zmx",
+                                                 GlassCatalog::Default()));
+  EXPECT_EQ(f2.catalog(), "CDGM");
+  EXPECT_TRUE(log.Has("x.zmx:11: glass F2 is read as CDGM:F2, whose nd and Vd agree with the file's")) << log.Text();
 }
 
 TEST(ZemaxGlasses, AGlassInNoCatalogIsAnErrorThatSaysHowToSupplyIt) {
@@ -277,7 +336,7 @@ TEST(ZemaxGlasses, GlassFileAndCatalogsBesideTheLens) {
     EXPECT_TRUE(log.Has("glass catalog MISC is not shipped")) << log.Text();
   }
   // The maker's catalog beside the lens (any case of name), named by GCAT.
-  Write(dir / "lightpath.agf", "NM D-ZK3M 2 589612 1.5891 61.2 0 0 0\nCD 1.3 0.0078 0.19 0.024 0.87 96 0 0 0 0\n");
+  Write(dir / "lightpath.agf", "NM D-ZK3M 1 589612 1.5891 61.2 0 0 0\nCD 2.4787781648 0 0.0160395560 0 0 0 0 0 0 0\n");
   {
     test::LogCapture log;
     const Glass& g = ElementGlass(ReadLensFile((dir / "vendor.zmx").string(), GlassCatalog::Default()));
@@ -291,12 +350,46 @@ TEST(ZemaxGlasses, GlassFileAndCatalogsBesideTheLens) {
     const Glass& g = ElementGlass(ReadLensFile((dir / "vendor.zmx").string(), GlassCatalog::Default()));
     EXPECT_EQ(g.catalog(), "vendor.glass");
     EXPECT_NEAR(g.ComputedNd(), 1.5891, 1e-12);
-    EXPECT_TRUE(log.Has("vendor.glass: glass(es) no surface of the lens uses: SPARE")) << log.Text();
+    EXPECT_TRUE(log.Has("vendor.glass: 1 glass(es) that no surface of ")) << log.Text();
+    EXPECT_TRUE(log.Has("vendor.zmx uses: SPARE")) << log.Text();
   }
   // A bad glass file is an error naming it, not a lens without its glasses.
   Write(dir / "vendor.glass", "glass D-ZK3M nd=1.5891\n");
   EXPECT_NE(ErrorOf([&] { ReadLensFile((dir / "vendor.zmx").string(), GlassCatalog::Default()); })
                 .find("vendor.glass:1: glass D-ZK3M: expected nd=N vd=V"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+// A glass file or a named catalog beside the lens that is not a regular file (a directory), or
+// two files naming one catalog, is an error; they were passed over in silence.
+TEST(ZemaxGlasses, OddFilesBesideTheLensAreErrorsAndDatedCatalogsTheShippedOnes) {
+  fs::path dir = FreshDir("odd");
+  const std::string lens = Singlet("GCAT MYCAT\n", "GLAS N-BK7");
+  Write(dir / "a.zmx", lens);
+  fs::create_directories(dir / "a.glass");
+  EXPECT_NE(ErrorOf([&] { ReadLensFile((dir / "a.zmx").string(), GlassCatalog::Default()); })
+                .find("a.glass: the glass file beside the lens is not a regular file"), std::string::npos);
+  fs::remove_all(dir / "a.glass");
+  fs::create_directories(dir / "MYCAT.AGF");
+  EXPECT_NE(ErrorOf([&] { ReadLensFile((dir / "a.zmx").string(), GlassCatalog::Default()); })
+                .find("catalog MYCAT named on line 1 of"), std::string::npos);
+  fs::remove_all(dir / "MYCAT.AGF");
+  const std::string agf = "NM N-BK7 1 0 1.5 60\nCD 2.25\n";
+  Write(dir / "MYCAT.AGF", agf);
+  Write(dir / "mycat.agf", agf);
+  EXPECT_NE(ErrorOf([&] { ReadLensFile((dir / "a.zmx").string(), GlassCatalog::Default()); })
+                .find("a.zmx:1: catalog MYCAT: two files beside the lens name it"), std::string::npos);
+  fs::remove(dir / "mycat.agf");
+  EXPECT_EQ(ElementGlass(ReadLensFile((dir / "a.zmx").string(), GlassCatalog::Default())).catalog(), "MYCAT");
+  // A catalog file that is no AGF (no NM line) is an error naming it.
+  Write(dir / "MYCAT.AGF", "<svg></svg>\n");
+  EXPECT_NE(ErrorOf([&] { ReadLensFile((dir / "a.zmx").string(), GlassCatalog::Default()); })
+                .find("MYCAT.AGF: no glass in this catalog (no NM line)"), std::string::npos);
+  // A dated edition of a shipped catalog is the shipped one, with a warning.
+  test::LogCapture log;
+  const Glass& g = ElementGlass(ParseZemaxLens(Singlet("GCAT CDGM_2015\n", "GLAS F2"), "d.zmx", GlassCatalog::Default()));
+  EXPECT_EQ(g.catalog(), "CDGM");
+  EXPECT_TRUE(log.Has("d.zmx:1: glass catalog CDGM_2015 is read as the shipped CDGM")) << log.Text();
   fs::remove_all(dir);
 }
 

@@ -129,12 +129,41 @@ TEST(Zemax, ModeEnvironmentAndConfigurationsAreReadOrWarnedAbout) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("n.zmx:1: MODE NSC: not a sequential lens file"), std::string::npos) << e.what();
   }
+  try {
+    ParseZemaxLens("MNUM abc\n" + lens, "m.zmx", GlassCatalog::Default());
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("m.zmx:1: MNUM 'abc' is not a number of configurations"), std::string::npos)
+        << e.what();
+  }
   test::LogCapture log;
   ParseZemaxLens("MODE SEQ\nENVD 2.0E+1 1 0\nMNUM 1 1\n" + lens, "q.zmx", GlassCatalog::Default());
   EXPECT_TRUE(log.Text().empty()) << log.Text();
   ParseZemaxLens("ENVD 60 1 1\nMNUM 3 2\n" + lens, "e.zmx", GlassCatalog::Default());
   EXPECT_TRUE(log.Has("e.zmx:1: ENVD: the lens at 60 C and 1 atm is not modelled")) << log.Text();
   EXPECT_TRUE(log.Has("e.zmx:2: a file of 3 configurations: the lens is read as stored (configuration 2)")) << log.Text();
+}
+
+// A second STOP was dropped in silence (the first won, and the f-number changed).
+TEST(Zemax, ASecondStopIsAnError) {
+  const std::string two = "SURF 0\n DISZ INFINITY\nSURF 1\n STOP\n DISZ 1\n DIAM 4\nSURF 2\n STOP\n CURV 0.01\n"
+                          " GLAS N-BK7\n DISZ 3\n DIAM 4\nSURF 3\n DISZ 10\n DIAM 4\nSURF 4\n";
+  try {
+    ParseZemaxLens(two, "s.zmx", GlassCatalog::Default());
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("s.zmx:8: a second STOP (the first is the surface on line 3)"), std::string::npos)
+        << e.what();
+  }
+}
+
+// Bytes of a binary file reach messages escaped, not raw (they garbled the terminal).
+TEST(Zemax, RawBytesInMessagesAreEscaped) {
+  test::LogCapture log;
+  std::string junk = std::string("W\x01\x1b[31mRD 1\n") + "SURF 0\n DISZ INFINITY\nSURF 1\n STOP\n DISZ 1\n DIAM 4\n"
+                     "SURF 2\n CURV 0.01\n GLAS N-BK7\n DISZ 3\n DIAM 4\nSURF 3\n DISZ 10\n DIAM 4\nSURF 4\n";
+  ParseZemaxLens(junk, "j.zmx", GlassCatalog::Default());
+  EXPECT_TRUE(log.Has("j.zmx:1: not supported, ignored: W\\x01\\x1b[31mRD")) << log.Text();
 }
 
 // A dummy plane in air with DIAM 0 (Zemax computed no semi-diameter) neither refracts nor

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
+#include "app/prescription_table.h"
 #include "base/error.h"
 #include "base/log.h"
 #include "base/output_file.h"
@@ -127,6 +128,7 @@ int RunInfo(const LensArgs& a) {
                               {"stop_diameter_mm", stop_diameter},
                               {"total_track_mm", lens.TotalTrack()},
                               {"surfaces", lens.surfaces.size()},
+                              {"prescription", PrescriptionJson(lens)},
                               {"real_bfl_mm", real_bfl},
                               {"sensor_mm", {sw, sh}},
                               {"fov_horizontal_deg", fov.horizontal},
@@ -173,6 +175,7 @@ int RunInfo(const LensArgs& a) {
   if (!design.empty()) std::printf("  design (as the file states it):%s\n", design.c_str());
   std::printf("  %zu surfaces, stop at row %d (diameter %.3f mm), total track %.3f mm\n", lens.surfaces.size(),
               stop + 1, stop_diameter, lens.TotalTrack());
+  std::printf("%s", PrescriptionTable(lens).c_str());
   std::printf("  paraxial, object at infinity, %.2f nm:\n", a.wavelength);
   std::printf("  EFL %.4f mm   BFL %.4f mm   FFL %.4f mm   f/%.3f\n", d.efl, d.bfl, d.ffl, d.fnumber);
   std::printf("  entrance pupil: diameter %.4f mm, %.4f mm behind the first vertex\n", d.entrance_pupil_diameter,

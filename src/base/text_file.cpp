@@ -89,4 +89,16 @@ std::vector<std::string> SplitFields(const std::string& line) {
   return fields;
 }
 
+std::string Printable(const std::string& token) {
+  std::string out;
+  for (unsigned char c : token) {
+    if (out.size() >= 60) return out + "...";
+    if (c >= 0x20 && c < 0x7f)
+      out += char(c);
+    else
+      out += fmt::format("\\x{:02x}", c);
+  }
+  return out;
+}
+
 }  // namespace objektiv

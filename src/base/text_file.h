@@ -33,5 +33,9 @@ double ParseFiniteNumber(const std::string& s, const std::string& path, int line
 std::optional<int> ParseIntegerIn(const std::string& s, int lo, int hi);
 // The whitespace-separated fields of one line (a trailing '\r' is whitespace too).
 std::vector<std::string> SplitFields(const std::string& line);
+// A token from a file as a message may show it: bytes outside printable ASCII as \xNN (raw
+// bytes of a binary file would garble the terminal, a NUL cut the message), at most 60
+// characters of it followed by "...".
+std::string Printable(const std::string& token);
 
 }  // namespace objektiv

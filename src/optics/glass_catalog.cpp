@@ -29,6 +29,22 @@ void GlassCatalog::LoadAgfText(const std::string& raw, const std::string& path, 
   auto& table = glasses_[key];
   if (std::find(order_.begin(), order_.end(), key) == order_.end()) order_.push_back(key);
   Glass* current = nullptr;
+  int current_line = 0;
+  size_t count = 0;
+  // A glass whose formula disagrees with its own NM line's nd (a CD line of zeros, none at all,
+  // a wrong formula number) would be a silently wrong lens: checked where its lines end. Glasses
+  // whose formula is not valid at the d line (infrared materials) or whose nd is not given are
+  // left alone.
+  auto check_current = [&] {
+    if (!current || current->catalog_nd <= 0) return;
+    if (current->lambda_max_um > 0 && !(current->lambda_min_um <= 0.5875618 && current->lambda_max_um >= 0.5875618))
+      return;
+    const double nd = current->ComputedNd();
+    if (!(std::abs(nd - current->catalog_nd) <= 1e-3))
+      throw MakeInputError(path, current_line,
+                           "glass {}: its dispersion formula gives nd {:.6g}, its NM line says {} (the CD coefficients "
+                           "or the formula number are wrong)", current->name(), nd, current->catalog_nd);
+  };
   std::istringstream lines(text);
   std::string line;
   int number = 0;
@@ -50,7 +66,10 @@ void GlassCatalog::LoadAgfText(const std::string& raw, const std::string& path, 
       glass->catalog_vd = ParseFiniteNumber(f[4], path, number);
       std::string glass_key = GlassKey(f[0]);
       if (table.count(glass_key)) throw MakeInputError(path, number, "glass {} is listed twice", f[0]);
+      check_current();
       current = glass.get();
+      current_line = number;
+      ++count;
       table[glass_key] = std::move(glass);
     } else if (type == "CD" || type == "LD" || type == "IT") {
       if (!current) throw MakeInputError(path, number, "{} line before any NM line", type);
@@ -82,6 +101,8 @@ void GlassCatalog::LoadAgfText(const std::string& raw, const std::string& path, 
     }
     // Other line types (CC, GC, ED, TD, OD, BD, ...) carry nothing the renderer uses.
   }
+  check_current();
+  if (count == 0) throw MakeInputError(path, 0, "no glass in this catalog (no NM line): not an AGF file?");
 }
 
 std::string DataDirectory() {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <tuple>
 #include <optional>
 #include <sstream>
 
@@ -84,6 +86,25 @@ struct Pending {
   Rows transmittance;
 };
 
+// The row a typing error most likely sits in, and how much the formula fitted to the other
+// rows misses it: the row without which the others fit best (tables of 5 to 200 rows; a
+// least-squares fit spreads one bad row's error over its neighbours, so the plain residuals
+// point at several rows).
+std::pair<size_t, double> WorstRowLeftOut(const Rows& rows) {
+  size_t best = 0;
+  double best_rest = INFINITY, best_miss = 0;
+  for (size_t i = 0; i < rows.values.size(); ++i) {
+    std::vector<std::pair<double, double>> others;
+    for (size_t j = 0; j < rows.values.size(); ++j)
+      if (j != i) others.push_back(rows.values[j]);
+    Glass fit("", "", DispersionFormula::kSchott, FitSchottFormula(others));
+    double rest = 0;
+    for (const auto& [l, n] : others) rest = std::max(rest, std::abs(fit.Index(l * 1e3) - n));
+    if (rest < best_rest) best = i, best_rest = rest, best_miss = fit.Index(rows.values[i].first * 1e3) - rows.values[i].second;
+  }
+  return {best, best_miss};
+}
+
 Glass TableGlass(const Pending& g, const std::string& path, const std::string& catalog) {
   if (g.index.values.size() < 2)
     throw MakeInputError(path, g.line, "glass {} needs an index table of 2 or more rows (wavelength_um index) or a value "
@@ -94,12 +115,51 @@ Glass TableGlass(const Pending& g, const std::string& path, const std::string& c
   for (const auto& [l, n] : g.index.values) lo = std::min(lo, l), hi = std::max(hi, l);
   glass.lambda_min_um = lo;
   glass.lambda_max_um = hi;
-  for (size_t i = 0; i < g.index.values.size(); ++i) {
-    double miss = glass.Index(g.index.values[i].first * 1e3) - g.index.values[i].second;
-    if (!(std::abs(miss) <= 2e-4))
-      spdlog::warn("{}:{}: glass {}: the dispersion formula fitted to the table misses this row by {:.1e} (a typing "
-                   "error?)", path, g.index.lines[i], g.name, miss);
+  // The renderer uses the formula over the visible (0.36 to 0.83 um) whatever the table covers:
+  // there it must give an index from 1 to 5 that falls with the wavelength (normal dispersion),
+  // and over the table's own range an index from 1 to 5.
+  double previous = INFINITY;
+  for (int k = 0; k <= 94; ++k) {
+    const double um = 0.36 + 0.005 * k, n = glass.Index(um * 1e3);
+    if (!(n >= 1 && n <= 5 && n <= previous + 1e-12))
+      throw MakeInputError(path, g.line,
+                           "glass {}: the dispersion formula fitted to its index table gives n {:.5g} at {:.3f} um{}: the "
+                           "table must describe an index from 1 to 5 that falls with the wavelength across the visible "
+                           "(0.36 to 0.83 um; it covers {} to {} um)",
+                           g.name, n, um,
+                           std::isfinite(previous) && n > previous ? fmt::format(", above {:.5g} just before", previous) : "",
+                           lo, hi);
+    previous = n;
   }
+  for (int k = 0; k <= 100; ++k) {
+    const double um = lo + (hi - lo) * k / 100, n = glass.Index(um * 1e3);
+    if (!(n >= 1 && n <= 5))
+      throw MakeInputError(path, g.line, "glass {}: the dispersion formula fitted to its index table gives n {:.5g} at "
+                                         "{:.3f} um, inside the table's range", g.name, n, um);
+  }
+  if (lo > 0.4861327 || hi < 0.6562725)  // less than the F to C lines
+    spdlog::warn("{}:{}: glass {}: its index table covers {} to {} um; the renderer extrapolates its formula across the "
+                 "visible (0.36 to 0.83 um)", path, g.line, g.name, lo, hi);
+  if (const double vd = glass.ComputedVd(); !(vd >= 10 && vd <= 120))
+    spdlog::warn("{}:{}: glass {}: the index table gives an Abbe number Vd of {:.3g}, far from any optical material's "
+                 "(10 to 120)", path, g.line, g.name, vd);
+  // A typing error: with 5 to 200 rows, the row the others' fit misses (an error at the table's
+  // edge is absorbed by a fit through it); otherwise the row the whole fit misses most.
+  const size_t rows = g.index.values.size();
+  const bool left_out = rows >= 5 && rows <= 200;
+  double largest = 0;
+  size_t at = 0;
+  if (left_out) {
+    std::tie(at, largest) = WorstRowLeftOut(g.index);
+  } else {
+    for (size_t i = 0; i < rows; ++i) {
+      double miss = glass.Index(g.index.values[i].first * 1e3) - g.index.values[i].second;
+      if (!(std::abs(miss) <= std::abs(largest))) largest = miss, at = i;
+    }
+  }
+  if (!(std::abs(largest) <= 2e-4))
+    spdlog::warn("{}:{}: glass {}: the dispersion formula fitted to the {} misses this row by {:.1e} (a typing error?)",
+                 path, g.index.lines[at], g.name, left_out ? "other rows" : "table", largest);
   glass.catalog_nd = glass.ComputedNd();
   glass.catalog_vd = glass.ComputedVd();
   return glass;
@@ -145,6 +205,7 @@ void ParseGlassFile(GlassCatalog& into, const std::string& text, const std::stri
   std::string line;
   int number = 0;
   std::optional<Pending> pending;  // the glass whose rows are being read
+  std::map<std::string, int> first_lines;  // glass key -> the line that names it
   auto finish = [&] {
     if (pending) AddPending(into, *pending, path, catalog);
     pending.reset();
@@ -174,7 +235,7 @@ void ParseGlassFile(GlassCatalog& into, const std::string& text, const std::stri
       if (!pending || f.size() != 2 || (pending->value && !transmittance_rows))
         throw MakeInputError(path, number, "expected 'glass NAME nd=N vd=V', 'glass NAME n=N' or 'glass NAME' and "
                                            "its table rows 'wavelength_um index', or 'transmittance THICKNESS_MM' and "
-                                           "its rows 'wavelength_um transmittance', got '{}'", f[0]);
+                                           "its rows 'wavelength_um transmittance', got '{}'", Printable(f[0]));
       double l = ParseFiniteNumber(f[0], path, number), v = ParseFiniteNumber(f[1], path, number);
       if (!(l >= 0.2 && l <= 25))
         throw MakeInputError(path, number, "wavelength {} is not in micrometres (0.2 to 25)", l);
@@ -191,8 +252,13 @@ void ParseGlassFile(GlassCatalog& into, const std::string& text, const std::stri
     }
     finish();
     if (f.size() < 2) throw MakeInputError(path, number, "a glass line needs a name");
-    pending = Pending{f[1], number, std::nullopt, {}, 0, 0, {}};
     const std::string& name = f[1];
+    if (name.find_first_of(":=,") != std::string::npos || GlassKey(name) == "AIR")
+      throw MakeInputError(path, number, "'{}' cannot name a glass (a lens file would read it as {})", Printable(name),
+                           GlassKey(name) == "AIR" ? "air" : "a catalog, an index or a model glass");
+    if (auto [first, added] = first_lines.emplace(GlassKey(name), number); !added)
+      throw MakeInputError(path, number, "glass {} is given twice (first on line {})", name, first->second);
+    pending = Pending{name, number, std::nullopt, {}, 0, 0, {}};
     std::vector<std::string> values(f.begin() + 2, f.end());
     if (values.size() == 1 && values[0].find(",vd=") != std::string::npos) {  // nd=N,vd=V as in a lens file
       std::string v = values[0];
@@ -219,6 +285,7 @@ void ParseGlassFile(GlassCatalog& into, const std::string& text, const std::stri
     }
   }
   finish();
+  if (first_lines.empty()) spdlog::warn("{}: no glass in this glass file", path);
 }
 
 }  // namespace objektiv

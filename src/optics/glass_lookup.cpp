@@ -22,13 +22,17 @@ std::string SubstitutionNote(std::string_view written, const GlassMatch& m) {
                          m.glass->name());
     case GlassMatch::How::kSameMaterial:
       return fmt::format("glass {} is read as {}:{} (the same material)", written, m.glass->catalog(), m.glass->name());
+    case GlassMatch::How::kAgreesWithStated:
+      return fmt::format("glass {} is read as {}:{}, whose nd and Vd agree with the file's (the catalogs searched first "
+                         "hold another glass of that name)", written, m.glass->catalog(), m.glass->name());
     default:
       return {};
   }
 }
 
-void GlassLookup::SetUserGlasses(std::shared_ptr<const GlassCatalog> user) {
+void GlassLookup::SetUserGlasses(std::shared_ptr<const GlassCatalog> user, std::string label) {
   user_.clear();
+  user_label_ = std::move(label);
   if (!user) return;
   for (const std::string& name : user->catalogs()) user_.push_back({user.get(), name, user});
 }
@@ -90,6 +94,11 @@ std::optional<GlassMatch> GlassLookup::Find(std::string_view written, std::optio
   }
   for (size_t i = 0; i < groups.size(); ++i)
     if (std::optional<GlassMatch> m = FindInGroup(groups[i], name, stated)) {
+      if (stated && m->how == GlassMatch::How::kExactName && !AgreesWith(*m->glass, *stated))
+        for (size_t later = i + 1; later < groups.size(); ++later)
+          for (const Source& s : groups[later])
+            if (const Glass* g = s.catalogs->FindIn(s.name, name); g && AgreesWith(*g, *stated))
+              return GlassMatch{std::shared_ptr<const Glass>(s.owner, g), GlassMatch::How::kAgreesWithStated};
       if (i == 0) used_.insert(m->glass.get());
       return m;
     }
@@ -105,9 +114,10 @@ std::vector<std::string> GlassLookup::UnusedUserGlasses() const {
 }
 
 std::string GlassLookup::SearchedCatalogs() const {
-  std::string out;
-  for (const auto& group : Groups())
-    for (const Source& s : group) out += (out.empty() ? "" : ", ") + s.name;
+  std::string out = user_label_;  // the user's glass file, then the catalogs
+  const std::vector<std::vector<Source>> groups = Groups();
+  for (size_t i = 1; i < groups.size(); ++i)
+    for (const Source& s : groups[i]) out += (out.empty() ? "" : ", ") + s.name;
   return out;
 }
 

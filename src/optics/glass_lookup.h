@@ -9,7 +9,8 @@
 //      HIKARI).
 // In each group the exact name first; where several catalogs of the group list it (CDGM's F2
 // is not Schott's F2) and the file gives the glass's nd and Vd, the first that agrees with
-// them (nd within 0.001, Vd within 0.5), else the first. Then a withdrawn name's successor
+// them (nd within 0.001, Vd within 0.5), else one of that name in a later group that agrees,
+// else the first. Then a withdrawn name's successor
 // (glass_aliases.h: BK7 -> SCHOTT N-BK7), which the caller notes in the log. A name in no
 // group is the caller's error: never a guess. "CATALOG:NAME" searches that catalog only.
 #pragma once
@@ -35,7 +36,9 @@ struct GlassMatch {
   // Shares ownership of the catalog a lens file brought (shipped glasses live as long as the
   // program and are not owned).
   std::shared_ptr<const Glass> glass;
-  enum class How { kExactName, kSuccessor, kSameMaterial } how = How::kExactName;
+  // kAgreesWithStated: the search order's glass of that name disagrees with the nd and Vd the
+  // file states, and this one, of that name in a later group, agrees.
+  enum class How { kExactName, kSuccessor, kSameMaterial, kAgreesWithStated } how = How::kExactName;
 };
 // What a lens reader logs where the glass found is not the name written: "glass BK7 is
 // withdrawn; its successor SCHOTT:N-BK7 is used"; empty for an exact name.
@@ -45,8 +48,8 @@ class GlassLookup {
  public:
   explicit GlassLookup(const GlassCatalog& shipped) : shipped_(shipped) {}
 
-  // Glasses from the user's glass file (group 1).
-  void SetUserGlasses(std::shared_ptr<const GlassCatalog> user);
+  // Glasses from the user's glass file (group 1), named `label` (the file's name) in messages.
+  void SetUserGlasses(std::shared_ptr<const GlassCatalog> user, std::string label);
   // The catalogs a lens file names (group 2): shipped ones by name, or catalogs of `beside`
   // (AGF files beside the lens). Names neither holds are skipped (the caller warns).
   void Prefer(const std::vector<std::string>& catalogs, std::shared_ptr<const GlassCatalog> beside);
@@ -71,6 +74,7 @@ class GlassLookup {
 
   const GlassCatalog& shipped_;
   std::vector<Source> user_, preferred_;
+  std::string user_label_;
   mutable std::set<const Glass*> used_;
 };
 

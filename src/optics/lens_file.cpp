@@ -32,19 +32,13 @@ std::shared_ptr<const Glass> ParseMedium(const std::string& m, const LensGlasses
   }
   if (m.rfind("nd=", 0) == 0) {
     size_t comma = m.find(",vd=");
-    if (comma == std::string::npos) throw MakeInputError(path, line, "a model glass is written nd=N,vd=V, got '{}'", m);
+    if (comma == std::string::npos) throw MakeInputError(path, line, "a model glass is written nd=N,vd=V, got '{}'", Printable(m));
     double nd = ParseFiniteNumber(m.substr(3, comma - 3), path, line);
     double vd = ParseFiniteNumber(m.substr(comma + 4), path, line);
     if (nd < 1 || vd <= 0) throw MakeInputError(path, line, "model glass needs nd >= 1 and vd > 0");
     return std::make_shared<const Glass>(Glass::Model(nd, vd));
   }
-  std::optional<GlassMatch> g = glasses.Find(m, line);
-  if (!g)
-    throw MakeInputError(path, line,
-                         "unknown glass '{}' (a glass of the catalogs {} or of a glass file {} beside the lens, air, "
-                         "n=..., or nd=...,vd=...)",
-                         m, glasses.lookup().SearchedCatalogs(), fs::path(path).filename().replace_extension(".glass").string());
-  return g->glass;
+  return glasses.Resolve(m, line);
 }
 
 // The coatings a lens file defines (`coating NAME ...` lines), and which of them it used.

@@ -39,29 +39,9 @@ double Thickness(const std::string& s, const std::string& path, int line) {
   return ParseFiniteNumber(s, path, line);
 }
 
-// The nearest shipped glasses to a stated nd and Vd, for the message about a glass in no catalog.
-std::string NearestGlasses(const StatedGlass& stated, const GlassCatalog& shipped) {
-  std::vector<std::pair<double, const Glass*>> by_distance;
-  for (const Glass* g : shipped.All()) {
-    double dn = (g->catalog_nd - stated.nd) / 1e-3, dv = (g->catalog_vd - stated.vd) / 0.5;
-    by_distance.emplace_back(dn * dn + dv * dv, g);
-  }
-  const size_t n = std::min<size_t>(3, by_distance.size());
-  std::partial_sort(by_distance.begin(), by_distance.begin() + n, by_distance.end(),
-                    [](const auto& a, const auto& b) { return a.first < b.first; });
-  std::string out;
-  for (size_t i = 0; i < n; ++i) {
-    const Glass& g = *by_distance[i].second;
-    out += fmt::format("{}{}:{} {:.5f}/{:.2f}", i ? ", " : "", g.catalog(), g.name(), g.catalog_nd, g.catalog_vd);
-  }
-  return out;
-}
-
 // A surface's glass (GLAS NAME ? ? nd Vd ...): Zemax's model glass ___BLANK through the stated nd
-// and Vd, or a glass found by name (glass_lookup.h). A name in no catalog is an error that says
-// how to supply it; a found glass whose nd and Vd disagree with the stated ones is warned about.
+// and Vd, or a glass found by name (lens_glasses.h: LensGlasses::Resolve).
 std::shared_ptr<const Glass> SurfaceGlass(const ZSurface& z, const LensGlasses& glasses, const std::string& path) {
-  const GlassLookup& lookup = glasses.lookup();
   if (z.glass == "___BLANK") {
     if (z.model_nd < 1 || !(z.model_vd > 0))
       throw MakeInputError(path, z.glass_line, "model glass needs nd >= 1 and vd > 0, got nd {} vd {}", z.model_nd,
@@ -72,29 +52,11 @@ std::shared_ptr<const Glass> SurfaceGlass(const ZSurface& z, const LensGlasses& 
   // placeholder 1.5 and 40 or zeros in others (which state nothing).
   if ((z.model_nd != 0 && z.model_nd < 1) || z.model_vd < 0)
     throw MakeInputError(path, z.glass_line, "glass {}: the stated nd {} and vd {} are no glass's (nd >= 1, vd >= 0)",
-                         z.glass, z.model_nd, z.model_vd);
+                         Printable(z.glass), z.model_nd, z.model_vd);
   std::optional<StatedGlass> stated;
   if (z.model_nd >= 1 && z.model_vd > 0 && !(z.model_nd == 1.5 && z.model_vd == 40))
     stated = StatedGlass{z.model_nd, z.model_vd};
-  std::optional<GlassMatch> m = glasses.Find(z.glass, z.glass_line, stated);
-  if (!m) {
-    std::string values = stated ? fmt::format(" nd={} vd={}", stated->nd, stated->vd) : " nd=N vd=V";
-    throw MakeInputError(
-        path, z.glass_line,
-        "glass {} is in no catalog (searched {}){}; give it in {} beside the lens (a line 'glass {}{}', or an index "
-        "table: docs/lens-format.md), or put its maker's AGF catalog there and name it on the GCAT line",
-        z.glass, lookup.SearchedCatalogs(),
-        stated ? fmt::format(". The file states nd {} vd {}; the nearest shipped glasses are {}", stated->nd, stated->vd,
-                             NearestGlasses(*stated, lookup.shipped()))
-               : "",
-        std::filesystem::path(path).filename().replace_extension(".glass").string(), z.glass, values);
-  }
-  const Glass& g = *m->glass;
-  if (stated && !AgreesWith(g, *stated))
-    spdlog::warn("{}:{}: glass {}: the file states nd {} vd {}, but {}:{} has nd {:.5f} vd {:.2f} (another glass of that "
-                 "name?)", path, z.glass_line, z.glass, stated->nd, stated->vd, g.catalog(), g.name(),
-                 g.catalog_nd > 0 ? g.catalog_nd : g.ComputedNd(), g.catalog_vd > 0 ? g.catalog_vd : g.ComputedVd());
-  return m->glass;
+  return glasses.Resolve(z.glass, z.glass_line, stated);
 }
 
 }  // namespace
@@ -113,7 +75,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
   std::vector<ZSurface> surfs;
   std::set<std::string> warned;
   auto warn_once = [&](const std::string& what, int at) {
-    if (warned.insert(what).second) spdlog::warn("{}:{}: not supported, ignored: {}", path, at, what);
+    if (warned.insert(what).second) spdlog::warn("{}:{}: not supported, ignored: {}", path, at, Printable(what));
   };
   // Keywords that carry nothing for sequential refraction of a rotationally symmetric lens.
   static const std::set<std::string> kIgnored = {
@@ -153,7 +115,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
     if (key == "MODE") {
       need(1);
       if (f[0] != "SEQ")
-        throw MakeInputError(path, number, "MODE {}: not a sequential lens file (this reader takes MODE SEQ)", f[0]);
+        throw MakeInputError(path, number, "MODE {}: not a sequential lens file (this reader takes MODE SEQ)", Printable(f[0]));
       continue;
     }
     if (key == "ENVD") {  // temperature (C) and pressure (atm) of the lens's surroundings
@@ -167,9 +129,10 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
     if (key == "MNUM") {  // configurations (zoom positions ...): the surfaces hold the active one's
       need(1);
       std::optional<int> n = ParseIntegerIn(f[0], 0, 1 << 20);
-      if (n && *n > 1)
+      if (!n) throw MakeInputError(path, number, "MNUM '{}' is not a number of configurations", Printable(f[0]));
+      if (*n > 1)
         spdlog::warn("{}:{}: a file of {} configurations: the lens is read as stored (configuration {}); the other "
-                     "configurations are ignored", path, number, *n, f.size() > 1 ? f[1] : "1");
+                     "configurations are ignored", path, number, *n, f.size() > 1 ? Printable(f[1]) : "1");
       continue;
     }
     if (key == "GCAT") {
@@ -182,7 +145,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
       else if (f[0] == "CM") unit = 10;
       else if (f[0] == "IN") unit = 25.4;
       else if (f[0] == "METER" || f[0] == "M") unit = 1000;
-      else throw MakeInputError(path, number, "unknown lens unit '{}'", f[0]);
+      else throw MakeInputError(path, number, "unknown lens unit '{}'", Printable(f[0]));
       continue;
     }
     // The system aperture (entrance pupil diameter, image-space f-number, object-space NA,
@@ -204,7 +167,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
       need(1);
       cur->type = f[0];
       if (f[0] != "STANDARD" && f[0] != "EVENASPH")
-        throw MakeInputError(path, number, "surface type {} is not supported (STANDARD and EVENASPH are)", f[0]);
+        throw MakeInputError(path, number, "surface type {} is not supported (STANDARD and EVENASPH are)", Printable(f[0]));
     } else if (key == "CURV") {
       need(1);
       cur->curv = ParseFiniteNumber(f[0], path, number);
@@ -227,6 +190,10 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
       if (!(rmax > 0)) throw MakeInputError(path, number, "CLAP: the aperture's radius must be above 0, got {}", rmax);
       cur->clear_aperture = rmax;
     } else if (key == "STOP") {
+      for (const ZSurface& z : surfs)
+        if (z.stop)
+          throw MakeInputError(path, number, "a second STOP (the first is the surface on line {}): a lens has one stop",
+                               z.line);
       cur->stop = true;
     } else if (key == "GLAS") {
       need(1);
@@ -243,7 +210,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
     } else if (key == "PARM") {
       need(2);
       std::optional<int> k = ParseIntegerIn(f[0], 1, 8);
-      if (!k) throw MakeInputError(path, number, "PARM index '{}' is not an integer from 1 to 8", f[0]);
+      if (!k) throw MakeInputError(path, number, "PARM index '{}' is not an integer from 1 to 8", Printable(f[0]));
       cur->parm[*k] = ParseFiniteNumber(f[1], path, number);
     } else if (!kIgnored.count(key)) {
       warn_once(key, number);

@@ -1,0 +1,54 @@
+#include "app/prescription_table.h"
+
+#include <fmt/format.h>
+
+namespace objektiv {
+
+std::string MediumLabel(const LensSurface& s) {
+  if (!s.medium) return "air";
+  const Glass& g = *s.medium;
+  // Glasses made from numbers carry their numbers in their name.
+  if (g.catalog() == "MODEL" || g.catalog() == "CONSTANT" || g.catalog() == "FORMULA") return g.name();
+  return g.catalog() + ":" + g.name();
+}
+
+std::string PrescriptionTable(const LensPrescription& lens) {
+  std::string out = fmt::format("  {:>3}  {:>11}  {:>10}  {:<24} {:>8} {:>6}  {:>10}\n", "row", "radius (mm)",
+                                "thickness", "medium after", "nd", "Vd", "semi-diam.");
+  for (size_t i = 0; i < lens.surfaces.size(); ++i) {
+    const LensSurface& s = lens.surfaces[i];
+    const std::string radius = s.is_stop ? "stop" : s.flat || s.radius == 0 ? "inf" : fmt::format("{:.4f}", s.radius);
+    std::string nd, vd;
+    if (s.medium) {
+      nd = fmt::format("{:.5f}", s.medium->ComputedNd());
+      if (s.medium->IsDispersive()) vd = fmt::format("{:.2f}", s.medium->ComputedVd());
+    }
+    std::string extra;
+    if (s.conic != 0) extra += fmt::format(" k={:g}", s.conic);
+    if (s.HasAsphericTerms()) extra += " aspheric";
+    out += fmt::format("  {:>3}  {:>11}  {:>10.4f}  {:<24} {:>8} {:>6}  {:>10.4f}{}\n", i + 1, radius, s.thickness,
+                       MediumLabel(s), nd, vd, s.semi_diameter, extra);
+  }
+  return out;
+}
+
+nlohmann::ordered_json PrescriptionJson(const LensPrescription& lens) {
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (const LensSurface& s : lens.surfaces) {
+    nlohmann::ordered_json r;
+    r["stop"] = s.is_stop;
+    r["radius_mm"] = s.is_stop || s.flat || s.radius == 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(s.radius);
+    r["thickness_mm"] = s.thickness;
+    r["medium"] = MediumLabel(s);
+    if (s.medium) {
+      r["nd"] = s.medium->ComputedNd();
+      if (s.medium->IsDispersive()) r["vd"] = s.medium->ComputedVd();
+    }
+    r["semi_diameter_mm"] = s.semi_diameter;
+    if (s.conic != 0) r["conic"] = s.conic;
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+}  // namespace objektiv
