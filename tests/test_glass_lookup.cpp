@@ -393,6 +393,24 @@ TEST(ZemaxGlasses, OddFilesBesideTheLensAreErrorsAndDatedCatalogsTheShippedOnes)
   fs::remove_all(dir);
 }
 
+// An AGF catalog whose formula disagrees with its own nd, or has a pole in the visible, is an
+// error at the glass's NM line (a CD line of zeros gave n = 1 in silence).
+TEST(GlassCatalog, AFormulaThatIsNotItsGlassIsAnError) {
+  struct Case {
+    std::string text, part;
+  };
+  for (const Case& k : std::vector<Case>{
+           {"NM A 2 0 1.5 60\nCD 0 0 0 0 0 0\n", "c.agf:1: glass A: its dispersion formula gives nd 1, its NM line says 1.5"},
+           {"NM A 2 0 1.5 60\n", "c.agf:1: glass A: its dispersion formula gives nd 1"},
+           {"NM A 1 0 1.5 60\nCD 2.25\nNM B 2 0 1.5 60\nCD 0.34486 0.25\n", "c.agf:3: glass B: its dispersion formula gives n"},
+           {"CC nothing here\n", "c.agf: no glass in this catalog"},
+       }) {
+    GlassCatalog c;
+    EXPECT_NE(ErrorOf([&] { c.LoadAgfText(k.text, "c.agf", "C"); }).find(k.part), std::string::npos)
+        << k.text << " -> " << ErrorOf([&] { c.LoadAgfText(k.text, "c.agf", "C"); });
+  }
+}
+
 TEST(NativeLensGlasses, WithdrawnNamesAndAGlassFileBesideTheLens) {
   fs::path dir = FreshDir("native");
   const std::string lens = "surface 50 5 BK7 10\nsurface -50 5 air 10\nstop 40 air 5\n";

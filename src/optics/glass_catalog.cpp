@@ -44,6 +44,15 @@ void GlassCatalog::LoadAgfText(const std::string& raw, const std::string& path, 
       throw MakeInputError(path, current_line,
                            "glass {}: its dispersion formula gives nd {:.6g}, its NM line says {} (the CD coefficients "
                            "or the formula number are wrong)", current->name(), nd, current->catalog_nd);
+    // Nor a pole or a negative square inside the visible part of its range.
+    const double lo = std::max(0.36, current->lambda_max_um > 0 ? current->lambda_min_um : 0.0);
+    const double hi = std::min(0.83, current->lambda_max_um > 0 ? current->lambda_max_um : 1.0);
+    for (int k = 0; k <= 47 && lo < hi; ++k) {
+      const double um = lo + (hi - lo) * k / 47, n = current->Index(um * 1e3);
+      if (!(n >= 1 && n <= 5))
+        throw MakeInputError(path, current_line, "glass {}: its dispersion formula gives n {:.6g} at {:.3f} um",
+                             current->name(), n, um);
+    }
   };
   std::istringstream lines(text);
   std::string line;
