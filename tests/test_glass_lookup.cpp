@@ -36,9 +36,10 @@ std::string Singlet(const std::string& head, const std::string& glas) {
          "\n DISZ 3\n DIAM 4\nSURF 3\n DISZ 10\n DIAM 4\nSURF 4\n DISZ 0\n DIAM 4\n";
 }
 
-const Glass& ElementGlass(const LensPrescription& lens) {
+// The first element's glass; shared, as the lens owns a glass its own files brought.
+std::shared_ptr<const Glass> ElementGlass(const LensPrescription& lens) {
   for (const LensSurface& s : lens.surfaces)
-    if (s.medium) return *s.medium;
+    if (s.medium) return s.medium;
   throw std::runtime_error("no glass");
 }
 
@@ -274,7 +275,7 @@ TEST(GlassFile, BadLinesNameFileAndLine) {
 TEST(ZemaxGlasses, WithdrawnNameIsItsSuccessorWithAWarning) {
   test::LogCapture log;
   LensPrescription lens = ParseZemaxLens(Singlet("", "GLAS BK7 1 0 1.5168 64.17 0 0"), "w.zmx", GlassCatalog::Default());
-  EXPECT_EQ(ElementGlass(lens).name(), "N-BK7");
+  EXPECT_EQ(ElementGlass(lens)->name(), "N-BK7");
   EXPECT_TRUE(log.Has("w.zmx:10: glass BK7 is withdrawn; its successor SCHOTT:N-BK7 is used")) << log.Text();
   EXPECT_FALSE(log.Has("another glass")) << log.Text();
 }
@@ -292,9 +293,9 @@ TEST(ZemaxGlasses, ASubstitutionIsNotedOncePerName) {
 TEST(ZemaxGlasses, GcatOrderAndStatedValuesPickAmongGlassesOfOneName) {
   test::LogCapture log;
   EXPECT_EQ(ElementGlass(ParseZemaxLens(Singlet("GCAT CDGM SCHOTT\n", "GLAS F2"), "c.zmx", GlassCatalog::Default()))
-                .catalog(), "CDGM");
+                ->catalog(), "CDGM");
   EXPECT_EQ(ElementGlass(ParseZemaxLens(Singlet("", "GLAS F2 1 0 1.6129 36.99"), "c.zmx", GlassCatalog::Default()))
-                .catalog(), "CDGM");
+                ->catalog(), "CDGM");
   EXPECT_TRUE(log.Text().empty()) << log.Text();
   // Zemax's placeholder values (1.5, 40) and zeros state nothing.
   ParseZemaxLens(Singlet("", "GLAS N-BK7 0 0 1.50E+00 4.00E+01 0 0"), "p.zmx", GlassCatalog::Default());
@@ -310,9 +311,9 @@ TEST(ZemaxGlasses, GcatOrderAndStatedValuesPickAmongGlassesOfOneName) {
             std::string::npos);
   // A glass of the name outside the GCAT catalogs that agrees with the stated values is taken,
   // with a warning.
-  const Glass& f2 = ElementGlass(ParseZemaxLens(Singlet("GCAT SCHOTT\n", "GLAS F2 0 0 1.6129 36.99"), "x.zmx",
-                                                 GlassCatalog::Default()));
-  EXPECT_EQ(f2.catalog(), "CDGM");
+  std::shared_ptr<const Glass> f2 = ElementGlass(
+      ParseZemaxLens(Singlet("GCAT SCHOTT\n", "GLAS F2 0 0 1.6129 36.99"), "x.zmx", GlassCatalog::Default()));
+  EXPECT_EQ(f2->catalog(), "CDGM");
   EXPECT_TRUE(log.Has("x.zmx:11: glass F2 is read as CDGM:F2, whose nd and Vd agree with the file's")) << log.Text();
 }
 
@@ -339,17 +340,19 @@ TEST(ZemaxGlasses, GlassFileAndCatalogsBesideTheLens) {
   Write(dir / "lightpath.agf", "NM D-ZK3M 1 589612 1.5891 61.2 0 0 0\nCD 2.4787781648 0 0.0160395560 0 0 0 0 0 0 0\n");
   {
     test::LogCapture log;
-    const Glass& g = ElementGlass(ReadLensFile((dir / "vendor.zmx").string(), GlassCatalog::Default()));
-    EXPECT_EQ(g.catalog(), "LIGHTPATH");
+    std::shared_ptr<const Glass> g =
+        ElementGlass(ReadLensFile((dir / "vendor.zmx").string(), GlassCatalog::Default()));
+    EXPECT_EQ(g->catalog(), "LIGHTPATH");
     EXPECT_FALSE(log.Has("LIGHTPATH is not shipped")) << log.Text();
   }
   // A glass file beside the lens comes first; its unused glasses are named.
   Write(dir / "vendor.glass", "glass D-ZK3M nd=1.5891 vd=61.2\nglass SPARE n=1.5\n");
   {
     test::LogCapture log;
-    const Glass& g = ElementGlass(ReadLensFile((dir / "vendor.zmx").string(), GlassCatalog::Default()));
-    EXPECT_EQ(g.catalog(), "vendor.glass");
-    EXPECT_NEAR(g.ComputedNd(), 1.5891, 1e-12);
+    std::shared_ptr<const Glass> g =
+        ElementGlass(ReadLensFile((dir / "vendor.zmx").string(), GlassCatalog::Default()));
+    EXPECT_EQ(g->catalog(), "vendor.glass");
+    EXPECT_NEAR(g->ComputedNd(), 1.5891, 1e-12);
     EXPECT_TRUE(log.Has("vendor.glass: 1 glass(es) that no surface of ")) << log.Text();
     EXPECT_TRUE(log.Has("vendor.zmx uses: SPARE")) << log.Text();
   }
@@ -380,15 +383,16 @@ TEST(ZemaxGlasses, OddFilesBesideTheLensAreErrorsAndDatedCatalogsTheShippedOnes)
   EXPECT_NE(ErrorOf([&] { ReadLensFile((dir / "a.zmx").string(), GlassCatalog::Default()); })
                 .find("a.zmx:1: catalog MYCAT: two files beside the lens name it"), std::string::npos);
   fs::remove(dir / "mycat.agf");
-  EXPECT_EQ(ElementGlass(ReadLensFile((dir / "a.zmx").string(), GlassCatalog::Default())).catalog(), "MYCAT");
+  EXPECT_EQ(ElementGlass(ReadLensFile((dir / "a.zmx").string(), GlassCatalog::Default()))->catalog(), "MYCAT");
   // A catalog file that is no AGF (no NM line) is an error naming it.
   Write(dir / "MYCAT.AGF", "<svg></svg>\n");
   EXPECT_NE(ErrorOf([&] { ReadLensFile((dir / "a.zmx").string(), GlassCatalog::Default()); })
                 .find("MYCAT.AGF: no glass in this catalog (no NM line)"), std::string::npos);
   // A dated edition of a shipped catalog is the shipped one, with a warning.
   test::LogCapture log;
-  const Glass& g = ElementGlass(ParseZemaxLens(Singlet("GCAT CDGM_2015\n", "GLAS F2"), "d.zmx", GlassCatalog::Default()));
-  EXPECT_EQ(g.catalog(), "CDGM");
+  std::shared_ptr<const Glass> g =
+      ElementGlass(ParseZemaxLens(Singlet("GCAT CDGM_2015\n", "GLAS F2"), "d.zmx", GlassCatalog::Default()));
+  EXPECT_EQ(g->catalog(), "CDGM");
   EXPECT_TRUE(log.Has("d.zmx:1: glass catalog CDGM_2015 is read as the shipped CDGM")) << log.Text();
   fs::remove_all(dir);
 }
@@ -417,11 +421,11 @@ TEST(NativeLensGlasses, WithdrawnNamesAndAGlassFileBesideTheLens) {
   Write(dir / "old.lens", lens);
   {
     test::LogCapture log;
-    EXPECT_EQ(ElementGlass(ReadLensFile((dir / "old.lens").string(), GlassCatalog::Default())).name(), "N-BK7");
+    EXPECT_EQ(ElementGlass(ReadLensFile((dir / "old.lens").string(), GlassCatalog::Default()))->name(), "N-BK7");
     EXPECT_TRUE(log.Has("old.lens:1: glass BK7 is withdrawn; its successor SCHOTT:N-BK7 is used")) << log.Text();
   }
   Write(dir / "old.glass", "glass BK7 nd=1.5168 vd=64.17\n");
-  EXPECT_EQ(ElementGlass(ReadLensFile((dir / "old.lens").string(), GlassCatalog::Default())).catalog(), "old.glass");
+  EXPECT_EQ(ElementGlass(ReadLensFile((dir / "old.lens").string(), GlassCatalog::Default()))->catalog(), "old.glass");
   fs::remove_all(dir);
 }
 
