@@ -8,6 +8,7 @@
 #include "optics/lens_file.h"
 #include "optics/lens_tracer.h"
 #include "optics/paraxial.h"
+#include "optics/pbrt_lens.h"
 #include "optics/zemax_lens.h"
 
 namespace objektiv {
@@ -142,6 +143,33 @@ TEST(Zemax, ModeEnvironmentAndConfigurationsAreReadOrWarnedAbout) {
   ParseZemaxLens("ENVD 60 1 1\nMNUM 3 2\n" + lens, "e.zmx", GlassCatalog::Default());
   EXPECT_TRUE(log.Has("e.zmx:1: ENVD: the lens at 60 C and 1 atm is not modelled")) << log.Text();
   EXPECT_TRUE(log.Has("e.zmx:2: a file of 3 configurations: the lens is read as stored (configuration 2)")) << log.Text();
+}
+
+// A thickness of 1e300 gave an EFL of 0 and a lens that renders nothing, in every format.
+TEST(LensFiles, LengthsBeyondAHundredMetresAreErrors) {
+  struct Case {
+    std::string text, path, part;
+  };
+  for (const Case& k : std::vector<Case>{
+           {"surface 50 1e300 N-BK7 10\nstop 1 air 5\nsurface -50 40 air 10\n", "a.lens", "a.lens:1: thickness 1e+300 mm"},
+           {"surface inf 5 N-BK7 2e5\nstop 1 air 5\nsurface -50 40 air 10\n", "b.lens", "b.lens:1: semi-diameter 200000 mm"},
+           {"50 1e300 1.5 10\n0 1 1 8\n-50 40 1 10\n", "c.dat", "c.dat:1: thickness 1e+300 mm"},
+           {"SURF 0\n DISZ INFINITY\nSURF 1\n STOP\n DISZ 1\n DIAM 4\nSURF 2\n CURV 0.01\n GLAS N-BK7\n DISZ 3\n"
+            " DIAM 4\nSURF 3\n DISZ 1e300\n DIAM 4\nSURF 4\n", "d.zmx", "d.zmx:12: thickness 1e+300 mm"},
+           {"UNIT M\nSURF 0\n DISZ INFINITY\nSURF 1\n STOP\n DISZ 0.001\n DIAM 0.004\nSURF 2\n CURV 10\n GLAS N-BK7\n"
+            " DISZ 0.003\n DIAM 0.004\nSURF 3\n DISZ 0.01\n DIAM 0.004\nSURF 4\n DISZ 200\n DIAM 0\nSURF 5\n", "e.zmx",
+            "e.zmx:16: thickness 200000 mm"},
+       }) {
+    std::string e;
+    try {
+      if (k.path.ends_with(".zmx")) ParseZemaxLens(k.text, k.path, GlassCatalog::Default());
+      else if (k.path.ends_with(".dat")) ParsePbrtLens(k.text, k.path);
+      else ParseNativeLens(k.text, k.path, GlassCatalog::Default());
+    } catch (const InputError& x) {
+      e = x.what();
+    }
+    EXPECT_NE(e.find(k.part), std::string::npos) << k.path << ": " << e;
+  }
 }
 
 // A second STOP was dropped in silence (the first won, and the f-number changed).

@@ -178,6 +178,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       }
     }
     CheckReachable(s, path, number);
+    CheckSize(s, path, number);
     lens.surfaces.push_back(std::move(s));
     last_line = number;
   }

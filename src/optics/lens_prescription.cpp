@@ -68,6 +68,13 @@ void CheckReachable(const LensSurface& s, const std::string& path, int line) {
     throw MakeInputError(path, line, "semi-diameter {} is larger than the surface can reach ({:.4g})", s.semi_diameter, limit);
 }
 
+void CheckSize(const LensSurface& s, const std::string& path, int line) {
+  if (!(std::abs(s.thickness) <= kMaxLensLength))
+    throw MakeInputError(path, line, "thickness {} mm is beyond {} mm: not a lens", s.thickness, kMaxLensLength);
+  if (!(s.semi_diameter <= kMaxLensLength))
+    throw MakeInputError(path, line, "semi-diameter {} mm is beyond {} mm: not a lens", s.semi_diameter, kMaxLensLength);
+}
+
 LensPrescription LensPrescription::Scaled(double factor) const {
   LensPrescription out = *this;
   for (LensSurface& s : out.surfaces) {

@@ -65,5 +65,10 @@ struct LensPrescription {
 void CoatAirGlassSurfaces(LensPrescription& lens, const std::shared_ptr<const Coating>& coating, bool only_bare);
 
 void CheckReachable(const LensSurface& s, const std::string& path, int line);
+// Throws InputError "PATH:LINE: ..." if the surface's thickness or semi-diameter is beyond
+// kMaxLensLength (in mm, after unit conversion): a thickness of 1e300 gave an EFL of 0 and a
+// lens that renders nothing, in silence (for every reader).
+inline constexpr double kMaxLensLength = 1e5;  // 100 m
+void CheckSize(const LensSurface& s, const std::string& path, int line);
 
 }  // namespace objektiv

@@ -69,6 +69,7 @@ LensPrescription ParsePbrtLens(const std::string& text, const std::string& path)
     } else if (s.semi_diameter > std::abs(s.radius)) {
       throw MakeInputError(path, number, "semi-diameter {} is larger than the radius {}", s.semi_diameter, s.radius);
     }
+    CheckSize(s, path, number);
     index_before = n;
     if (n != 1) {
       auto& m = media[n];

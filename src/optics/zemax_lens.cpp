@@ -231,6 +231,8 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
     if (z.diam == 0 && z.clear_aperture == 0 && in_air && z.curv == 0 && z.type == "STANDARD" && !z.stop) {
       // A dummy plane in air without a semi-diameter (Zemax writes 0 where it computed none):
       // it neither refracts nor clips; its thickness joins the gap before it.
+      if (!(std::abs(z.disz * unit) <= kMaxLensLength))
+        throw MakeInputError(path, z.line, "thickness {} mm is beyond {} mm: not a lens", z.disz * unit, kMaxLensLength);
       if (!lens.surfaces.empty()) lens.surfaces.back().thickness += z.disz * unit;
       continue;
     }
@@ -264,6 +266,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
                      BuiltInCoatingNames());
     }
     CheckReachable(s, path, z.line);
+    CheckSize(s, path, z.line);
     if (z.stop) {
       have_stop = true;
       if (s.flat && !s.HasAsphericTerms()) {
