@@ -8,7 +8,8 @@
 # (docs/images/stereo-*.png), `readme-images.sh classic` the classic tracer's picture
 # (docs/images/classic-*.png), `readme-images.sh media` the participating media's pictures
 # (docs/images/media-*.png), `readme-images.sh sampling` adaptive sampling's picture and
-# sample counts (docs/images/sampling-*.png).
+# sample counts (docs/images/sampling-*.png), `readme-images.sh filter` the colour filter's
+# pair (docs/images/filter-yellow.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/objektiv
@@ -86,8 +87,15 @@ sampling() {
     -o "$tmp/counts.png"
   oiiotool "$tmp/adaptive.png" "$tmp/counts.png" --mosaic:pad=4 2x1 -o "$out/sampling-cornell-adaptive.png"
 }
+filter() {
+  # The Tessar without and with the yellow filter plate of scenes/cornell-box/tessar-yellow-filter.*
+  render scenes/cornell-box/cornell-box-filter.xml -D res=256 -D spp=256 -D lens=tessar.brendel.100mm -o "$tmp/plain.exr"
+  render scenes/cornell-box/cornell-box-filter.xml -D res=256 -D spp=256 -o "$tmp/yellow.exr"
+  oiiotool "$tmp/plain.png" "$tmp/yellow.png" --mosaic:pad=6 2x1 -o "$out/filter-yellow.png"
+}
+
 case "${1:-}" in
-  flare | caustics | bump | stereo | classic | media | sampling)
+  flare | caustics | bump | stereo | classic | media | sampling | filter)
     "$1"
     echo "wrote $out/$1-*.png"
     exit 0
@@ -122,5 +130,5 @@ for f in 0.85 2.25 6.05; do
   render scenes/lens/focus-series.xml -D spp=256 -D focus=$f -D width=420 -D height=280 -o "$tmp/focus-$f.exr"
 done
 oiiotool "$tmp/focus-0.85.png" "$tmp/focus-2.25.png" "$tmp/focus-6.05.png" --mosaic:pad=6 3x1 -o "$out/lens-focus-series.png"
-for part in flare caustics bump stereo classic media; do "$part"; done
+for part in flare caustics bump stereo classic media filter; do "$part"; done
 echo "wrote $out/*.png"

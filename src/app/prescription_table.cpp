@@ -1,5 +1,7 @@
 #include "app/prescription_table.h"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 namespace objektiv {
@@ -13,8 +15,10 @@ std::string MediumLabel(const LensSurface& s) {
 }
 
 std::string PrescriptionTable(const LensPrescription& lens) {
-  std::string out = fmt::format("  {:>3}  {:>11}  {:>10}  {:<24} {:>8} {:>6}  {:>10}\n", "row", "radius (mm)",
-                                "thickness", "medium after", "nd", "Vd", "semi-diam.");
+  size_t width = 12;  // the medium column: as wide as its longest label
+  for (const LensSurface& s : lens.surfaces) width = std::max(width, MediumLabel(s).size());
+  std::string out = fmt::format("  {:>3}  {:>11}  {:>10}  {:<{}} {:>8} {:>6}  {:>10}\n", "row", "radius (mm)",
+                                "thickness", "medium after", width, "nd", "Vd", "semi-diam.");
   for (size_t i = 0; i < lens.surfaces.size(); ++i) {
     const LensSurface& s = lens.surfaces[i];
     const std::string radius = s.is_stop ? "stop" : s.flat || s.radius == 0 ? "inf" : fmt::format("{:.4f}", s.radius);
@@ -26,8 +30,8 @@ std::string PrescriptionTable(const LensPrescription& lens) {
     std::string extra;
     if (s.conic != 0) extra += fmt::format(" k={:g}", s.conic);
     if (s.HasAsphericTerms()) extra += " aspheric";
-    out += fmt::format("  {:>3}  {:>11}  {:>10.4f}  {:<24} {:>8} {:>6}  {:>10.4f}{}\n", i + 1, radius, s.thickness,
-                       MediumLabel(s), nd, vd, s.semi_diameter, extra);
+    out += fmt::format("  {:>3}  {:>11}  {:>10.4f}  {:<{}} {:>8} {:>6}  {:>10.4f}{}\n", i + 1, radius, s.thickness,
+                       MediumLabel(s), width, nd, vd, s.semi_diameter, extra);
   }
   return out;
 }
