@@ -335,19 +335,32 @@ TEST(CoatedLens, CoatedCameraIsBrighterByTheAxialTransmittance) {
 
 TEST(CoatedLens, ConstantIndexGlassKeepsTheCoatingsColour) {
   // Glass without dispersion sends every wavelength of a sample along one path, but a coating
-  // still transmits each differently: the camera keeps only the hero wavelength (whose
-  // transmittance it traced). Carrying the others at the hero's transmittance made every
-  // coated .dat lens grey and too dark.
+  // transmits each differently: the camera traces the ray at each of the sample's wavelengths
+  // for its transmittance, so every wavelength goes on with its own weight. (Carrying the others
+  // at the hero's transmittance made every coated .dat lens grey and too dark; keeping the hero
+  // alone left colour noise.)
   LensCameraSpec s;
   s.lens = ParseNativeLens("surface 50 3 n=1.9 10\nstop 1 air 8\nsurface inf 45 air 10\n", "c.lens", Glasses());
   s.fnumber = 8;
   for (const char* coating : {"none", "MgF2@700"}) {
     Recoat(s.lens, CoatingForLens(coating, s.lens));
     auto camera = MakeLensCamera(Transform(), 11, 11, s);
+    const CameraSample sample{Vec2f(5.5f, 5.5f), Vec2f(0.4f, 0.6f)};
     SampledWavelengths l = SampledWavelengths::SampleVisible(0.3f);
-    auto r = camera->GenerateRay({Vec2f(5.5f, 5.5f), Vec2f(0.4f, 0.6f)}, l);
+    auto r = camera->GenerateRay(sample, l);
     ASSERT_TRUE(r);
-    EXPECT_EQ(l.SecondaryTerminated(), std::string(coating) != "none") << coating;
+    EXPECT_FALSE(l.SecondaryTerminated()) << coating;
+    double spread = 0;
+    for (int k = 0; k < kSpectrumSamples; ++k) {
+      // The same sample at that wavelength alone: the same ray, the same weight.
+      SampledWavelengths one = SampledWavelengths::Single(l[k]);
+      auto rk = camera->GenerateRay(sample, one);
+      ASSERT_TRUE(rk);
+      EXPECT_NEAR(r->weight[k], rk->weight[0], 1e-5 * rk->weight[0]) << coating << " " << l[k];
+      spread = std::max(spread, std::abs(double(r->weight[k]) / r->weight[0] - 1));
+    }
+    if (std::string(coating) == "none") EXPECT_LT(spread, 1e-3);  // bare n=1.9: the same at every wavelength
+    else EXPECT_GT(spread, 0.01) << coating;                        // a quarter wave at 700 nm: not
   }
 }
 

@@ -49,7 +49,7 @@ RealisticCamera::RealisticCamera(const Transform& to_world, int width, int heigh
     : LensCamera(to_world, width, height, settings), lens_(lens), fast_(MakeFastTracer(lens, settings.vignetting)),
       bounds_(lens, FilmRadius(), BoundsOptions(lens, settings.vignetting)), film_z_(lens.FilmZ()),
       stop_radius_(float(lens.StopSemiDiameter())), dispersive_(IsDispersive(lens.prescription())),
-      one_wavelength_(dispersive_ || (settings.transmission && TransmittanceVariesWithWavelength(lens))) {
+      per_wavelength_transmittance_(!dispersive_ && settings.transmission && TransmittanceVariesWithWavelength(lens)) {
   const ParaxialData& p = lens.paraxial();
   SetOriginZ(lens.VertexZ(0) + p.entrance_pupil_position);
 }
@@ -69,9 +69,8 @@ bool RealisticCamera::StartRay(const CameraSample& s, SampledWavelengths& lambda
   float dx = float(ps.point.x) - fx, dy = float(ps.point.y) - fy;
   float inv = 1 / std::sqrt(dx * dx + dy * dy + dz * dz);
   weight = Weight(film, -dz * inv, -dz, ps.pdf);
-  // Each wavelength takes its own path through dispersive glass, and its own transmittance
-  // through coatings: only the hero goes on.
-  if (one_wavelength_) lambda.TerminateSecondary();
+  // Each wavelength takes its own path through dispersive glass: only the hero goes on.
+  if (dispersive_) lambda.TerminateSecondary();
   ray = {fx, fy, float(film_z_), dx * inv, dy * inv, dz * inv, lambda[0], 1.f};
   return true;
 }
@@ -107,19 +106,34 @@ void RealisticCamera::GenerateRays(std::span<const CameraSample> samples, std::s
     batch.Push(r);
     weights.push_back(w);
     index.push_back(uint32_t(i));
+    if (per_wavelength_transmittance_)
+      for (int k = 1; k < kSpectrumSamples; ++k) {  // the copies right after the hero's
+        r.lambda = lambdas[i][k];
+        batch.Push(r);
+      }
   }
   const ApertureMask* mask = settings_.aperture_mask.get();
   batch.record_stop = mask != nullptr;
   fast_.TraceFromFilm(batch, settings_.transmission);
-  count.traced += batch.Size();
+  const size_t copies = per_wavelength_transmittance_ ? kSpectrumSamples : 1;
+  count.traced += batch.Size() / copies;
   const float inv_stop = 1 / stop_radius_;
-  for (size_t j = 0; j < batch.Size(); ++j) {
+  for (size_t n = 0; n < weights.size(); ++n) {
+    const size_t j = n * copies;  // the hero's copy
     if (!batch.alive[j]) continue;
     ++count.passed;
-    float w = weights[j];
+    float w = weights[n];
     if (mask) w *= mask->Transmittance(batch.stop_x[j] * inv_stop, batch.stop_y[j] * inv_stop);
-    out[index[j]] = Finish(batch.Get(j), w);
+    out[index[n]] = Finish(batch.Get(j), w);
+    if (copies > 1) out[index[n]]->weight = PerWavelengthWeight(batch, j, w);
   }
+}
+
+SampledSpectrum RealisticCamera::PerWavelengthWeight(const RayBatch& batch, size_t first, float weight) const {
+  SampledSpectrum out;
+  for (int k = 0; k < kSpectrumSamples; ++k)
+    out[k] = batch.alive[first + k] ? weight * batch.Get(first + k).transmittance : 0.f;
+  return out;
 }
 
 std::optional<CameraImportance> RealisticCamera::SampleImportance(const Vec3f& p, Vec2f u,
@@ -132,7 +146,7 @@ std::optional<CameraImportance> RealisticCamera::SampleImportance(const Vec3f& p
   d = d / distance;
   const double projected = front.ProjectedCosine(d);
   if (projected <= 0) return std::nullopt;
-  if (one_wavelength_) lambda.TerminateSecondary();
+  if (dispersive_) lambda.TerminateSecondary();
   // From just in front of the surface point (the scene point may be far away).
   std::vector<Vec3d> path;
   const bool masked = settings_.aperture_mask != nullptr;
@@ -142,7 +156,8 @@ std::optional<CameraImportance> RealisticCamera::SampleImportance(const Vec3f& p
   const Vec2d film(r.ray->o.x + t * r.ray->d.x, r.ray->o.y + t * r.ray->d.y);
   const Vec2d pixel = PixelOf(film);
   if (!(pixel.x >= 0 && pixel.x < width_ && pixel.y >= 0 && pixel.y < height_)) return std::nullopt;
-  double w = settings_.transmission ? r.surface_transmittance * r.internal_transmittance : 1.0;
+  const double hero_transmittance = settings_.transmission ? r.surface_transmittance * r.internal_transmittance : 1.0;
+  double w = 1;
   if (masked && lens_.StopIndex() >= 0 && path.size() > size_t(lens_.StopIndex())) {
     const Vec3d& s = path[size_t(lens_.StopIndex())];
     w *= settings_.aperture_mask->Transmittance(float(s.x / stop_radius_), float(s.y / stop_radius_));
@@ -157,7 +172,12 @@ std::optional<CameraImportance> RealisticCamera::SampleImportance(const Vec3f& p
   CameraImportance out;
   out.p_film = Vec2f(float(pixel.x), float(pixel.y));
   out.p_lens = WorldPoint(front.p);
-  out.weight = SampledSpectrum(float(w));
+  out.weight = SampledSpectrum(float(w * hero_transmittance));
+  if (per_wavelength_transmittance_)  // the same path at the sample's other wavelengths
+    for (int k = 1; k < kSpectrumSamples; ++k) {
+      const TraceResult rk = TraceFromObject(lens_, {front.p - d, d}, lambda[k]);
+      out.weight[k] = rk.ray ? float(w * rk.surface_transmittance * rk.internal_transmittance) : 0.f;
+    }
   return out;
 }
 

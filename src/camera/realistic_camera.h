@@ -40,6 +40,9 @@ class RealisticCamera final : public LensCamera {
   // false where no light reaches that film point.
   bool StartRay(const CameraSample& s, SampledWavelengths& lambda, FloatRay& ray, float& weight) const;
   CameraRay Finish(const FloatRay& ray, float weight) const;
+  // The weights of a sample's wavelengths whose copies (one per wavelength, alike but for it)
+  // the batch traced at `first`.
+  SampledSpectrum PerWavelengthWeight(const RayBatch& batch, size_t first, float weight) const;
 
   LensSystem lens_;
   LensEffects effects_;
@@ -47,8 +50,11 @@ class RealisticCamera final : public LensCamera {
   PupilBounds bounds_;
   double film_z_;
   float stop_radius_;  // for the aperture mask
-  bool dispersive_;
-  bool one_wavelength_;  // each camera ray carries its hero wavelength only (dispersion or coatings)
+  bool dispersive_;  // each camera ray carries its hero wavelength only: each takes its own path
+  // Without dispersion every wavelength of a sample takes one path, but coatings and absorbing
+  // glass (a colour filter) transmit each differently: the ray is traced once for each of the
+  // sample's wavelengths, for its transmittance (the hero's alone would leave colour noise).
+  bool per_wavelength_transmittance_;
 };
 
 }  // namespace objektiv
