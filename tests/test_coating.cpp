@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 #include "base/error.h"
 #include "base/fresnel_dielectric.h"
@@ -331,6 +332,41 @@ TEST(CoatedLens, CoatedCameraIsBrighterByTheAxialTransmittance) {
     EXPECT_GT(ratio_t, 1.4) << coating;
     EXPECT_NEAR(ratio_e, ratio_t, 0.01 * ratio_t) << coating;
   }
+}
+
+// A coating designed where a glass's formula has no index (N-SF6 at 240 nm: its Sellmeier
+// formula covers 370-2500 nm) gave NaN reflectances (found by fuzz_lens_native): an error
+// naming the coating's line, in every format and for a coating chosen by a scene.
+TEST(CoatedLens, ACoatingDesignedWhereTheGlassHasNoIndexIsAnError) {
+  auto error_of = [](const std::function<void()>& f) {
+    try {
+      f();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  const std::string lens = "surface 60 6 N-BK7 12\nsurface -40 2 N-SF6 12 coating=multi@240\nsurface -150 3 air 12\n"
+                           "stop 40 air 9\n";
+  EXPECT_NE(error_of([&] { ParseNativeLens(lens, "c.lens", Glasses()); })
+                .find("c.lens:2: surface 2: coating multi@240: the glass N-SF6 has no index at its design wavelength "
+                      "240 nm (its formula covers 370 to 2500 nm)"),
+            std::string::npos);
+  const std::string sf6 = "surface 60 6 N-SF6 12\nsurface -150 3 air 12\nstop 40 air 9\n";
+  EXPECT_NE(error_of([&] { ParseNativeLens("default_coating: MgF2@240\n" + sf6, "d.lens", Glasses()); })
+                .find("d.lens:1: surface 1: coating MgF2@240: the glass N-SF6"),
+            std::string::npos);
+  const std::string zmx = "SURF 0\n DISZ INFINITY\nSURF 1\n STOP\n DISZ 1\n DIAM 4\nSURF 2\n CURV 0.01\n GLAS N-SF6\n"
+                          " COAT MGF2@240\n DISZ 3\n DIAM 4\nSURF 3\n DISZ 10\n DIAM 4\nSURF 4\n";
+  EXPECT_NE(error_of([&] { ParseZemaxLens(zmx, "z.zmx", Glasses()); }).find("z.zmx:10: coating MGF2@240: the glass N-SF6"),
+            std::string::npos) << error_of([&] { ParseZemaxLens(zmx, "z.zmx", Glasses()); });
+  LensPrescription bare = ParseNativeLens(sf6, "b.lens", Glasses());
+  EXPECT_NE(error_of([&] { Recoat(bare, CoatingForLens("multi@240", bare)); })
+                .find("lens surface 1: coating multi@240: the glass N-SF6 has no index at its design"),
+            std::string::npos);
+  // Where every medium has an index there, the coating is taken.
+  LensPrescription dgauss = LoadLens("dgauss.50mm", Glasses());
+  EXPECT_NO_THROW(Recoat(dgauss, CoatingForLens("multi@240", dgauss)));
 }
 
 TEST(CoatedLens, ConstantIndexGlassKeepsTheCoatingsColour) {

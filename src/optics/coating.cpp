@@ -41,6 +41,29 @@ std::string Coating::Describe() const {
   return optical ? fmt::format("{} (waves at {:g} nm), outermost first", text, design_nm_) : text + ", outermost first";
 }
 
+std::string CoatingMismatch(const Coating& coating, const Glass* before, const Glass* after) {
+  if (coating.ideal_transmittance()) return {};  // no layers
+  const double l0 = coating.design_nm();
+  auto bad = [&](const Glass* g) {
+    const double n = g ? g->Index(l0) : 1.0;
+    return !(std::isfinite(n) && n >= 1);
+  };
+  auto range = [](const Glass& g) {
+    return g.lambda_max_um > 0 ? fmt::format(" (its formula covers {:g} to {:g} nm)", g.lambda_min_um * 1e3,
+                                             g.lambda_max_um * 1e3)
+                               : std::string();
+  };
+  for (const Glass* g : {before, after})
+    if (bad(g))
+      return fmt::format("coating {}: the glass {} has no index at its design wavelength {:g} nm{}", coating.name(),
+                         g->name(), l0, range(*g));
+  for (const Coating::Layer& layer : coating.layers())
+    if (layer.material && bad(layer.material.get()))
+      return fmt::format("coating {}: its layer material {} has no index at its design wavelength {:g} nm{}",
+                         coating.name(), layer.material->name(), l0, range(*layer.material));
+  return {};
+}
+
 CoatedInterface::CoatedInterface(std::shared_ptr<const Coating> coating, std::shared_ptr<const Glass> outer,
                                  std::shared_ptr<const Glass> substrate)
     : coating_(std::move(coating)), outer_(std::move(outer)), substrate_(std::move(substrate)) {

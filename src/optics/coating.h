@@ -53,6 +53,16 @@ class Coating {
   std::optional<double> ideal_t_;
 };
 
+// A coating lies on the glass: facing the object unless only the object side of the surface is
+// glass (`glass_before`, `glass_after`: whether the media before and after it are glass).
+inline bool CoatingOuterFacesObject(bool glass_before, bool glass_after) { return !(glass_before && !glass_after); }
+
+// Why `coating` cannot lie on a surface between `before` and `after` (null: air): a medium or a
+// layer material without an index at the coating's design wavelength (a formula undefined
+// there, as N-SF6's at 240 nm; the layers' thicknesses and a matched layer's index come from
+// it). Empty where it can.
+std::string CoatingMismatch(const Coating& coating, const Glass* before, const Glass* after);
+
 class CoatedInterface {
  public:
   // `outer` and `substrate`: the media on the coating's two sides (null: air).

@@ -106,6 +106,8 @@ std::shared_ptr<const Coating> CoatingForLens(std::string_view name, const LensP
 void Recoat(LensPrescription& lens, const std::shared_ptr<const Coating>& coating) {
   if (coating) {
     CoatAirGlassSurfaces(lens, coating, false);
+    if (auto mismatch = FirstCoatingMismatch(lens))
+      throw InputError(fmt::format("lens surface {}: {}", mismatch->first + 1, mismatch->second));
   } else {
     for (LensSurface& s : lens.surfaces) s.coating = nullptr;
   }

@@ -47,7 +47,8 @@ std::string BuiltInCoatingNames();
 // file); null for none. Throws InputError (without a location) for an unknown name.
 std::shared_ptr<const Coating> CoatingForLens(std::string_view name, const LensPrescription& lens);
 // What a scene's or `lens info`'s coating choice does: every air-glass surface gets `coating`;
-// null leaves every surface bare, cemented ones too.
+// null leaves every surface bare, cemented ones too. Throws InputError (without a location)
+// where the coating cannot lie on a surface's glass (optics/coating.h: CoatingMismatch).
 void Recoat(LensPrescription& lens, const std::shared_ptr<const Coating>& coating);
 
 // A coating definition's fields after its name: [design=NM] LAYER... Throws InputError

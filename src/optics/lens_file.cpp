@@ -210,6 +210,12 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       spdlog::warn("{}:{}: default_coating '{}' coats no surface: every air-glass surface names its own", path, default_line,
                    default_coating->name());
   }
+  if (auto mismatch = FirstCoatingMismatch(lens)) {
+    auto own = std::find(explicitly_coated.begin(), explicitly_coated.end(), mismatch->first);
+    throw MakeInputError(path, own != explicitly_coated.end() ? coating_lines[size_t(own - explicitly_coated.begin())]
+                                                              : default_line,
+                         "surface {}: {}", mismatch->first + 1, mismatch->second);
+  }
   coatings.WarnUnused(path);
   lens_glasses.WarnUnused();
   for (const FileCoatings::Defined& d : coatings.defined) lens.defined_coatings.push_back(d.coating);

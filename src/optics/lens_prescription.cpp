@@ -68,6 +68,16 @@ void CheckReachable(const LensSurface& s, const std::string& path, int line) {
     throw MakeInputError(path, line, "semi-diameter {} is larger than the surface can reach ({:.4g})", s.semi_diameter, limit);
 }
 
+std::optional<std::pair<size_t, std::string>> FirstCoatingMismatch(const LensPrescription& lens) {
+  for (size_t i = 0; i < lens.surfaces.size(); ++i) {
+    const LensSurface& s = lens.surfaces[i];
+    const Glass* before = i > 0 ? lens.surfaces[i - 1].medium.get() : nullptr;
+    if (!s.coating || before == s.medium.get()) continue;  // coats nothing
+    if (std::string why = CoatingMismatch(*s.coating, before, s.medium.get()); !why.empty()) return {{i, why}};
+  }
+  return std::nullopt;
+}
+
 void CheckSize(const LensSurface& s, const std::string& path, int line) {
   if (!(std::abs(s.thickness) <= kMaxLensLength))
     throw MakeInputError(path, line, "thickness {} mm is beyond {} mm: not a lens", s.thickness, kMaxLensLength);

@@ -2,6 +2,7 @@
 #pragma once
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,9 @@ struct LensPrescription {
 void CoatAirGlassSurfaces(LensPrescription& lens, const std::shared_ptr<const Coating>& coating, bool only_bare);
 
 void CheckReachable(const LensSurface& s, const std::string& path, int line);
+// The first surface whose coating cannot lie there (optics/coating.h: CoatingMismatch), and
+// why; nothing where every coating fits (for the readers, which name its line, and Recoat).
+std::optional<std::pair<size_t, std::string>> FirstCoatingMismatch(const LensPrescription& lens);
 // Throws InputError "PATH:LINE: ..." if the surface's thickness or semi-diameter is beyond
 // kMaxLensLength (in mm, after unit conversion): a thickness of 1e300 gave an EFL of 0 and a
 // lens that renders nothing, in silence (for every reader).

@@ -15,9 +15,8 @@ LensSystem::LensSystem(LensPrescription prescription)
     const LensSurface& s = surfaces[i];
     vertex_z_.push_back(z);
     z += s.thickness;
-    // The coating lies on the glass: facing the object unless only the object side is glass.
     const std::shared_ptr<const Glass>& before = i > 0 ? surfaces[i - 1].medium : nullptr;
-    const bool outer_faces_object = !(before && !s.medium);
+    const bool outer_faces_object = CoatingOuterFacesObject(before != nullptr, s.medium != nullptr);
     outer_faces_object_.push_back(outer_faces_object);
     if (s.coating && before != s.medium)
       coated_.emplace_back(std::in_place, s.coating, outer_faces_object ? before : s.medium,

@@ -267,6 +267,10 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
     }
     CheckReachable(s, path, z.line);
     CheckSize(s, path, z.line);
+    if (const Glass* before = lens.surfaces.empty() ? nullptr : lens.surfaces.back().medium.get();
+        s.coating && before != s.medium.get())
+      if (std::string why = CoatingMismatch(*s.coating, before, s.medium.get()); !why.empty())
+        throw MakeInputError(path, z.coat_line, "{}", why);
     if (z.stop) {
       have_stop = true;
       if (s.flat && !s.HasAsphericTerms()) {
