@@ -32,6 +32,9 @@ class Glass {
   double InternalTransmittance(double lambda_nm, double thickness_mm) const;
   double ComputedNd() const { return Index(kLambdad); }
   double ComputedVd() const { return (Index(kLambdad) - 1) / (Index(kLambdaF) - Index(kLambdaC)); }
+  // nd and Vd as the glass's source states them (the catalog's NM line), else as computed.
+  double NominalNd() const { return catalog_nd > 0 ? catalog_nd : ComputedNd(); }
+  double NominalVd() const { return catalog_vd > 0 ? catalog_vd : ComputedVd(); }
   bool IsDispersive() const { return kind_ != Kind::kConstant; }
   // Whether the glass has transmittance data (InternalTransmittance is not 1 everywhere).
   bool Absorbs() const { return !absorption_.empty(); }

@@ -10,9 +10,7 @@
 namespace objektiv {
 
 bool AgreesWith(const Glass& g, const StatedGlass& stated) {
-  double nd = g.catalog_nd > 0 ? g.catalog_nd : g.ComputedNd();
-  double vd = g.catalog_vd > 0 ? g.catalog_vd : g.ComputedVd();
-  return std::abs(nd - stated.nd) <= 1e-3 && std::abs(vd - stated.vd) <= 0.5;
+  return std::abs(g.NominalNd() - stated.nd) <= 1e-3 && std::abs(g.NominalVd() - stated.vd) <= 0.5;
 }
 
 std::string SubstitutionNote(std::string_view written, const GlassMatch& m) {

@@ -43,8 +43,6 @@ std::string NearestGlasses(const StatedGlass& stated, const GlassCatalog& shippe
   return out;
 }
 
-double NominalNd(const Glass& g) { return g.catalog_nd > 0 ? g.catalog_nd : g.ComputedNd(); }
-double NominalVd(const Glass& g) { return g.catalog_vd > 0 ? g.catalog_vd : g.ComputedVd(); }
 
 }  // namespace
 
@@ -127,7 +125,7 @@ std::shared_ptr<const Glass> LensGlasses::Resolve(const std::string& name, int l
   if (noted_.insert(GlassKey(name)).second)
     if (std::string note = SubstitutionNote(name, *m); !note.empty()) spdlog::warn("{}:{}: {}", lens_path_, line, note);
   if (stated && !AgreesWith(g, *stated)) {
-    const double nd = NominalNd(g), vd = NominalVd(g);
+    const double nd = g.NominalNd(), vd = g.NominalVd();
     if (std::abs(nd - stated->nd) > 0.01 || std::abs(vd - stated->vd) > 5)
       throw MakeInputError(lens_path_, line,
                            "glass {}: the file states nd {} vd {}, but {}:{} has nd {:.5f} vd {:.2f}: another material "

@@ -219,6 +219,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
   if (surfs.size() < 3) throw MakeInputError(path, 0, "a lens needs an object surface, at least one surface and an image surface");
 
   const LensGlasses lens_glasses(path, glasses, catalogs);
+  std::vector<int> coat_lines;  // per lens surface: its COAT line (0: none, or an iris)
   LensPrescription lens;
   lens.name = name;
   lens.source = path;
@@ -267,10 +268,6 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
     }
     CheckReachable(s, path, z.line);
     CheckSize(s, path, z.line);
-    if (const Glass* before = lens.surfaces.empty() ? nullptr : lens.surfaces.back().medium.get();
-        s.coating && before != s.medium.get())
-      if (std::string why = CoatingMismatch(*s.coating, before, s.medium.get()); !why.empty())
-        throw MakeInputError(path, z.coat_line, "{}", why);
     if (z.stop) {
       have_stop = true;
       if (s.flat && !s.HasAsphericTerms()) {
@@ -283,11 +280,14 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
         iris.semi_diameter = s.semi_diameter;
         iris.medium = lens.surfaces.empty() ? nullptr : lens.surfaces.back().medium;
         lens.surfaces.push_back(iris);
+        coat_lines.push_back(0);
       }
     }
     lens.surfaces.push_back(std::move(s));
+    coat_lines.push_back(z.coat_line);
   }
   if (!have_stop) throw MakeInputError(path, 0, "no STOP surface");
+  if (auto mismatch = FirstCoatingMismatch(lens)) throw MakeInputError(path, coat_lines[mismatch->first], "{}", mismatch->second);
   lens_glasses.WarnUnused();
   if (lens.surfaces.back().medium) throw MakeInputError(path, surfs[surfs.size() - 2].line, "the last surface must leave the lens into air");
   return lens;
