@@ -9,7 +9,8 @@
 # (docs/images/classic-*.png), `readme-images.sh media` the participating media's pictures
 # (docs/images/media-*.png), `readme-images.sh sampling` adaptive sampling's picture and
 # sample counts (docs/images/sampling-*.png), `readme-images.sh filter` the colour filter's
-# pair (docs/images/filter-yellow.png).
+# pair (docs/images/filter-yellow.png), `readme-images.sh mirror` the mirror lens's bokeh
+# (docs/images/lens-mirror-bokeh.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/objektiv
@@ -94,8 +95,16 @@ filter() {
   oiiotool "$tmp/plain.png" "$tmp/yellow.png" --mosaic:pad=6 2x1 -o "$out/filter-yellow.png"
 }
 
+# The mirror lens's rings beside a refracting lens's discs at the same focal length.
+mirror() {
+  render scenes/bokeh/bokeh-mirror-lens.xml -D spp=512 -D width=600 -D height=400 -o "$tmp/mirror.exr"
+  render scenes/bokeh/bokeh-mirror-lens.xml -D spp=512 -D width=600 -D height=400 -D lens=telephoto.250mm \
+    -o "$tmp/mirror-tele.exr"
+  oiiotool "$tmp/mirror.png" "$tmp/mirror-tele.png" --mosaic:pad=6 2x1 -o "$out/lens-mirror-bokeh.png"
+}
+
 case "${1:-}" in
-  flare | caustics | bump | stereo | classic | media | sampling | filter)
+  flare | caustics | bump | stereo | classic | media | sampling | filter | mirror)
     "$1"
     echo "wrote $out/$1-*.png"
     exit 0
@@ -106,6 +115,7 @@ render scenes/bokeh/bokeh-lens.xml -D spp=1024 -o "$tmp/bokeh-f2.8.exr"
 render scenes/bokeh/bokeh-lens.xml -D spp=1024 -D fnumber=2.03 -o "$tmp/bokeh-open.exr"
 cp "$tmp/bokeh-f2.8.png" "$out/lens-bokeh.png"
 cp "$tmp/bokeh-open.png" "$out/lens-bokeh-wide-open.png"
+mirror
 
 render scenes/lens/distortion-chart.xml -D spp=64 -o "$tmp/dist-wide.exr"
 render scenes/lens/distortion-chart.xml -D spp=64 -D lens=telephoto.250mm -D distance=11.4 -o "$tmp/dist-tele.exr"

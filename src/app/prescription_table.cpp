@@ -21,13 +21,17 @@ std::string PrescriptionTable(const LensPrescription& lens) {
                                 "thickness", "medium after", width, "nd", "Vd", "semi-diam.");
   for (size_t i = 0; i < lens.surfaces.size(); ++i) {
     const LensSurface& s = lens.surfaces[i];
-    const std::string radius = s.is_stop ? "stop" : s.flat || s.radius == 0 ? "inf" : fmt::format("{:.4f}", s.radius);
+    const bool iris = s.is_stop && !s.mirror;  // a mirror that is the stop keeps its radius
+    const std::string radius = iris ? "stop" : s.flat || s.radius == 0 ? "inf" : fmt::format("{:.4f}", s.radius);
     std::string nd, vd;
     if (s.medium) {
       nd = fmt::format("{:.5f}", s.medium->ComputedNd());
       if (s.medium->IsDispersive()) vd = fmt::format("{:.2f}", s.medium->ComputedVd());
     }
     std::string extra;
+    if (s.mirror) extra += s.is_stop ? " mirror (the stop)" : " mirror";
+    if (s.mirror && s.mirror_reflectance != 1) extra += fmt::format(" reflectance={:g}", s.mirror_reflectance);
+    if (s.obscuration > 0) extra += fmt::format(" obscuration={:g}", s.obscuration);
     if (s.conic != 0) extra += fmt::format(" k={:g}", s.conic);
     if (s.HasAsphericTerms()) extra += " aspheric";
     out += fmt::format("  {:>3}  {:>11}  {:>10.4f}  {:<{}} {:>8} {:>6}  {:>10.4f}{}\n", i + 1, radius, s.thickness,
@@ -41,7 +45,13 @@ nlohmann::ordered_json PrescriptionJson(const LensPrescription& lens) {
   for (const LensSurface& s : lens.surfaces) {
     nlohmann::ordered_json r;
     r["stop"] = s.is_stop;
-    r["radius_mm"] = s.is_stop || s.flat || s.radius == 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(s.radius);
+    r["radius_mm"] = (s.is_stop && !s.mirror) || s.flat || s.radius == 0 ? nlohmann::ordered_json()
+                                                                          : nlohmann::ordered_json(s.radius);
+    if (s.mirror) {
+      r["mirror"] = true;
+      r["mirror_reflectance"] = s.mirror_reflectance;
+    }
+    if (s.obscuration > 0) r["obscuration_mm"] = s.obscuration;
     r["thickness_mm"] = s.thickness;
     r["medium"] = MediumLabel(s);
     if (s.medium) {

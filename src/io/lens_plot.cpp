@@ -65,6 +65,12 @@ Svg PlotLensLayout(const LensSystem& lens, const std::vector<double>& fields, do
     poly.push_back(map(lens.VertexZ(i) + lens.surface(i).Sag(semi_i), -h));
     svg.Polygon(poly, "#cfe3f5", "#2b5d8a", 1.2);
   }
+  // Mirrors: their reflecting face, silvered; a central obstruction: a dark bar across it.
+  for (int i = 0; i < n; ++i) {
+    const LensSurface& s = rx.surfaces[i];
+    if (s.mirror) svg.Polyline(profile(i, -s.semi_diameter, s.semi_diameter), "#555", 3.5, 1);
+    if (s.obscuration > 0) svg.Polyline(profile(i, -s.obscuration, s.obscuration), "#222", 5, 1);
+  }
   // Optical axis, stop, film.
   svg.Line(map(z_start, 0), map(z_end, 0), "#888", 0.8, "6,4");
   int stop = rx.StopIndex();

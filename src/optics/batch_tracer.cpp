@@ -45,6 +45,9 @@ BatchLensTracer::BatchLensTracer(const LensSystem& lens_system)
     f.k1 = float(1 + s.conic);
     double semi = s.is_stop ? lens_system.StopSemiDiameter() : s.semi_diameter;
     f.semi2 = float(semi * semi);
+    f.obscuration2 = float(s.obscuration * s.obscuration);
+    f.mirror = s.mirror;
+    f.reflectance = float(s.mirror_reflectance);
     f.plane = f.c == 0;
     f.aspheric = s.HasAsphericTerms();
     f.is_stop = s.is_stop;
@@ -93,7 +96,7 @@ namespace {
 
 // Per-surface constants of the kernel, and the tables of the media on both sides.
 struct Step {
-  float z, c, k1, semi2, a2, a[7];
+  float z, c, k1, semi2, obscuration2, reflectance, a2, a[7];
   // Per ray (contiguous, one value per ray of the batch): the media's indices on both sides
   // and the absorption coefficient of the medium just crossed (air: ones and zeros).
   const float *n_in, *n_out, *alpha_in;
@@ -136,7 +139,9 @@ void ApplyCoating(const float* __restrict table, RayBatch& b) {
   }
 }
 
-template <bool kPlane, bool kAspheric, bool kRefract, bool kTransmission, bool kCoated>
+// kRefract: an interface between two media; kMirror: a mirror (reflects); neither: the ray
+// only meets the surface (a stop or a plane between equal media), which may clip it.
+template <bool kPlane, bool kAspheric, bool kRefract, bool kMirror, bool kTransmission, bool kCoated>
 void StepAll(const Step& s, RayBatch& b) {
   const size_t n = b.Size();
   float* __restrict ox = b.ox.data();
@@ -199,11 +204,11 @@ void StepAll(const Step& s, RayBatch& b) {
     ok &= t >= -1e-6f;
     const float px = x0 + t * dx, py = y0 + t * dy, pz = z0 + t * dz;
     const float r2 = px * px + py * py;
-    ok &= r2 <= s.semi2;
+    ok &= (r2 <= s.semi2) & (r2 >= s.obscuration2);
     // Absorption in the medium just crossed: its optical depth, summed (one exp at the end).
     if constexpr (kTransmission) depth[j] += alpha_in[j] * t;
     ox[j] = px, oy[j] = py, oz[j] = pz + s.z;
-    if constexpr (kRefract) {
+    if constexpr (kRefract || kMirror) {
       // Normal from the sag's slope (unit, toward +z), turned to face the incoming ray.
       float r = std::sqrt(r2);
       float slope = s.c * r / std::sqrt(std::max(1 - s.k1 * s.c * s.c * r2, 1e-12f)) + 2 * s.a2 * r;
@@ -222,30 +227,43 @@ void StepAll(const Step& s, RayBatch& b) {
       float cos_i = -(nx * dx + ny * dy + nz * dz);
       float flip = cos_i < 0 ? -1.f : 1.f;
       nx *= flip, ny *= flip, nz *= flip, cos_i *= flip;
-      const float n1 = n_in[j], n2 = n_out[j];
-      float eta = n1 / n2, k2 = 1 - eta * eta * (1 - cos_i * cos_i);
-      ok &= k2 >= 0;
-      float cos_t = std::sqrt(std::max(k2, 0.f)), g = eta * cos_i - cos_t;
-      float ex = eta * dx + g * nx, ey = eta * dy + g * ny, ez = eta * dz + g * nz;
-      float dl = 1 / std::sqrt(ex * ex + ey * ey + ez * ez);
-      dxs[j] = ex * dl, dys[j] = ey * dl, dzs[j] = ez * dl;
-      if constexpr (kTransmission && kCoated) {
-        coat_cos[j] = cos_i;  // ApplyCoating looks the transmittance up
-      } else if constexpr (kTransmission) {
-        float rs = (n1 * cos_i - n2 * cos_t) / (n1 * cos_i + n2 * cos_t);
-        float rp = (n2 * cos_i - n1 * cos_t) / (n2 * cos_i + n1 * cos_t);
-        trans[j] *= 1 - 0.5f * (rs * rs + rp * rp);
+      if constexpr (kMirror) {
+        dxs[j] = dx + 2 * cos_i * nx, dys[j] = dy + 2 * cos_i * ny, dzs[j] = dz + 2 * cos_i * nz;
+        if constexpr (kTransmission) trans[j] *= s.reflectance;
+      } else {
+        const float n1 = n_in[j], n2 = n_out[j];
+        float eta = n1 / n2, k2 = 1 - eta * eta * (1 - cos_i * cos_i);
+        ok &= k2 >= 0;
+        float cos_t = std::sqrt(std::max(k2, 0.f)), g = eta * cos_i - cos_t;
+        float ex = eta * dx + g * nx, ey = eta * dy + g * ny, ez = eta * dz + g * nz;
+        float dl = 1 / std::sqrt(ex * ex + ey * ey + ez * ez);
+        dxs[j] = ex * dl, dys[j] = ey * dl, dzs[j] = ez * dl;
+        if constexpr (kTransmission && kCoated) {
+          coat_cos[j] = cos_i;  // ApplyCoating looks the transmittance up
+        } else if constexpr (kTransmission) {
+          float rs = (n1 * cos_i - n2 * cos_t) / (n1 * cos_i + n2 * cos_t);
+          float rp = (n2 * cos_i - n1 * cos_t) / (n2 * cos_i + n1 * cos_t);
+          trans[j] *= 1 - 0.5f * (rs * rs + rp * rp);
+        }
       }
     }
     alive[j] = ok;
   }
 }
 
-template <bool kPlane, bool kAspheric, bool kRefract>
+template <bool kPlane, bool kAspheric, bool kRefract, bool kMirror>
 void StepAll(const Step& s, bool transmission, RayBatch& b) {
-  if (!transmission) StepAll<kPlane, kAspheric, kRefract, false, false>(s, b);
-  else if (kRefract && s.coating) StepAll<kPlane, kAspheric, kRefract, true, true>(s, b);
-  else StepAll<kPlane, kAspheric, kRefract, true, false>(s, b);
+  if (!transmission) StepAll<kPlane, kAspheric, kRefract, kMirror, false, false>(s, b);
+  else if (kRefract && s.coating) StepAll<kPlane, kAspheric, kRefract, kMirror, true, true>(s, b);
+  else StepAll<kPlane, kAspheric, kRefract, kMirror, true, false>(s, b);
+}
+
+// The kernel for a surface's shape and what it does to the ray.
+template <bool kPlane, bool kAspheric>
+void StepShape(const Step& s, bool refract, bool mirror, bool transmission, RayBatch& b) {
+  if (mirror) StepAll<kPlane, kAspheric, false, true>(s, transmission, b);
+  else if (refract) StepAll<kPlane, kAspheric, true, false>(s, transmission, b);
+  else StepAll<kPlane, kAspheric, false, false>(s, transmission, b);
 }
 
 }  // namespace
@@ -288,22 +306,16 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
     // Air is medium 0 (index one, no absorption); the ray starts in air (no absorption before
     // the first surface).
     const bool absorb = k > 0;
-    Step st{sf.z, sf.c, sf.k1, sf.semi2, sf.a2, {}, rays.media_index.data() + (m_in + 1) * count,
+    Step st{sf.z, sf.c, sf.k1, sf.semi2, sf.obscuration2, sf.reflectance, sf.a2, {},
+            rays.media_index.data() + (m_in + 1) * count,
             rays.media_index.data() + (m_out + 1) * count,
             rays.media_alpha.data() + (absorb && absorbing ? m_in + 1 : 0) * count,
             sf.coating < 0 ? nullptr : coating_tables_[2 * sf.coating + (from_film ? 1 : 0)].data()};
     std::copy(sf.a, sf.a + 7, st.a);
-    const bool refract = m_in != m_out;  // the stop too, where it parts two media
-    if (sf.plane) {
-      if (refract) StepAll<true, false, true>(st, transmission, rays);
-      else StepAll<true, false, false>(st, transmission, rays);
-    } else if (sf.aspheric) {
-      if (refract) StepAll<false, true, true>(st, transmission, rays);
-      else StepAll<false, true, false>(st, transmission, rays);
-    } else {
-      if (refract) StepAll<false, false, true>(st, transmission, rays);
-      else StepAll<false, false, false>(st, transmission, rays);
-    }
+    const bool refract = m_in != m_out && !sf.mirror;  // the stop too, where it parts two media
+    if (sf.plane) StepShape<true, false>(st, refract, sf.mirror, transmission, rays);
+    else if (sf.aspheric) StepShape<false, true>(st, refract, sf.mirror, transmission, rays);
+    else StepShape<false, false>(st, refract, sf.mirror, transmission, rays);
     if (coated && refract && st.coating) ApplyCoating(st.coating, rays);
     if (sf.is_stop) {
       if (rays.record_stop) {

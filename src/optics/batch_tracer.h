@@ -62,7 +62,9 @@ class BatchLensTracer {
  private:
   struct Surface {
     float z, c, k1, semi2;        // vertex z, curvature, 1 + conic, semi-diameter squared
-    bool plane, aspheric, is_stop;
+    float obscuration2;           // the central obstruction's radius squared (0: none)
+    bool plane, aspheric, is_stop, mirror;
+    float reflectance;            // a mirror's
     float a2, a[7];
     int medium_after;            // glass index (-1: air); its tables are at medium_after + 1
     int coating;                 // -1: bare (Fresnel's equations inline); else coating_tables_[2 coating + toward object]

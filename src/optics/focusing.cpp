@@ -14,9 +14,10 @@ struct ObjectRay {
 };
 ObjectRay TraceFromObjectPoint(const LensPrescription& lens, double s, double lambda_nm) {
   const auto& surf = lens.surfaces;
+  const std::vector<double> index = SignedIndices(lens, lambda_nm);  // through mirrors too
   double y = s, nu = 1, y_stop = 0;  // slope 1 over the object distance s
   for (size_t i = 0; i < surf.size(); ++i) {
-    double n_before = i > 0 ? surf[i - 1].IndexAfter(lambda_nm) : 1.0, n_after = surf[i].IndexAfter(lambda_nm);
+    const double n_before = index[i], n_after = index[i + 1];
     if (surf[i].is_stop) y_stop = y;
     nu -= y * surf[i].ParaxialCurvature() * (n_after - n_before);
     if (i + 1 < surf.size()) y += surf[i].thickness * nu / n_after;

@@ -101,6 +101,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
   std::vector<size_t> explicitly_coated;  // surfaces with their own coating=
   int default_line = 0;
   std::vector<int> coating_lines;  // the lines of explicitly_coated
+  std::vector<int> surface_lines;  // per surface
   while (std::getline(lines, line)) {
     ++number;
     if (size_t h = line.find('#'); h != std::string::npos) line.resize(h);
@@ -136,8 +137,12 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       s.flat = true;
       stop_line = number;
       next = 1;
-    } else if (f[0] == "surface") {
-      if (f.size() < 5) throw MakeInputError(path, number, "a surface line is: surface RADIUS THICKNESS MEDIUM SEMI_DIAMETER [options]");
+    } else if (f[0] == "surface" || f[0] == "mirror") {
+      s.mirror = f[0] == "mirror";
+      if (s.mirror && f.size() < 4)
+        throw MakeInputError(path, number, "a mirror line is: mirror RADIUS THICKNESS SEMI_DIAMETER [options]");
+      if (!s.mirror && f.size() < 5)
+        throw MakeInputError(path, number, "a surface line is: surface RADIUS THICKNESS MEDIUM SEMI_DIAMETER [options]");
       if (f[1] == "inf") {
         s.flat = true;
       } else if (f[1].rfind("c=", 0) == 0) {
@@ -148,16 +153,23 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       }
       next = 2;
     } else {
-      throw MakeInputError(path, number, "unknown line '{}' (surface, stop, coating, or key: value)", f[0]);
+      throw MakeInputError(path, number, "unknown line '{}' (surface, mirror, stop, coating, or key: value)", f[0]);
     }
+    // Thicknesses are signed z steps: negative where light travels toward the object (after an
+    // odd number of mirrors), checked for the whole lens below.
     s.thickness = ParseFiniteNumber(f[next], path, number);
-    if (s.thickness < 0) throw MakeInputError(path, number, "thickness must not be negative");
-    s.medium = ParseMedium(f[next + 1], lens_glasses, path, number);
+    if (s.mirror) {
+      // Light goes back into the medium it came from; the line names none.
+      s.medium = lens.surfaces.empty() ? nullptr : lens.surfaces.back().medium;
+      --next;
+    } else {
+      s.medium = ParseMedium(f[next + 1], lens_glasses, path, number);
+    }
     s.semi_diameter = ParseFiniteNumber(f[next + 2], path, number);
     if (!(s.semi_diameter > 0)) throw MakeInputError(path, number, "semi-diameter must be positive");
     std::vector<std::string> keys;  // each option once
     for (size_t i = next + 3; i < f.size(); ++i) {
-      if (s.is_stop) throw MakeInputError(path, number, "the stop takes no options");
+      if (f[0] == "stop") throw MakeInputError(path, number, "the stop takes no options");
       size_t eq = f[i].find('=');
       if (eq == std::string::npos) throw MakeInputError(path, number, "option '{}' is not key=value", f[i]);
       std::string key = f[i].substr(0, eq), value = f[i].substr(eq + 1);
@@ -165,6 +177,22 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       keys.push_back(key);
       if (key == "k") {
         s.conic = ParseFiniteNumber(value, path, number);
+      } else if (key == "obscuration") {  // a central obstruction's radius
+        s.obscuration = ParseFiniteNumber(value, path, number);
+        if (!(s.obscuration > 0 && s.obscuration < s.semi_diameter))
+          throw MakeInputError(path, number, "obscuration {} must lie between 0 and the semi-diameter {}", s.obscuration,
+                               s.semi_diameter);
+      } else if (key == "reflectance" && s.mirror) {
+        s.mirror_reflectance = ParseFiniteNumber(value, path, number);
+        if (!(s.mirror_reflectance > 0 && s.mirror_reflectance <= 1))
+          throw MakeInputError(path, number, "a mirror's reflectance lies in (0, 1], got {}", s.mirror_reflectance);
+      } else if (key == "stop" && s.mirror) {  // the mirror's rim is the aperture stop
+        if (value != "yes") throw MakeInputError(path, number, "stop=yes makes a mirror the stop; got stop={}", Printable(value));
+        if (stop_line) throw MakeInputError(path, number, "a second stop (the first is on line {})", stop_line);
+        s.is_stop = true;
+        stop_line = number;
+      } else if (key == "coating" && s.mirror) {
+        throw MakeInputError(path, number, "a mirror takes no anti-reflection coating (its reflectance= sets what it reflects)");
       } else if (key == "coating") {
         s.coating = coatings.Find(value, path, number);
         explicitly_coated.push_back(lens.surfaces.size());
@@ -174,17 +202,20 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
         if (!order || *order % 2) throw MakeInputError(path, number, "aspheric terms are a4, a6, ..., a16");
         s.aspheric[(*order - 4) / 2] = ParseFiniteNumber(value, path, number);
       } else {
-        throw MakeInputError(path, number, "unknown option '{}' (k, a4..a16, coating)", key);
+        throw MakeInputError(path, number, "unknown option '{}' ({})", key,
+                             s.mirror ? "k, a4..a16, obscuration, reflectance, stop" : "k, a4..a16, coating, obscuration");
       }
     }
     CheckReachable(s, path, number);
     CheckSize(s, path, number);
     lens.surfaces.push_back(std::move(s));
+    surface_lines.push_back(number);
     last_line = number;
   }
   if (lens.surfaces.empty()) throw MakeInputError(path, 0, "no surfaces");
   if (!stop_line) throw MakeInputError(path, 0, "no stop line");
   if (lens.surfaces.back().medium) throw MakeInputError(path, last_line, "the last surface must leave the lens into air");
+  if (auto mismatch = FirstDirectionMismatch(lens)) throw MakeInputError(path, surface_lines[mismatch->first], "{}", mismatch->second);
   // A coating where the medium does not change coats nothing.
   for (size_t k = 0; k < explicitly_coated.size(); ++k) {
     const size_t i = explicitly_coated[k];

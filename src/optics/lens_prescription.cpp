@@ -18,6 +18,37 @@ int LensPrescription::StopIndex() const {
   return -1;
 }
 
+int LensPrescription::MirrorCount() const {
+  return int(std::count_if(surfaces.begin(), surfaces.end(), [](const LensSurface& s) { return s.mirror; }));
+}
+
+int LensPrescription::DirectionAfter(size_t i) const {
+  int direction = 1;
+  for (size_t k = 0; k <= i && k < surfaces.size(); ++k)
+    if (surfaces[k].mirror) direction = -direction;
+  return direction;
+}
+
+std::optional<std::pair<size_t, std::string>> FirstDirectionMismatch(const LensPrescription& lens) {
+  int mirrors = 0;
+  for (size_t i = 0; i < lens.surfaces.size(); ++i) {
+    const LensSurface& s = lens.surfaces[i];
+    mirrors += s.mirror;
+    const bool toward_film = mirrors % 2 == 0;
+    if (toward_film ? s.thickness < 0 : s.thickness > 0)
+      return {{i, fmt::format("thickness {} goes against the light: after {} mirror(s) it travels toward the {}, so the "
+                              "thickness to the next surface must be {} (a z step, as lens designers write it)",
+                              s.thickness, mirrors, toward_film ? "film" : "object",
+                              toward_film ? "positive" : "negative")}};
+  }
+  if (mirrors % 2)
+    return {{lens.surfaces.size() - 1,
+             fmt::format("the lens has {} mirrors, an odd number: its image would lie on the object's side; a camera "
+                         "needs an even number (a fold mirror needs a coordinate break, which is not supported)",
+                         mirrors)}};
+  return std::nullopt;
+}
+
 double LensPrescription::TotalTrack() const {
   double t = 0;
   for (size_t i = 0; i + 1 < surfaces.size(); ++i) t += surfaces[i].thickness;
@@ -91,6 +122,7 @@ LensPrescription LensPrescription::Scaled(double factor) const {
     s.radius *= factor;
     s.thickness *= factor;
     s.semi_diameter *= factor;
+    s.obscuration *= factor;
     s.a2 /= factor;
     double scale = factor * factor * factor;  // 2k - 1 = 3 for a4
     for (double& a : s.aspheric) {

@@ -16,7 +16,18 @@ struct LensSurface {
   bool flat = false;          // a plane surface (radius infinite)
   double thickness = 0;       // mm to the next surface (the last: to the film)
   double semi_diameter = 0;   // clear semi-diameter, mm
-  bool is_stop = false;       // the aperture stop: a plane iris (and a flat interface if the media differ)
+  // The aperture stop: a plane iris (and a flat interface if the media differ), or a mirror's
+  // own rim (a mirror lens has no iris: its stop is the primary mirror).
+  bool is_stop = false;
+  // A mirror: light is reflected here, with `mirror_reflectance` (0..1], and goes back into
+  // the medium it came from (`medium` is that one). Thicknesses follow the direction of
+  // travel, as lens designers write them: after an odd number of mirrors light travels toward
+  // the object and the thicknesses are negative (z steps, vertex to vertex).
+  bool mirror = false;
+  double mirror_reflectance = 1;
+  // A central obstruction: the surface blocks light that meets it within this radius (mm) of
+  // the axis (a mirror lens's secondary mirror and its holder); 0: none.
+  double obscuration = 0;
   double conic = 0;           // k: 0 sphere, -1 paraboloid
   std::array<double, 7> aspheric{};  // even aspheric coefficients a4, a6, ..., a16
   double a2 = 0;              // r^2 aspheric term (Zemax EVENASPH PARM 1); adds 2 a2 to the paraxial curvature
@@ -26,7 +37,7 @@ struct LensSurface {
   // Medium after this surface (towards the film); null means air.
   std::shared_ptr<const Glass> medium;
 
-  double Curvature() const { return (flat || is_stop || radius == 0) ? 0.0 : 1.0 / radius; }
+  double Curvature() const { return (flat || radius == 0) ? 0.0 : 1.0 / radius; }
   // Sets the radius from a curvature c (1/mm): a plane where c is 0 or so small (a subnormal
   // number) that 1/c overflows.
   void SetCurvature(double c);
@@ -52,7 +63,13 @@ struct LensPrescription {
   std::vector<std::shared_ptr<const Coating>> defined_coatings;
 
   int StopIndex() const;  // -1 if none
-  double TotalTrack() const;  // first vertex to the last (without the distance to the film)
+  // First vertex to the last along z (without the distance to the film): the sum of the
+  // thicknesses, negative ones (after a mirror) included.
+  double TotalTrack() const;
+  int MirrorCount() const;
+  // +1 where light leaves surface i toward the film (+z), -1 toward the object (after an odd
+  // number of mirrors up to and including i).
+  int DirectionAfter(size_t i) const;
   // The same lens `factor` times larger: radii, thicknesses, apertures, the metadata lengths
   // and the aspheric terms (a sag a r^2k scales to factor a r^2k at factor r, so a' = a /
   // factor^(2k - 1)).
@@ -66,6 +83,12 @@ struct LensPrescription {
 void CoatAirGlassSurfaces(LensPrescription& lens, const std::shared_ptr<const Coating>& coating, bool only_bare);
 
 void CheckReachable(const LensSurface& s, const std::string& path, int line);
+// The first surface whose thickness goes against the direction light travels after it (a
+// positive thickness after an odd number of mirrors, a negative one otherwise), or an odd
+// number of mirrors in all (the image would lie on the object's side, where the film cannot
+// be); the index of the surface to blame (the last one for the count) and why. Nothing where
+// the lens folds consistently (for the readers, which name the line).
+std::optional<std::pair<size_t, std::string>> FirstDirectionMismatch(const LensPrescription& lens);
 // The first surface whose coating cannot lie there (optics/coating.h: CoatingMismatch), and
 // why; nothing where every coating fits (for the readers, which name its line, and Recoat).
 std::optional<std::pair<size_t, std::string>> FirstCoatingMismatch(const LensPrescription& lens);

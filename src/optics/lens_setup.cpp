@@ -33,6 +33,16 @@ void SetStop(LensSystem& lens, const StopRequest& stop) {
     }
     lens.SetStopSemiDiameter(*semi);
   }
+  // A central obstruction (a mirror lens's secondary) hides the whole cone once the stop is
+  // narrowed to its shadow: no light would reach the film.
+  if (lens.StopSemiDiameter() < full && !(RealFNumber(lens) < INFINITY)) {
+    const std::optional<double> limit = ObstructionFNumber(LensSystem(rx));
+    throw InputError(fmt::format("{}: no light gets through {}{}", stop.diameter_mm > 0 ? fmt::format("a stop of {} mm", stop.diameter_mm) : fmt::format("f/{}", stop.fnumber), rx.name,
+                                 limit ? fmt::format(": its central obstruction hides the whole cone from f/{:.3g} on (a mirror "
+                                                     "lens's aperture is fixed; its filters or the exposure set the light)",
+                                                     *limit)
+                                       : ""));
+  }
 }
 
 // The plane in focus as a distance from the film. Given from the entrance pupil, it depends

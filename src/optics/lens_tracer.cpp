@@ -98,7 +98,7 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
   c.t = *t;
   c.p = ray.o + ray.d * *t;
   const double r = std::sqrt(c.p.x * c.p.x + c.p.y * c.p.y);
-  if (s.is_stop ? !lens.InsideStop(c.p.x, c.p.y) : r > s.semi_diameter) {
+  if ((s.is_stop ? !lens.InsideStop(c.p.x, c.p.y) : r > s.semi_diameter) || r < s.obscuration) {
     c.failure = TraceFailure::kClipped;
     return c;
   }
@@ -107,8 +107,9 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
   const double n_object_side = i > 0 ? lens.surface(i - 1).IndexAfter(lambda_nm) : 1.0;
   const double n_film_side = s.IndexAfter(lambda_nm);
   const double n1 = toward_film ? n_object_side : n_film_side, n2 = toward_film ? n_film_side : n_object_side;
-  c.interface = n1 != n2;
-  if (!c.interface) return c;
+  c.mirror = s.mirror;
+  c.interface = n1 != n2 && !s.mirror;
+  if (!c.interface && !c.mirror) return c;
   // The normal facing the incoming ray: for a plane or a conic from the gradient of its
   // implicit form c (x^2 + y^2) + (1 + k) c z^2 - 2 z = 0 at the point (no square root of
   // the sag's slope), for an asphere from the slope.
@@ -121,8 +122,12 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
     c.normal = g / Length(g);
   }
   if (Dot(c.normal, ray.d) > 0) c.normal = -c.normal;
-  c.eta = n1 / n2;
   c.cos_i = -Dot(c.normal, ray.d);
+  if (c.mirror) {
+    c.reflectance = s.mirror_reflectance;
+    return c;
+  }
+  c.eta = n1 / n2;
   c.reflectance = lens.SurfaceReflectance(i, lambda_nm, c.cos_i, toward_film, n_object_side, n_film_side);
   return c;
 }
@@ -173,6 +178,16 @@ TraceResult TraceVisits(const LensSystem& lens, const LensRay& in, double lambda
     // Absorption along the segment just travelled, inside the medium between the surfaces.
     if (previous >= 0) result.internal_transmittance *= SegmentTransmittance(lens, previous, i, lambda_nm, c.t);
     previous = i;
+    if (c.mirror) {  // always reflects; the path goes on to the next surface in order
+      if (v.reflect) {  // a ghost cannot pass through a mirror
+        result.failure = TraceFailure::kMissedSurface;
+        result.surface = i;
+        return result;
+      }
+      result.surface_transmittance *= c.reflectance;
+      ray = Reflected(c, ray.d);
+      continue;
+    }
     if (!c.interface) {
       if (v.reflect) {  // nothing to reflect from
         result.failure = TraceFailure::kMissedSurface;

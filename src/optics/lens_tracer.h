@@ -74,9 +74,12 @@ struct SurfaceCrossing {
   Vec3d p;                 // the point on the surface
   double t = 0;            // the distance travelled to it
   bool interface = false;  // whether the index changes there (else the ray goes straight on)
-  Vec3d normal;            // unit, facing the incoming ray (where an interface)
+  // A mirror: the ray is reflected (Reflected), with `reflectance` the mirror's, and goes on
+  // to the next surface in order (not an interface: no refraction, no ghost reflection).
+  bool mirror = false;
+  Vec3d normal;            // unit, facing the incoming ray (where an interface or a mirror)
   double cos_i = 1, eta = 1;  // eta: incoming index over outgoing
-  double reflectance = 0;     // unpolarised (LensSystem::SurfaceReflectance), 0 where no interface
+  double reflectance = 0;     // unpolarised (LensSystem::SurfaceReflectance), the mirror's, 0 where neither
 };
 SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, double lambda_nm, bool toward_film);
 // The ray leaving an interface crossing in direction d reflected, or refracted (nothing beyond

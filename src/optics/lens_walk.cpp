@@ -34,6 +34,12 @@ LensWalk WalkFromObject(const LensSystem& lens, const LensRay& in, double lambda
       weight *= options.stop_transmittance(c.p.x / stop_radius, c.p.y / stop_radius);
       if (!(weight > 0)) return walk;
     }
+    if (c.mirror) {  // reflects all it does not absorb; the walk goes on in the same order
+      if (!options.lossless) weight *= c.reflectance;
+      ray = Reflected(c, ray.d);
+      i += toward_film ? 1 : -1;
+      continue;
+    }
     bool reflect = false;
     std::optional<LensRay> refracted;
     if (c.interface) {

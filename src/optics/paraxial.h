@@ -1,5 +1,7 @@
 // First-order (paraxial) optics of a prescription, by y-nu ray tracing at one wavelength.
 #pragma once
+#include <vector>
+
 #include "optics/dispersion.h"
 #include "optics/lens_prescription.h"
 
@@ -18,6 +20,12 @@ struct ParaxialData {
   // nodal points coincide with them.
   double front_principal_plane = 0, back_principal_plane = 0;
 };
+
+// The index after each surface at lambda_nm, signed with the direction of travel (negative
+// after an odd number of mirrors: lens designers' convention, with which the y-nu equations
+// hold unchanged through mirrors, n' = -n there, and thicknesses are negative where the
+// index is). Entry i + 1 is the medium after surface i; entry 0 the object space (air).
+std::vector<double> SignedIndices(const LensPrescription& lens, double lambda_nm);
 
 // Object at infinity. Surfaces are refracted with their indices at lambda_nm.
 // stop_semi_diameter < 0: the prescription's stop.

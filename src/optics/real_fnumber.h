@@ -10,8 +10,15 @@
 
 namespace objektiv {
 
-// With the tracer's stop as it is (film at the paraxial infinity focus).
+// With the tracer's stop as it is (film at the paraxial infinity focus). Where a central
+// obstruction hides the middle of the cone (a mirror lens), the cone's outer edge: the
+// f-number the lens is marked with (its exposure is less, by the hidden share).
 double RealFNumber(const LensSystem& lens, double lambda_nm = kLambdad);
+
+// Where a central obstruction hides the middle of the on-axis cone: the f-number of the hidden
+// cone's edge. Stopping down to it leaves no light on the axis (a mirror lens's aperture is
+// fixed). Nothing where the axis is clear, or where no light gets through at all.
+std::optional<double> ObstructionFNumber(const LensSystem& lens, double lambda_nm = kLambdad);
 
 // The stop semi-diameter that gives f-number `fnumber`; nothing if the cone cannot reach the
 // stop (a rim behind it cuts it first) or needs a stop larger than the lens's.

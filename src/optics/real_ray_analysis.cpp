@@ -14,7 +14,7 @@ constexpr double kStartZ = -50;  // rays start this far in front of the first ve
 LensSystem Unclipped(const LensSystem& lens, int last_surface) {
   LensPrescription open = lens.prescription();
   open.surfaces.resize(size_t(last_surface) + 1);
-  for (LensSurface& s : open.surfaces) s.semi_diameter = 1e30;
+  for (LensSurface& s : open.surfaces) s.semi_diameter = 1e30, s.obscuration = 0;
   LensSystem t(open);
   t.SetStopSemiDiameter(1e30);
   return t;
@@ -293,8 +293,23 @@ std::optional<double> LongitudinalAberration(const LensSystem& lens, double heig
 }
 
 AxialTransmittance AxialTransmittanceOf(const LensSystem& lens, double lambda_nm) {
-  TraceResult r = TraceFromObject(lens, {{0, 0, -1}, {0, 0, 1}}, lambda_nm);
-  if (!r.ray) return {};
+  auto trace = [&](double y) { return TraceFromObject(lens, {{0, y, -1}, {0, 0, 1}}, lambda_nm); };
+  TraceResult r = trace(0);
+  if (!r.ray) {
+    // Blocked on the axis: scan outward for the first zone that lets light through.
+    const double rim = lens.prescription().surfaces.front().semi_diameter;
+    constexpr int kSteps = 256;
+    int first = -1, last = -1;
+    for (int k = 1; k < kSteps; ++k) {
+      const bool passes = trace(rim * k / kSteps).ray.has_value();
+      if (passes && first < 0) first = k;
+      if (first >= 0 && !passes) break;
+      if (passes) last = k;
+    }
+    if (first < 0) return {};
+    r = trace(rim * 0.5 * (first + last) / kSteps);
+    if (!r.ray) return {};
+  }
   return {r.surface_transmittance, r.internal_transmittance};
 }
 

@@ -37,7 +37,9 @@ Spot SpotDiagram(const LensSystem& lens, double field_deg, double lambda_nm, int
 std::optional<double> RelativeIllumination(const LensSystem& lens, double field_deg, double lambda_nm);
 
 // How much of the light entering along the axis reaches the film: the surfaces' share (their
-// reflection losses, bare or coated) and the glasses' (absorption), at one wavelength.
+// reflection losses, bare or coated, and mirrors' reflectances) and the glasses' (absorption),
+// at one wavelength. Where a central obstruction blocks the axis (a mirror lens), the ray
+// parallel to it through the middle of the first clear zone.
 struct AxialTransmittance {
   double surfaces = 0, glass = 0;
   double Total() const { return surfaces * glass; }

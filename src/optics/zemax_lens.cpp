@@ -25,6 +25,7 @@ struct ZSurface {
   std::string type = "STANDARD";
   double curv = 0, disz = 0, diam = 0, coni = 0;
   double clear_aperture = 0;  // CLAP: the radius that clips, where the file sets one
+  double obscuration = 0;     // OBSC: the radius of a central obstruction
   bool stop = false, infinite_thickness = false;
   std::string glass;
   double model_nd = 0, model_vd = 0;
@@ -189,6 +190,14 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
                              rmax);
       if (!(rmax > 0)) throw MakeInputError(path, number, "CLAP: the aperture's radius must be above 0, got {}", rmax);
       cur->clear_aperture = rmax;
+    } else if (key == "OBSC") {  // OBSC rmin rmax: a circular obscuration (a mirror lens's secondary)
+      need(2);
+      double rmin = ParseFiniteNumber(f[0], path, number), rmax = ParseFiniteNumber(f[1], path, number);
+      if (rmin != 0)
+        throw MakeInputError(path, number, "OBSC {} {}: an annular obscuration (inner radius above 0) is not supported", rmin,
+                             rmax);
+      if (!(rmax > 0)) throw MakeInputError(path, number, "OBSC: the obscuration's radius must be above 0, got {}", rmax);
+      cur->obscuration = rmax;
     } else if (key == "STOP") {
       for (const ZSurface& z : surfs)
         if (z.stop)
@@ -220,6 +229,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
 
   const LensGlasses lens_glasses(path, glasses, catalogs);
   std::vector<int> coat_lines;  // per lens surface: its COAT line (0: none, or an iris)
+  std::vector<int> surface_lines;  // per lens surface: its SURF line
   LensPrescription lens;
   lens.name = name;
   lens.source = path;
@@ -229,7 +239,8 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
     const ZSurface& z = surfs[i];
     if (z.infinite_thickness) throw MakeInputError(path, z.line, "an infinite thickness inside the lens");
     const bool in_air = (z.glass.empty() || z.glass == "AIR") && (lens.surfaces.empty() || !lens.surfaces.back().medium);
-    if (z.diam == 0 && z.clear_aperture == 0 && in_air && z.curv == 0 && z.type == "STANDARD" && !z.stop) {
+    if (z.diam == 0 && z.clear_aperture == 0 && z.obscuration == 0 && in_air && z.curv == 0 && z.type == "STANDARD" &&
+        !z.stop) {
       // A dummy plane in air without a semi-diameter (Zemax writes 0 where it computed none):
       // it neither refracts nor clips; its thickness joins the gap before it.
       if (!(std::abs(z.disz * unit) <= kMaxLensLength))
@@ -248,11 +259,21 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
       s.a2 = z.parm[1] / unit;
       for (int k = 2; k <= 8; ++k) s.aspheric[k - 2] = z.parm[k] / std::pow(unit, 2 * k - 1);
     }
-    if (!z.glass.empty() && z.glass != "AIR") {
-      if (z.glass == "MIRROR") throw MakeInputError(path, z.line, "mirrors are not supported by the sequential refracting tracer");
+    s.obscuration = z.obscuration * unit;
+    if (s.obscuration >= s.semi_diameter)
+      throw MakeInputError(path, z.line, "the obscuration's radius {} covers the whole surface (semi-diameter {})",
+                           s.obscuration, s.semi_diameter);
+    if (z.glass == "MIRROR") {
+      // Light goes back into the medium it came from (a back-surface mirror: into the glass).
+      s.mirror = true;
+      s.medium = lens.surfaces.empty() ? nullptr : lens.surfaces.back().medium;
+    } else if (!z.glass.empty() && z.glass != "AIR") {
       s.medium = SurfaceGlass(z, lens_glasses, path);
     }
-    if (!z.coat.empty()) {
+    if (!z.coat.empty() && s.mirror) {
+      spdlog::warn("{}:{}: coating {} on a mirror is not modelled: the mirror reflects all the light it gets", path,
+                   z.coat_line, Printable(z.coat));
+    } else if (!z.coat.empty()) {
       // Zemax's MGF2 is a quarter wave of MgF2, as ours; its other COATING.DAT stacks are not known here.
       std::optional<std::shared_ptr<const Coating>> c;
       try {
@@ -270,8 +291,11 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
     CheckSize(s, path, z.line);
     if (z.stop) {
       have_stop = true;
-      if (s.flat && !s.HasAsphericTerms()) {
-        s.is_stop = true;  // a plane: the stop itself (in air, in glass, or between two media)
+      if ((s.flat && !s.HasAsphericTerms()) || s.mirror) {
+        // A plane: the stop itself (in air, in glass, or between two media). A mirror: its rim
+        // (a mirror lens has no iris; an iris plane at its vertex would lie behind where the
+        // light turns).
+        s.is_stop = true;
       } else {
         // A curved (or aspheric) stop surface: the iris in a plane at its vertex.
         LensSurface iris;
@@ -281,15 +305,18 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
         iris.medium = lens.surfaces.empty() ? nullptr : lens.surfaces.back().medium;
         lens.surfaces.push_back(iris);
         coat_lines.push_back(0);
+        surface_lines.push_back(z.line);
       }
     }
     lens.surfaces.push_back(std::move(s));
     coat_lines.push_back(z.coat_line);
+    surface_lines.push_back(z.line);
   }
   if (!have_stop) throw MakeInputError(path, 0, "no STOP surface");
   if (auto mismatch = FirstCoatingMismatch(lens)) throw MakeInputError(path, coat_lines[mismatch->first], "{}", mismatch->second);
   lens_glasses.WarnUnused();
   if (lens.surfaces.back().medium) throw MakeInputError(path, surfs[surfs.size() - 2].line, "the last surface must leave the lens into air");
+  if (auto mismatch = FirstDirectionMismatch(lens)) throw MakeInputError(path, surface_lines[mismatch->first], "{}", mismatch->second);
   return lens;
 }
 
