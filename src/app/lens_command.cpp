@@ -187,7 +187,7 @@ int RunInfo(const LensArgs& a) {
   std::printf("  real back focus (smallest on-axis spot): %.4f mm\n", real_bfl);
   std::printf("  field of view on %gx%g mm (real chief rays): %.2f x %.2f deg, %.2f deg diagonal\n", sw, sh,
               fov.horizontal, fov.vertical, fov.diagonal);
-  std::printf("  on-axis transmittance at %.2f nm: %.1f%% (surface reflections %.1f%%, glass absorption %.1f%%)\n",
+  std::printf("  on-axis transmittance at %.2f nm: %.1f%% (surfaces: reflections and mirrors %.1f%%, glass absorption %.1f%%)\n",
               a.wavelength, 100 * transmittance.Total(), 100 * transmittance.surfaces, 100 * transmittance.glass);
   if (coatings.empty()) std::printf("  coatings: none (bare glass)\n");
   for (const auto& [c, rows] : coatings) {

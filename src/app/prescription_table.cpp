@@ -30,7 +30,8 @@ std::string PrescriptionTable(const LensPrescription& lens) {
     }
     std::string extra;
     if (s.mirror) extra += s.is_stop ? " mirror (the stop)" : " mirror";
-    if (s.mirror && s.mirror_reflectance != 1) extra += fmt::format(" reflectance={:g}", s.mirror_reflectance);
+    if (s.mirror && s.mirror_metal) extra += " reflectance=" + s.mirror_metal->name();
+    if (s.mirror && !s.mirror_metal && s.mirror_reflectance != 1) extra += fmt::format(" reflectance={:g}", s.mirror_reflectance);
     if (s.obscuration > 0) extra += fmt::format(" obscuration={:g}", s.obscuration);
     if (s.conic != 0) extra += fmt::format(" k={:g}", s.conic);
     if (s.HasAsphericTerms()) extra += " aspheric";
@@ -49,7 +50,8 @@ nlohmann::ordered_json PrescriptionJson(const LensPrescription& lens) {
                                                                           : nlohmann::ordered_json(s.radius);
     if (s.mirror) {
       r["mirror"] = true;
-      r["mirror_reflectance"] = s.mirror_reflectance;
+      if (s.mirror_metal) r["mirror_metal"] = s.mirror_metal->name();
+      else r["mirror_reflectance"] = s.mirror_reflectance;
     }
     if (s.obscuration > 0) r["obscuration_mm"] = s.obscuration;
     r["thickness_mm"] = s.thickness;

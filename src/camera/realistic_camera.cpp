@@ -19,12 +19,13 @@ bool IsDispersive(const LensPrescription& lens) {
 }
 
 // Whether a camera ray's transmittance depends on its wavelength without the path doing so:
-// a coated surface's reflectance changes with the wavelength, and so does the absorption of a
-// glass with transmittance data (a colour filter of constant index), so one wavelength's
-// transmittance cannot stand for the others'.
+// a coated surface's reflectance changes with the wavelength, and so does a metal mirror's
+// and the absorption of a glass with transmittance data (a colour filter of constant index),
+// so one wavelength's transmittance cannot stand for the others'.
 bool TransmittanceVariesWithWavelength(const LensSystem& lens) {
   for (int i = 0; i < lens.SurfaceCount(); ++i)
-    if (lens.Coated(i) || (lens.surface(i).medium && lens.surface(i).medium->Absorbs())) return true;
+    if (lens.Coated(i) || lens.surface(i).mirror_metal || (lens.surface(i).medium && lens.surface(i).medium->Absorbs()))
+      return true;
   return false;
 }
 

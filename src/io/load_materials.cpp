@@ -8,7 +8,7 @@
 #include "base/log.h"
 #include "io/loader_context.h"
 #include "optics/glass_catalog.h"
-#include "scene/conductor_data.h"
+#include "base/conductor_data.h"
 #include "scene/blend_material.h"
 #include "scene/normal_mapping.h"
 

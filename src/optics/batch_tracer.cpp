@@ -21,12 +21,16 @@ constexpr int kTableSize = 471;  // 1 nm steps
 constexpr int kCoatRows = 96, kCoatColumns = 129;
 constexpr float kWavenumberMin = 1 / kTableMax, kWavenumberMax = 1 / kTableMin;
 
+// Surface i's reflectance (a coating's, or a metal mirror's) over the table's grid.
 std::vector<float> TabulateReflectance(const LensSystem& lens, int i, bool toward_film) {
   std::vector<float> table(kCoatRows * kCoatColumns);
   for (int r = 0; r < kCoatRows; ++r) {
     const double lambda = 1 / (kWavenumberMin + (double(kWavenumberMax) - kWavenumberMin) * r / (kCoatRows - 1));
-    for (int c = 0; c < kCoatColumns; ++c)
-      table[r * kCoatColumns + c] = float(lens.SurfaceReflectance(i, lambda, double(c) / (kCoatColumns - 1), toward_film));
+    for (int c = 0; c < kCoatColumns; ++c) {
+      const double cos_i = double(c) / (kCoatColumns - 1);
+      table[r * kCoatColumns + c] = float(lens.surface(i).mirror ? lens.MirrorReflectance(i, lambda, cos_i)
+                                                                 : lens.SurfaceReflectance(i, lambda, cos_i, toward_film));
+    }
   }
   return table;
 }
@@ -55,7 +59,7 @@ BatchLensTracer::BatchLensTracer(const LensSystem& lens_system)
     for (int k = 0; k < 7; ++k) f.a[k] = float(s.aspheric[k]);
     f.medium_after = -1;
     f.coating = -1;
-    if (lens_system.Coated(int(i))) {
+    if (lens_system.Coated(int(i)) || s.mirror_metal) {
       f.coating = int(coating_tables_.size() / 2);
       coating_tables_.push_back(TabulateReflectance(lens_system, int(i), true));
       coating_tables_.push_back(TabulateReflectance(lens_system, int(i), false));
@@ -117,10 +121,11 @@ void CoatingRows(RayBatch& b) {
   }
 }
 
-// The coated surface's transmittance, 1 - R, for every ray at the cos(incidence) the kernel
-// left in coat_cos: bilinear in the surface's table (a separate loop: the kernel's stays
-// vectorised without the table's gathers).
-void ApplyCoating(const float* __restrict table, RayBatch& b) {
+// The coated surface's transmittance, 1 - R (a metal mirror's reflectance R), for every ray at
+// the cos(incidence) the kernel left in coat_cos: bilinear in the surface's table (a separate
+// loop: the kernel's stays vectorised without the table's gathers).
+void ApplyCoating(const float* __restrict table, RayBatch& b, bool mirror) {
+  const float sign = mirror ? -1.f : 1.f, offset = mirror ? 0.f : 1.f;
   const size_t n = b.Size();
   const int32_t* __restrict rows = b.coat_row.data();
   const float* __restrict weights = b.coat_weight.data();
@@ -135,7 +140,7 @@ void ApplyCoating(const float* __restrict table, RayBatch& b) {
     const float* row0 = table + rows[j] + c;
     const float* row1 = row0 + kCoatColumns;
     const float lo = row0[0] + fy * (row0[1] - row0[0]), hi = row1[0] + fy * (row1[1] - row1[0]);
-    trans[j] *= 1 - (lo + weights[j] * (hi - lo));
+    trans[j] *= offset - sign * (lo + weights[j] * (hi - lo));
   }
 }
 
@@ -229,7 +234,8 @@ void StepAll(const Step& s, RayBatch& b) {
       nx *= flip, ny *= flip, nz *= flip, cos_i *= flip;
       if constexpr (kMirror) {
         dxs[j] = dx + 2 * cos_i * nx, dys[j] = dy + 2 * cos_i * ny, dzs[j] = dz + 2 * cos_i * nz;
-        if constexpr (kTransmission) trans[j] *= s.reflectance;
+        if constexpr (kTransmission && kCoated) coat_cos[j] = cos_i;  // a metal: ApplyCoating
+        else if constexpr (kTransmission) trans[j] *= s.reflectance;
       } else {
         const float n1 = n_in[j], n2 = n_out[j];
         float eta = n1 / n2, k2 = 1 - eta * eta * (1 - cos_i * cos_i);
@@ -254,7 +260,7 @@ void StepAll(const Step& s, RayBatch& b) {
 template <bool kPlane, bool kAspheric, bool kRefract, bool kMirror>
 void StepAll(const Step& s, bool transmission, RayBatch& b) {
   if (!transmission) StepAll<kPlane, kAspheric, kRefract, kMirror, false, false>(s, b);
-  else if (kRefract && s.coating) StepAll<kPlane, kAspheric, kRefract, kMirror, true, true>(s, b);
+  else if ((kRefract || kMirror) && s.coating) StepAll<kPlane, kAspheric, kRefract, kMirror, true, true>(s, b);
   else StepAll<kPlane, kAspheric, kRefract, kMirror, true, false>(s, b);
 }
 
@@ -316,7 +322,7 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
     if (sf.plane) StepShape<true, false>(st, refract, sf.mirror, transmission, rays);
     else if (sf.aspheric) StepShape<false, true>(st, refract, sf.mirror, transmission, rays);
     else StepShape<false, false>(st, refract, sf.mirror, transmission, rays);
-    if (coated && refract && st.coating) ApplyCoating(st.coating, rays);
+    if (coated && (refract || sf.mirror) && st.coating) ApplyCoating(st.coating, rays, sf.mirror);
     if (sf.is_stop) {
       if (rays.record_stop) {
         rays.stop_x.assign(rays.ox.begin(), rays.ox.end());

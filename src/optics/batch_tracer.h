@@ -67,7 +67,7 @@ class BatchLensTracer {
     float reflectance;            // a mirror's
     float a2, a[7];
     int medium_after;            // glass index (-1: air); its tables are at medium_after + 1
-    int coating;                 // -1: bare (Fresnel's equations inline); else coating_tables_[2 coating + toward object]
+    int coating;                 // -1: bare (Fresnel's equations inline) or a mirror of constant reflectance; else coating_tables_[2 coating + toward object] (a metal mirror's reflectance: both the same)
   };
   void Trace(RayBatch& rays, bool from_film, bool transmission) const;
 

@@ -182,10 +182,16 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
         if (!(s.obscuration > 0 && s.obscuration < s.semi_diameter))
           throw MakeInputError(path, number, "obscuration {} must lie between 0 and the semi-diameter {}", s.obscuration,
                                s.semi_diameter);
-      } else if (key == "reflectance" && s.mirror) {
-        s.mirror_reflectance = ParseFiniteNumber(value, path, number);
-        if (!(s.mirror_reflectance > 0 && s.mirror_reflectance <= 1))
-          throw MakeInputError(path, number, "a mirror's reflectance lies in (0, 1], got {}", s.mirror_reflectance);
+      } else if (key == "reflectance" && s.mirror) {  // a metal by name, or a constant share
+        if (std::optional<MirrorMetal> metal = MirrorMetal::Named(value)) {
+          s.mirror_metal = std::make_shared<const MirrorMetal>(std::move(*metal));
+        } else {
+          char* end = nullptr;
+          s.mirror_reflectance = std::strtod(value.c_str(), &end);
+          if (end != value.c_str() + value.size() || !(s.mirror_reflectance > 0 && s.mirror_reflectance <= 1))
+            throw MakeInputError(path, number, "reflectance={}: a mirror reflects a metal's share ({}) or a number in (0, 1]",
+                                 Printable(value), MirrorMetalList());
+        }
       } else if (key == "stop" && s.mirror) {  // the mirror's rim is the aperture stop
         if (value != "yes") throw MakeInputError(path, number, "stop=yes makes a mirror the stop; got stop={}", Printable(value));
         if (stop_line) throw MakeInputError(path, number, "a second stop (the first is on line {})", stop_line);

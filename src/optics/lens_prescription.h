@@ -8,6 +8,7 @@
 
 #include "optics/coating.h"
 #include "optics/glass.h"
+#include "optics/mirror_metal.h"
 
 namespace objektiv {
 
@@ -19,12 +20,14 @@ struct LensSurface {
   // The aperture stop: a plane iris (and a flat interface if the media differ), or a mirror's
   // own rim (a mirror lens has no iris: its stop is the primary mirror).
   bool is_stop = false;
-  // A mirror: light is reflected here, with `mirror_reflectance` (0..1], and goes back into
-  // the medium it came from (`medium` is that one). Thicknesses follow the direction of
+  // A mirror: light is reflected here and goes back into the medium it came from (`medium` is
+  // that one): by a metal layer, seen from that medium (optics/mirror_metal.h), or where
+  // `mirror_metal` is null, with `mirror_reflectance` (0..1] at every wavelength and angle. Thicknesses follow the direction of
   // travel, as lens designers write them: after an odd number of mirrors light travels toward
   // the object and the thicknesses are negative (z steps, vertex to vertex).
   bool mirror = false;
   double mirror_reflectance = 1;
+  std::shared_ptr<const MirrorMetal> mirror_metal;
   // A central obstruction: the surface blocks light that meets it within this radius (mm) of
   // the axis (a mirror lens's secondary mirror and its holder); 0: none.
   double obscuration = 0;

@@ -55,6 +55,11 @@ double LensSystem::SurfaceReflectance(int i, double lambda_nm, double cos_i, boo
   return toward_film ? FresnelReflectance(n_object, n_film, cos_i) : FresnelReflectance(n_film, n_object, cos_i);
 }
 
+double LensSystem::MirrorReflectance(int i, double lambda_nm, double cos_i) const {
+  const LensSurface& s = surface(i);
+  return s.mirror_metal ? s.mirror_metal->Reflectance(lambda_nm, cos_i, s.IndexAfter(lambda_nm)) : s.mirror_reflectance;
+}
+
 bool LensSystem::InsideStop(double x, double y) const {
   if (x * x + y * y > stop_semi_ * stop_semi_) return false;
   return stop_shape_.IsRound() || stop_shape_.Contains(x / stop_semi_, y / stop_semi_);

@@ -124,7 +124,7 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
   if (Dot(c.normal, ray.d) > 0) c.normal = -c.normal;
   c.cos_i = -Dot(c.normal, ray.d);
   if (c.mirror) {
-    c.reflectance = s.mirror_reflectance;
+    c.reflectance = lens.MirrorReflectance(i, lambda_nm, c.cos_i);
     return c;
   }
   c.eta = n1 / n2;

@@ -1,6 +1,7 @@
 #include "optics/zemax_lens.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -271,8 +272,18 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
       s.medium = SurfaceGlass(z, lens_glasses, path);
     }
     if (!z.coat.empty() && s.mirror) {
-      spdlog::warn("{}:{}: coating {} on a mirror is not modelled: the mirror reflects all the light it gets", path,
-                   z.coat_line, Printable(z.coat));
+      // A metal layer by Zemax's names (COATING.DAT's ALUM ...) or ours.
+      std::string metal = z.coat;
+      for (char& ch : metal) ch = char(std::toupper(static_cast<unsigned char>(ch)));
+      if (metal.rfind("ALUM", 0) == 0 || metal == "AL") metal = "Al";
+      else if (metal == "SILVER" || metal == "AG") metal = "Ag";
+      else if (metal == "GOLD" || metal == "AU") metal = "Au";
+      else if (metal == "COPPER" || metal == "CU") metal = "Cu";
+      if (std::optional<MirrorMetal> m = MirrorMetal::Named(metal))
+        s.mirror_metal = std::make_shared<const MirrorMetal>(std::move(*m));
+      else
+        spdlog::warn("{}:{}: coating {} on a mirror is not known (metals: {}): the mirror reflects all the light it gets",
+                     path, z.coat_line, Printable(z.coat), MirrorMetalList());
     } else if (!z.coat.empty()) {
       // Zemax's MGF2 is a quarter wave of MgF2, as ours; its other COATING.DAT stacks are not known here.
       std::optional<std::shared_ptr<const Coating>> c;

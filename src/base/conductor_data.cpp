@@ -2,7 +2,7 @@
 //   Au, Ag, Cu: P. B. Johnson and R. W. Christy, Phys. Rev. B 6, 4370 (1972);
 //   Al: K. M. McPeak et al., ACS Photonics 2, 326 (2015), every 20 nm.
 // Wavelengths in nm; the spectra are linear between rows and constant beyond the ends.
-#include "scene/conductor_data.h"
+#include "base/conductor_data.h"
 
 #include <vector>
 
