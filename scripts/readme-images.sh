@@ -10,7 +10,8 @@
 # (docs/images/media-*.png), `readme-images.sh sampling` adaptive sampling's picture and
 # sample counts (docs/images/sampling-*.png), `readme-images.sh filter` the colour filter's
 # pair (docs/images/filter-yellow.png), `readme-images.sh mirror` the mirror lens's bokeh
-# (docs/images/lens-mirror-bokeh.png).
+# (docs/images/lens-mirror-bokeh.png), `readme-images.sh underwater` the flat port's pair
+# (docs/images/lens-underwater.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/objektiv
@@ -103,8 +104,16 @@ mirror() {
   oiiotool "$tmp/mirror.png" "$tmp/mirror-tele.png" --mosaic:pad=6 2x1 -o "$out/lens-mirror-bokeh.png"
 }
 
+# The Cornell box through the Tessar in air and behind a flat port under water.
+underwater() {
+  render scenes/cornell-box/cornell-box-underwater.xml -D spp=256 -D res=400 -D lens=tessar.brendel.100mm \
+    -D exposure=8.2 -o "$tmp/uw-air.exr"
+  render scenes/cornell-box/cornell-box-underwater.xml -D spp=256 -D res=400 -o "$tmp/uw-port.exr"
+  oiiotool "$tmp/uw-air.png" "$tmp/uw-port.png" --mosaic:pad=6 2x1 -o "$out/lens-underwater.png"
+}
+
 case "${1:-}" in
-  flare | caustics | bump | stereo | classic | media | sampling | filter | mirror)
+  flare | caustics | bump | stereo | classic | media | sampling | filter | mirror | underwater)
     "$1"
     echo "wrote $out/$1-*.png"
     exit 0
@@ -116,6 +125,7 @@ render scenes/bokeh/bokeh-lens.xml -D spp=1024 -D fnumber=2.03 -o "$tmp/bokeh-op
 cp "$tmp/bokeh-f2.8.png" "$out/lens-bokeh.png"
 cp "$tmp/bokeh-open.png" "$out/lens-bokeh-wide-open.png"
 mirror
+underwater
 
 render scenes/lens/distortion-chart.xml -D spp=64 -o "$tmp/dist-wide.exr"
 render scenes/lens/distortion-chart.xml -D spp=64 -D lens=telephoto.250mm -D distance=11.4 -o "$tmp/dist-tele.exr"

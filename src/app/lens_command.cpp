@@ -20,6 +20,7 @@
 #include "optics/lens_file.h"
 #include "optics/lens_setup.h"
 #include "optics/paraxial.h"
+#include "optics/real_fnumber.h"
 #include "optics/real_ray_analysis.h"
 
 namespace objektiv {
@@ -79,6 +80,13 @@ LensSystem LoadImagingLens(const std::string& name, double lambda_nm, const std:
 // a lens shipped in another format too is listed again with its extension. The paraxial
 // f-number (EFL / entrance pupil) and the real one (radiometric, what a scene's `fnumber`
 // is compared with) both, since they differ for lenses with pupil aberration.
+// How far the vertices of a folded (mirror) lens spread along the axis.
+double VertexSpan(const LensSystem& lens) {
+  double lo = 0, hi = 0;
+  for (int i = 0; i < lens.SurfaceCount(); ++i) lo = std::min(lo, lens.VertexZ(i)), hi = std::max(hi, lens.VertexZ(i));
+  return hi - lo;
+}
+
 int RunList() {
   std::printf("%-28s %10s %8s %8s  %s\n", "name", "EFL (mm)", "f/ parax", "f/ real", "source");
   const std::filesystem::path dir = std::filesystem::path(DataDirectory()) / "lenses";
@@ -127,6 +135,8 @@ int RunInfo(const LensArgs& a) {
                               {"back_principal_plane_mm", d.back_principal_plane},
                               {"stop_diameter_mm", stop_diameter},
                               {"total_track_mm", lens.TotalTrack()},
+                              {"object_medium", lens.object_medium ? MediumLabel(lens.object_medium) : "air"},
+                              {"object_index", d.object_index},
                               {"surfaces", lens.surfaces.size()},
                               {"prescription", PrescriptionJson(lens)},
                               {"real_bfl_mm", real_bfl},
@@ -173,8 +183,13 @@ int RunInfo(const LensArgs& a) {
   }
   std::printf("%s (%s)\n", lens.name.c_str(), lens.source.c_str());
   if (!design.empty()) std::printf("  design (as the file states it):%s\n", design.c_str());
-  std::printf("  %zu surfaces, stop at row %d (diameter %.3f mm), total track %.3f mm\n", lens.surfaces.size(),
-              stop + 1, stop_diameter, lens.TotalTrack());
+  std::printf("  %zu surfaces, stop at row %d (diameter %.3f mm), total track %.3f mm%s\n", lens.surfaces.size(),
+              stop + 1, stop_diameter, lens.TotalTrack(),
+              lens.MirrorCount() > 0 ? fmt::format(" (first to last vertex; folded by {} mirrors, the vertices span {:.3f} mm)",
+                                                   lens.MirrorCount(), VertexSpan(system)).c_str() : "");
+  if (lens.object_medium)
+    std::printf("  object space: %s (n %.5f): field angles are the scene's, in that medium\n",
+                MediumLabel(lens.object_medium).c_str(), d.object_index);
   std::printf("%s", PrescriptionTable(lens).c_str());
   std::printf("  paraxial, object at infinity, %.2f nm:\n", a.wavelength);
   std::printf("  EFL %.4f mm   BFL %.4f mm   FFL %.4f mm   f/%.3f\n", d.efl, d.bfl, d.ffl, d.fnumber);
@@ -187,8 +202,11 @@ int RunInfo(const LensArgs& a) {
   std::printf("  real back focus (smallest on-axis spot): %.4f mm\n", real_bfl);
   std::printf("  field of view on %gx%g mm (real chief rays): %.2f x %.2f deg, %.2f deg diagonal\n", sw, sh,
               fov.horizontal, fov.vertical, fov.diagonal);
-  std::printf("  on-axis transmittance at %.2f nm: %.1f%% (surfaces: reflections and mirrors %.1f%%, glass absorption %.1f%%)\n",
-              a.wavelength, 100 * transmittance.Total(), 100 * transmittance.surfaces, 100 * transmittance.glass);
+  if (transmittance.Total() > 0)
+    std::printf("  on-axis transmittance at %.2f nm: %.1f%% (surfaces: reflections and mirrors %.1f%%, glass absorption %.1f%%)\n",
+                a.wavelength, 100 * transmittance.Total(), 100 * transmittance.surfaces, 100 * transmittance.glass);
+  else
+    std::printf("  on-axis transmittance at %.2f nm: no ray parallel to the axis gets through\n", a.wavelength);
   if (coatings.empty()) std::printf("  coatings: none (bare glass)\n");
   for (const auto& [c, rows] : coatings) {
     std::string list;
@@ -319,7 +337,11 @@ int RunPsf(const LensArgs& a) {
   const double n = setup.fnumber;
   const double reference_nm = a.psf_wavelength > 0 ? a.psf_wavelength : 550.0;
   const double pitch = a.pixel_um > 0 ? a.pixel_um : reference_nm * 1e-3 * n / 4;
-  const PupilFunction pupil = [&opening](double u, double v) { return opening.Contains(u, v) ? 1.0 : 0.0; };
+  // A mirror lens's central obstruction takes the middle out of the pupil.
+  const double hidden = ObstructionRatio(setup.lens);
+  const PupilFunction pupil = [&opening, hidden](double u, double v) {
+    return u * u + v * v >= hidden * hidden && opening.Contains(u, v) ? 1.0 : 0.0;
+  };
   Image image;
   try {
     image = DiffractionImage(pupil, n, a.psf_wavelength > 0 ? std::optional<double>(a.psf_wavelength) : std::nullopt, pitch, a.size);
@@ -338,6 +360,7 @@ int RunPsf(const LensArgs& a) {
                               {"pixel_um", pitch},
                               {"size", a.size},
                               {"first_dark_ring_um", ring},
+                              {"obstruction_ratio", hidden},
                               {"first_dark_ring_wavelength_nm", reference_nm},
                               {"output", a.output}};
   if (a.json) {

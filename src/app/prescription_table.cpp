@@ -6,9 +6,11 @@
 
 namespace objektiv {
 
-std::string MediumLabel(const LensSurface& s) {
-  if (!s.medium) return "air";
-  const Glass& g = *s.medium;
+std::string MediumLabel(const LensSurface& s) { return MediumLabel(s.medium); }
+
+std::string MediumLabel(const std::shared_ptr<const Glass>& medium) {
+  if (!medium) return "air";
+  const Glass& g = *medium;
   // Glasses made from numbers carry their numbers in their name.
   if (g.catalog() == "MODEL" || g.catalog() == "CONSTANT" || g.catalog() == "FORMULA") return g.name();
   return g.catalog() + ":" + g.name();

@@ -12,6 +12,8 @@ namespace objektiv {
 
 // "SCHOTT:N-BK7", "air", "n=1.768", "model 1.516800/64.17".
 std::string MediumLabel(const LensSurface& s);
+// The same for a medium (air where null).
+std::string MediumLabel(const std::shared_ptr<const Glass>& medium);
 // The table's lines, each indented by two spaces and ending in a newline.
 std::string PrescriptionTable(const LensPrescription& lens);
 nlohmann::ordered_json PrescriptionJson(const LensPrescription& lens);

@@ -64,6 +64,17 @@ std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int
     if (real->dispersive()) spdlog::debug("lens {}: dispersive glass, one wavelength per camera ray", spec.lens.name);
     camera = std::move(real);
   } else {
+    // The thin and thick models put nodal points on the principal planes: true in air only.
+    // Nor do they know a mirror lens's central obstruction (their pupil is a full disc).
+    const char* model = spec.model == LensModel::kThin ? "thin" : "thick";
+    if (spec.lens.object_medium)
+      throw InputError(fmt::format("lens_model {}: the paraxial models need air in front of the lens; {} looks into "
+                                   "another medium (its object_medium): use lens_model real",
+                                   model, spec.lens.name));
+    for (const LensSurface& s : spec.lens.surfaces)
+      if (s.obscuration > 0)
+        throw InputError(fmt::format("lens_model {}: the paraxial models have no central obstruction, which {} has: "
+                                     "use lens_model real", model, spec.lens.name));
     ParaxialLensModel m = MakeParaxialModel(lens, setup.focus.plane_of_focus_to_film, spec.model == LensModel::kThin);
     if (spec.convergence_mm > 0)
       settings.shift.x += ChiefRayFilmX(spec.eye_offset_mm, spec.convergence_mm, m.entrance_pupil_radius,

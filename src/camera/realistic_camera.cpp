@@ -13,9 +13,21 @@ namespace {
 
 // Whether any glass's index changes with the wavelength.
 bool IsDispersive(const LensPrescription& lens) {
+  if (lens.object_medium && lens.object_medium->IsDispersive()) return true;
   for (const LensSurface& s : lens.surfaces)
     if (s.medium && s.medium->IsDispersive()) return true;
   return false;
+}
+
+// Where the scene lies in another medium (index n0, an underwater port), radiance there is n0^2
+// times the radiance it becomes in the air before the film (n^2 L is unchanged along a ray
+// through lossless interfaces): the camera measures the scene's radiance over n0^2.
+void ScaleForObjectMedium(const LensPrescription& lens, const SampledWavelengths& lambda, SampledSpectrum& weight) {
+  if (!lens.object_medium) return;
+  for (int k = 0; k < kSpectrumSamples; ++k) {
+    const double n0 = lens.object_medium->Index(lambda[k]);
+    weight[k] *= float(1 / (n0 * n0));
+  }
 }
 
 // Whether a camera ray's transmittance depends on its wavelength without the path doing so:
@@ -127,6 +139,7 @@ void RealisticCamera::GenerateRays(std::span<const CameraSample> samples, std::s
     if (mask) w *= mask->Transmittance(batch.stop_x[j] * inv_stop, batch.stop_y[j] * inv_stop);
     out[index[n]] = Finish(batch.Get(j), w);
     if (copies > 1) out[index[n]]->weight = PerWavelengthWeight(batch, j, w);
+    ScaleForObjectMedium(lens_.prescription(), lambdas[index[n]], out[index[n]]->weight);
   }
 }
 
@@ -179,6 +192,7 @@ std::optional<CameraImportance> RealisticCamera::SampleImportance(const Vec3f& p
       const TraceResult rk = TraceFromObject(lens_, {front.p - d, d}, lambda[k]);
       out.weight[k] = rk.ray ? float(w * rk.surface_transmittance * rk.internal_transmittance) : 0.f;
     }
+  ScaleForObjectMedium(lens_.prescription(), lambda, out.weight);
   return out;
 }
 

@@ -93,7 +93,7 @@ void WriteLensAnalysis(const LensSystem& lens, const std::string& directory) {
   nlohmann::ordered_json field_rows = nlohmann::ordered_json::array();
   for (size_t i = 0; i < fields.size(); ++i) {
     double f = fields[i];
-    std::optional<double> d = f > 0 ? Distortion(lens, p.efl, f, kLambdad) : std::optional<double>(0.0);
+    std::optional<double> d = f > 0 ? Distortion(lens, p.object_index * p.efl, f, kLambdad) : std::optional<double>(0.0);
     std::optional<FieldCurvature> fc = FieldCurvatureAt(lens, f, kLambdad);
     std::optional<double> r = RelativeIllumination(lens, f, kLambdad);
     std::optional<double> hf = RealImageHeight(lens, f, kLambdaF), hc = RealImageHeight(lens, f, kLambdaC);
@@ -107,7 +107,7 @@ void WriteLensAnalysis(const LensSystem& lens, const std::string& directory) {
     cos4.points.push_back({f, c * c * c * c});
     field_rows.push_back({{"field_deg", f},
                           {"image_height_mm", value(RealImageHeight(lens, f, kLambdad))},
-                          {"paraxial_image_height_mm", p.efl * std::tan(f * M_PI / 180)},
+                          {"paraxial_image_height_mm", p.object_index * p.efl * std::tan(f * M_PI / 180)},
                           {"distortion_percent", value(d, 100)},
                           {"tangential_focus_mm", value(fc ? std::optional(fc->tangential) : std::nullopt)},
                           {"sagittal_focus_mm", value(fc ? std::optional(fc->sagittal) : std::nullopt)},

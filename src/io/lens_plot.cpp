@@ -12,7 +12,7 @@ namespace objektiv {
 
 std::vector<double> DefaultFields(const LensSystem& lens, double lambda_nm) {
   ParaxialData p = lens.Paraxial(lambda_nm);
-  double max_field = std::atan(21.63 / std::abs(p.efl)) * 180 / M_PI;
+  double max_field = std::atan(21.63 / std::abs(p.object_index * p.efl)) * 180 / M_PI;
   while (max_field > 0.5 && !RealImageHeight(lens, max_field, lambda_nm)) max_field *= 0.95;
   return {0.0, 0.7 * max_field, max_field};
 }
@@ -47,7 +47,7 @@ Svg PlotLensLayout(const LensSystem& lens, const std::vector<double>& fields, do
   // A stop inside glass (the same medium on both sides) is no face of the element: it spans
   // from the surface before the stop to the one after.
   auto glass_through_stop = [&](int i) {
-    return rx.surfaces[i].is_stop && i > 0 && i + 1 < n &&
+    return rx.surfaces[i].is_stop && !rx.surfaces[i].mirror && i > 0 && i + 1 < n &&
            rx.surfaces[i].IndexAfter(lambda_nm) == rx.surfaces[i - 1].IndexAfter(lambda_nm);
   };
   for (int i = 0; i + 1 < n; ++i) {

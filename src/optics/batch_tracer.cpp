@@ -41,6 +41,27 @@ BatchLensTracer::BatchLensTracer(const LensSystem& lens_system)
   const LensPrescription& lens = lens_system.prescription();
   index_tables_.push_back(std::vector<float>(kTableSize, 1.f));  // air
   absorption_tables_.push_back(std::vector<float>(kTableSize, 0.f));
+  // A medium's tables, once per distinct medium (a surface between equal media, as a stop
+  // inside glass, then has the same on both sides and does not refract): its number, -1 for
+  // air (tables[0]).
+  auto medium_tables = [&](const Glass* glass) {
+    if (!glass) return -1;
+    std::vector<float> n(kTableSize), alpha(kTableSize);
+    for (int l = 0; l < kTableSize; ++l) {
+      n[l] = float(glass->Index(kTableMin + l));
+      // Absorption coefficient per mm from the transmittance over 1 mm.
+      alpha[l] = float(-std::log(std::max(glass->InternalTransmittance(kTableMin + l, 1.0), 1e-30)));
+    }
+    size_t m = 1;
+    while (m < index_tables_.size() && (index_tables_[m] != n || absorption_tables_[m] != alpha)) ++m;
+    if (m == index_tables_.size()) {
+      absorbing_ |= *std::max_element(alpha.begin(), alpha.end()) > 0;
+      index_tables_.push_back(std::move(n));
+      absorption_tables_.push_back(std::move(alpha));
+    }
+    return int(m) - 1;
+  };
+  object_medium_ = medium_tables(lens.object_medium.get());
   for (size_t i = 0; i < lens.surfaces.size(); ++i) {
     const LensSurface& s = lens.surfaces[i];
     Surface f;
@@ -64,24 +85,7 @@ BatchLensTracer::BatchLensTracer(const LensSystem& lens_system)
       coating_tables_.push_back(TabulateReflectance(lens_system, int(i), true));
       coating_tables_.push_back(TabulateReflectance(lens_system, int(i), false));
     }
-    if (s.medium) {
-      std::vector<float> n(kTableSize), alpha(kTableSize);
-      for (int l = 0; l < kTableSize; ++l) {
-        n[l] = float(s.medium->Index(kTableMin + l));
-        // Absorption coefficient per mm from the transmittance over 1 mm.
-        alpha[l] = float(-std::log(std::max(s.medium->InternalTransmittance(kTableMin + l, 1.0), 1e-30)));
-      }
-      // One table per distinct medium: a surface between equal media (a stop inside glass)
-      // then has the same medium on both sides and does not refract.
-      size_t m = 1;
-      while (m < index_tables_.size() && (index_tables_[m] != n || absorption_tables_[m] != alpha)) ++m;
-      f.medium_after = int(m) - 1;  // tables[0] is air
-      if (m == index_tables_.size()) {
-        absorbing_ |= *std::max_element(alpha.begin(), alpha.end()) > 0;
-        index_tables_.push_back(std::move(n));
-        absorption_tables_.push_back(std::move(alpha));
-      }
-    }
+    f.medium_after = medium_tables(s.medium.get());
     surfaces_.push_back(f);
   }
   for (const std::vector<float>& tab : index_tables_)
@@ -307,7 +311,7 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
     const int i = from_film ? n - 1 - k : k;
     const Surface& sf = surfaces_[i];
     // Media on the incoming and outgoing sides of surface i, in the direction of travel.
-    const int object_side = i > 0 ? surfaces_[i - 1].medium_after : -1, film_side = sf.medium_after;
+    const int object_side = i > 0 ? surfaces_[i - 1].medium_after : object_medium_, film_side = sf.medium_after;
     const int m_in = from_film ? film_side : object_side, m_out = from_film ? object_side : film_side;
     // Air is medium 0 (index one, no absorption); the ray starts in air (no absorption before
     // the first surface).

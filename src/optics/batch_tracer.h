@@ -79,6 +79,7 @@ class BatchLensTracer {
   // over wavelength (rows) and cos(incidence) (columns).
   std::vector<std::vector<float>> coating_tables_;
   bool absorbing_ = false;               // any glass absorbs somewhere in the range
+  int object_medium_ = -1;               // the medium before the first surface (-1: air)
   float film_z_;
   // The opening, where not round (the circle is tested inline), and the stop's radius.
   StopShape stop_shape_;

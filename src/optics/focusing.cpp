@@ -15,7 +15,7 @@ struct ObjectRay {
 ObjectRay TraceFromObjectPoint(const LensPrescription& lens, double s, double lambda_nm) {
   const auto& surf = lens.surfaces;
   const std::vector<double> index = SignedIndices(lens, lambda_nm);  // through mirrors too
-  double y = s, nu = 1, y_stop = 0;  // slope 1 over the object distance s
+  double y = s, nu = index[0], y_stop = 0;  // slope 1 over the object distance s, in the object medium
   for (size_t i = 0; i < surf.size(); ++i) {
     const double n_before = index[i], n_after = index[i + 1];
     if (surf[i].is_stop) y_stop = y;
@@ -31,7 +31,7 @@ FocusSolution ImageObject(const LensPrescription& lens, double s, double lambda_
   FocusSolution f;
   f.object_to_first_vertex = s;
   f.back_focus = -r.y_end / r.nu_end;
-  f.magnification = 1 / r.nu_end;  // Lagrange: n u / n' u' with n u = 1 at the object
+  f.magnification = lens.IndexBefore(0, lambda_nm) / r.nu_end;  // Lagrange: n u / n' u', n u = n0 at the object
   int stop = lens.StopIndex();
   double semi = stop >= 0 ? lens.surfaces[stop].semi_diameter : 0;
   // Scale the ray to pass the stop's edge: its slope at the film gives the cone of light.

@@ -11,7 +11,7 @@ std::vector<int> ReflectingSurfaces(const LensSystem& lens) {
   // At the d line: a change anywhere is a change there.
   std::vector<int> reflecting;
   for (int i = 0; i < lens.SurfaceCount(); ++i) {
-    const double before = i > 0 ? lens.surface(i - 1).IndexAfter(kLambdad) : 1.0;
+    const double before = lens.prescription().IndexBefore(size_t(i), kLambdad);
     if (before != lens.surface(i).IndexAfter(kLambdad)) reflecting.push_back(i);
   }
   return reflecting;

@@ -99,7 +99,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
   FileCoatings coatings;
   std::shared_ptr<const Coating> default_coating;
   std::vector<size_t> explicitly_coated;  // surfaces with their own coating=
-  int default_line = 0;
+  int default_line = 0, object_medium_line = 0;
   std::vector<int> coating_lines;  // the lines of explicitly_coated
   std::vector<int> surface_lines;  // per surface
   while (std::getline(lines, line)) {
@@ -116,12 +116,17 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       else if (key == "focal_length") lens.design_focal_length = ParseFiniteNumber(value, path, number);
       else if (key == "fnumber") lens.design_fnumber = ParseFiniteNumber(value, path, number);
       else if (key == "image_circle") lens.image_circle = ParseFiniteNumber(value, path, number);
+      else if (key == "object_medium") {  // the scene's side: air, water (n=1.333), oil ...
+        if (object_medium_line) throw MakeInputError(path, number, "object_medium is given twice (first on line {})", object_medium_line);
+        lens.object_medium = ParseMedium(value, lens_glasses, path, number);
+        object_medium_line = number;
+      }
       else if (key == "default_coating") {
         if (default_line) throw MakeInputError(path, number, "default_coating is given twice (first on line {})", default_line);
         default_coating = coatings.Find(value, path, number);
         default_line = number;
       }
-      else throw MakeInputError(path, number, "unknown key '{}' (name, source, focal_length, fnumber, image_circle, default_coating)", key);
+      else throw MakeInputError(path, number, "unknown key '{}' (name, source, focal_length, fnumber, image_circle, default_coating, object_medium)", key);
       continue;
     }
     if (f[0] == "coating") {
@@ -160,6 +165,9 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
     s.thickness = ParseFiniteNumber(f[next], path, number);
     if (s.mirror) {
       // Light goes back into the medium it came from; the line names none.
+      if (!ParseFiniteNumber(f[next + 1]))
+        throw MakeInputError(path, number, "'{}': a mirror line names no medium (light goes back into the one it came "
+                             "from): mirror RADIUS THICKNESS SEMI_DIAMETER [options]", Printable(f[next + 1]));
       s.medium = lens.surfaces.empty() ? nullptr : lens.surfaces.back().medium;
       --next;
     } else {
@@ -219,14 +227,14 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
     last_line = number;
   }
   if (lens.surfaces.empty()) throw MakeInputError(path, 0, "no surfaces");
-  if (!stop_line) throw MakeInputError(path, 0, "no stop line");
+  if (!stop_line) throw MakeInputError(path, 0, "no stop line (or a mirror with stop=yes)");
   if (lens.surfaces.back().medium) throw MakeInputError(path, last_line, "the last surface must leave the lens into air");
   if (auto mismatch = FirstDirectionMismatch(lens)) throw MakeInputError(path, surface_lines[mismatch->first], "{}", mismatch->second);
   // A coating where the medium does not change coats nothing.
   for (size_t k = 0; k < explicitly_coated.size(); ++k) {
     const size_t i = explicitly_coated[k];
     const LensSurface& s = lens.surfaces[i];
-    if (s.coating && (i > 0 ? lens.surfaces[i - 1].medium : nullptr) == s.medium)
+    if (s.coating && lens.MediumBefore(i) == s.medium)
       spdlog::warn("{}:{}: coating '{}' does nothing here: the medium is the same on both sides of the surface", path,
                    coating_lines[k], s.coating->name());
   }

@@ -43,9 +43,9 @@ std::optional<std::pair<size_t, std::string>> FirstDirectionMismatch(const LensP
   }
   if (mirrors % 2)
     return {{lens.surfaces.size() - 1,
-             fmt::format("the lens has {} mirrors, an odd number: its image would lie on the object's side; a camera "
-                         "needs an even number (a fold mirror needs a coordinate break, which is not supported)",
-                         mirrors)}};
+             fmt::format("the lens has {} mirror{}, an odd number: its image would lie on the object's side; a "
+                         "camera needs an even number (a fold mirror needs a coordinate break, which is not supported)",
+                         mirrors, mirrors == 1 ? "" : "s")}};
   return std::nullopt;
 }
 
@@ -102,7 +102,7 @@ void CheckReachable(const LensSurface& s, const std::string& path, int line) {
 std::optional<std::pair<size_t, std::string>> FirstCoatingMismatch(const LensPrescription& lens) {
   for (size_t i = 0; i < lens.surfaces.size(); ++i) {
     const LensSurface& s = lens.surfaces[i];
-    const Glass* before = i > 0 ? lens.surfaces[i - 1].medium.get() : nullptr;
+    const Glass* before = lens.MediumBefore(i).get();
     if (!s.coating || before == s.medium.get()) continue;  // coats nothing
     if (std::string why = CoatingMismatch(*s.coating, before, s.medium.get()); !why.empty()) return {{i, why}};
   }
@@ -142,7 +142,7 @@ namespace objektiv {
 void CoatAirGlassSurfaces(LensPrescription& lens, const std::shared_ptr<const Coating>& coating, bool only_bare) {
   for (size_t i = 0; i < lens.surfaces.size(); ++i) {
     LensSurface& s = lens.surfaces[i];
-    const bool glass_before = i > 0 && lens.surfaces[i - 1].medium, glass_after = bool(s.medium);
+    const bool glass_before = bool(lens.MediumBefore(i)), glass_after = bool(s.medium);
     if (glass_before == glass_after) continue;  // air on both sides, or cemented
     if (!only_bare || !s.coating) s.coating = coating;
   }

@@ -62,10 +62,22 @@ struct LensPrescription {
   std::string name, source;
   double design_focal_length = 0, design_fnumber = 0, image_circle = 0;  // metadata (0: not given)
   std::vector<LensSurface> surfaces;
+  // The medium in front of the first surface, where the scene is: null is air; water for an
+  // underwater housing's port, oil for an immersion objective. The film side is always air.
+  std::shared_ptr<const Glass> object_medium;
   // The coatings the lens file defines (used by its surfaces or not: a scene may choose one).
   std::vector<std::shared_ptr<const Coating>> defined_coatings;
 
   int StopIndex() const;  // -1 if none
+  // The medium light crosses before surface i (from the object side): the object medium
+  // before the first.
+  const std::shared_ptr<const Glass>& MediumBefore(size_t i) const {
+    return i > 0 ? surfaces[i - 1].medium : object_medium;
+  }
+  double IndexBefore(size_t i, double lambda_nm) const {
+    const std::shared_ptr<const Glass>& m = MediumBefore(i);
+    return m ? m->Index(lambda_nm) : 1.0;
+  }
   // First vertex to the last along z (without the distance to the film): the sum of the
   // thicknesses, negative ones (after a mirror) included.
   double TotalTrack() const;

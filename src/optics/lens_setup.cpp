@@ -26,6 +26,9 @@ void SetStop(LensSystem& lens, const StopRequest& stop) {
       // A lens sold as f/2.8 may open to f/2.81 by the real rays: a request within 2% of the
       // widest aperture means wide open.
       const double wide_open = RealFNumber(lens);
+      if (!(wide_open < INFINITY))
+        throw InputError(fmt::format("no light gets through {} on the axis: its rims, mirrors or obstruction block every "
+                                     "ray (check their radii and semi-diameters)", rx.name));
       if (stop.fnumber < wide_open / 1.02)
         throw InputError(fmt::format("f/{} is faster than {} opens (f/{:.3g})", stop.fnumber, rx.name, wide_open));
       spdlog::info("lens {}: f/{} taken as wide open (f/{:.3g})", rx.name, stop.fnumber, wide_open);
@@ -68,6 +71,9 @@ LensSetup SetUpLens(LensPrescription prescription, const StopRequest& stop, cons
   SetStop(lens, stop);
   setup.fnumber = RealFNumber(lens);
   lens.SetStopShape(stop.opening);
+  if (!stop.opening.IsRound() && lens.StopIndex() >= 0 && lens.surface(lens.StopIndex()).mirror)
+    spdlog::warn("lens {}: its stop is a mirror's rim (a mirror lens has no iris); the blades or mask shape it as an "
+                 "iris there would", lens.prescription().name);
   const double distance = DistanceFromFilm(lens, focus);
   setup.focus = focus.real_rays ? FocusLens(lens, distance, focus.lambda_nm)
                                 : ParaxialFocus(lens.prescription(), distance, focus.lambda_nm);

@@ -15,7 +15,7 @@ LensSystem::LensSystem(LensPrescription prescription)
     const LensSurface& s = surfaces[i];
     vertex_z_.push_back(z);
     z += s.thickness;
-    const std::shared_ptr<const Glass>& before = i > 0 ? surfaces[i - 1].medium : nullptr;
+    const std::shared_ptr<const Glass>& before = prescription_.MediumBefore(i);
     const bool outer_faces_object = CoatingOuterFacesObject(before != nullptr, s.medium != nullptr);
     outer_faces_object_.push_back(outer_faces_object);
     if (s.coating && before != s.medium)
@@ -44,7 +44,7 @@ ParaxialData LensSystem::Paraxial(double lambda_nm) const {
 }
 
 double LensSystem::SurfaceReflectance(int i, double lambda_nm, double cos_i, bool toward_film) const {
-  return SurfaceReflectance(i, lambda_nm, cos_i, toward_film, i > 0 ? surface(i - 1).IndexAfter(lambda_nm) : 1.0,
+  return SurfaceReflectance(i, lambda_nm, cos_i, toward_film, prescription_.IndexBefore(size_t(i), lambda_nm),
                             surface(i).IndexAfter(lambda_nm));
 }
 
@@ -53,6 +53,12 @@ double LensSystem::SurfaceReflectance(int i, double lambda_nm, double cos_i, boo
   if (n_object == n_film) return 0;
   if (coated_[i]) return coated_[i]->Reflectance(lambda_nm, cos_i, toward_film == outer_faces_object_[i]);
   return toward_film ? FresnelReflectance(n_object, n_film, cos_i) : FresnelReflectance(n_film, n_object, cos_i);
+}
+
+LensSystem LensSystem::WithoutObstructions() const {
+  LensSystem open = *this;
+  for (LensSurface& s : open.prescription_.surfaces) s.obscuration = 0;
+  return open;
 }
 
 double LensSystem::MirrorReflectance(int i, double lambda_nm, double cos_i) const {

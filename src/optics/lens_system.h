@@ -53,6 +53,9 @@ class LensSystem {
   // already (the exact tracer: each glass's formula evaluated once per surface, not twice).
   double SurfaceReflectance(int i, double lambda_nm, double cos_i, bool toward_film, double n_object,
                             double n_film) const;
+  // The same lens as set up without its central obstructions (obscuration= on any surface):
+  // where light could get through but for them.
+  LensSystem WithoutObstructions() const;
   // What mirror i reflects for light arriving at cos_i (in the medium it travels in).
   double MirrorReflectance(int i, double lambda_nm, double cos_i) const;
   // The coating as it lies on surface i, or null (bare, or no change of medium there).

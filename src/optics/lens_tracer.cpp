@@ -104,7 +104,7 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
   }
   // Indices on the incoming and outgoing sides (a stop inside glass has the same on both;
   // between different media it refracts as the flat interface it is).
-  const double n_object_side = i > 0 ? lens.surface(i - 1).IndexAfter(lambda_nm) : 1.0;
+  const double n_object_side = lens.prescription().IndexBefore(size_t(i), lambda_nm);
   const double n_film_side = s.IndexAfter(lambda_nm);
   const double n1 = toward_film ? n_object_side : n_film_side, n2 = toward_film ? n_film_side : n_object_side;
   c.mirror = s.mirror;

@@ -39,7 +39,7 @@ YNu TraceRange(const LensPrescription& lens, const std::vector<double>& n, YNu r
 }  // namespace
 
 std::vector<double> SignedIndices(const LensPrescription& lens, double lambda_nm) {
-  std::vector<double> n{1.0};
+  std::vector<double> n{lens.IndexBefore(0, lambda_nm)};
   double sign = 1;
   for (const LensSurface& s : lens.surfaces) {
     if (s.mirror) sign = -sign;
@@ -57,9 +57,13 @@ ParaxialData ComputeParaxial(const LensPrescription& lens, double lambda_nm, dou
   d.efl = -1 / f.nu;              // EFL = -y1 / (n' u') with y1 = 1
   d.bfl = -f.y * n_image / f.nu;  // where the ray (slope u' = nu / n') crosses the axis
   YNu b = TraceRange(lens, index, {1, 0}, n - 1, 0, true);
-  d.ffl = b.y / b.nu;   // the front focus, in front of the first vertex (negative)
+  // Object space may be another medium (index n0): a reduced angle nu there is n0 u, and the
+  // front focal length is n0 EFL.
+  const double n_object = index[0];
+  d.object_index = n_object;
+  d.ffl = n_object * b.y / b.nu;   // the front focus, in front of the first vertex (negative)
   d.back_principal_plane = d.bfl - n_image * d.efl;  // the rear focal length in the image medium is n' EFL
-  d.front_principal_plane = d.ffl + d.efl;
+  d.front_principal_plane = d.ffl + n_object * d.efl;
 
   int stop = lens.StopIndex();
   if (stop < 0) return d;
@@ -75,7 +79,7 @@ ParaxialData ComputeParaxial(const LensPrescription& lens, double lambda_nm, dou
     YNu e{0, n_front};  // u = 1
     e.y += lens.surfaces[stop - 1].thickness * e.nu / n_front;
     e = TraceRange(lens, index, e, stop - 1, 0, true);
-    d.entrance_pupil_position = e.y / e.nu;
+    d.entrance_pupil_position = n_object * e.y / e.nu;
     YNu m = TraceRange(lens, index, {1, 0}, 0, stop - 1, false);
     double y_stop = m.y + lens.surfaces[stop - 1].thickness * m.nu / index[stop];
     d.entrance_pupil_diameter = std::abs(2 * semi / y_stop);

@@ -16,8 +16,12 @@ struct ParaxialData {
   double entrance_pupil_position = 0, entrance_pupil_diameter = 0;
   double exit_pupil_position = 0, exit_pupil_diameter = 0;
   double fnumber = 0;  // EFL / entrance pupil diameter (object at infinity)
+  // The object space's index (1: air). The EFL is the image side's (in air); the front focal
+  // length, object side, is object_index x EFL, and a field angle theta there images at
+  // object_index x EFL x tan(theta).
+  double object_index = 1;
   // Principal planes, from the first / last vertex (positive toward the film). In air the
-  // nodal points coincide with them.
+  // nodal points coincide with them (not where the object space is another medium).
   double front_principal_plane = 0, back_principal_plane = 0;
 };
 

@@ -277,7 +277,10 @@ PupilBounds::PupilBounds(const LensSystem& lens, double film_radius, const Pupil
   span_ = round_ ? 0 : (symmetry_.mirror ? period_ / 2 : period_);
   for (int k = 0; k < (round_ ? 0 : symmetry_.order); ++k)
     turns_.push_back({std::cos(symmetry_.axis + k * period_), std::sin(symmetry_.axis + k * period_)});
-  Builder(*this, lens, options).Build();
+  // A central obstruction only takes light away: the bound is built for the lens without it
+  // (the convex hull of an annulus is its disc anyway, and the region search walks out from the
+  // chief ray, which the obstruction blocks).
+  Builder(*this, lens.WithoutObstructions(), options).Build();
 }
 
 PupilBounds::Frame PupilBounds::FrameOf(Vec2d film) const {

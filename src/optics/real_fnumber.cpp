@@ -58,6 +58,11 @@ double RealFNumber(const LensSystem& lens, double lambda_nm) {
   return lo > 0 ? 1 / (2 * lo) : INFINITY;
 }
 
+double ObstructionRatio(const LensSystem& lens, double lambda_nm) {
+  const std::optional<double> hidden = ObstructionFNumber(lens, lambda_nm);
+  return hidden ? RealFNumber(lens, lambda_nm) / *hidden : 0.0;
+}
+
 std::optional<double> ObstructionFNumber(const LensSystem& lens, double lambda_nm) {
   LensSystem t = AtInfinityFocus(lens, lambda_nm);
   if (TraceFromFilm(t, ConeRay(t, 0), lambda_nm).ray) return std::nullopt;

@@ -20,6 +20,12 @@ double RealFNumber(const LensSystem& lens, double lambda_nm = kLambdad);
 // fixed). Nothing where the axis is clear, or where no light gets through at all.
 std::optional<double> ObstructionFNumber(const LensSystem& lens, double lambda_nm = kLambdad);
 
+// The central obstruction's shadow in the pupil, as a fraction of the stop's radius as set:
+// the ratio of the hidden cone's sine to the whole cone's, RealFNumber / ObstructionFNumber (an
+// aplanatic lens maps pupil radii to sines of the image cone); 0 where the axis is clear. The
+// diffraction patterns' pupil is the stop's opening less this disc.
+double ObstructionRatio(const LensSystem& lens, double lambda_nm = kLambdad);
+
 // The stop semi-diameter that gives f-number `fnumber`; nothing if the cone cannot reach the
 // stop (a rim behind it cuts it first) or needs a stop larger than the lens's.
 std::optional<double> StopSemiDiameterForFNumber(const LensSystem& lens, double fnumber,

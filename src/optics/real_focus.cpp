@@ -74,7 +74,7 @@ double ClosestFocusDistance(const LensPrescription& rx, double lambda_nm) {
   // Object distance from the first vertex for the image at back focus t: Gaussian optics
   // about the principal planes (exact paraxially).
   double image = t - p.back_principal_plane;  // from H'
-  double object = 1 / (1 / p.efl - 1 / image);  // in front of H
+  double object = p.object_index / (1 / p.efl - 1 / image);  // in front of H: n0 / s + 1 / s' = 1 / EFL
   return t + rx.TotalTrack() + object - p.front_principal_plane;
 }
 

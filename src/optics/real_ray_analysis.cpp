@@ -152,7 +152,8 @@ std::optional<double> RelativeIllumination(const LensSystem& lens, double field_
   if (*h * dh <= 0) return std::nullopt;
   double e = beam_area(field_deg) * std::sin(theta) / (*h * dh);
   // On axis the same ratio tends to A / f^2 (h ~ f theta, dh/dtheta ~ f).
-  double e0 = a0 / (p.efl * p.efl);
+  const double f = p.object_index * p.efl;  // the object side's focal length
+  double e0 = a0 / (f * f);
   return e / e0;
 }
 
@@ -163,7 +164,8 @@ std::optional<FieldCurvature> FieldCurvatureAt(const LensSystem& lens, double fi
   double theta = field_deg * M_PI / 180, eps = 1e-4 * p.entrance_pupil_diameter;
   auto trace = [&](double dx, double dy) -> std::optional<LensRay> {
     LensRay r{{dx, chief->o.y + dy / std::cos(theta), kStartZ}, chief->d};
-    LensSystem open = lens;
+    // Rays next to the chief ray, which a central obstruction would block.
+    LensSystem open = lens.WithoutObstructions();
     open.SetStopSemiDiameter(1e30);
     TraceResult t = TraceFromObject(open, r, lambda_nm);
     if (!t.ray) return std::nullopt;

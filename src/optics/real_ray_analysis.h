@@ -17,6 +17,7 @@ std::optional<double> RealImageHeight(const LensSystem& lens, double field_deg, 
 
 // Distortion at a field angle: (real - ideal) / ideal image height, with the ideal height
 // EFL tan(theta) (rectilinear). Negative: barrel, positive: pincushion.
+// (`efl`: the object side's focal length, object index x EFL where the object space is not air.)
 std::optional<double> Distortion(const LensSystem& lens, double efl, double field_deg, double lambda_nm);
 
 struct Spot {

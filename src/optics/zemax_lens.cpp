@@ -236,6 +236,11 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
   lens.source = path;
   bool have_stop = false;
   // Surfaces 1 .. n-2 are the lens; the last thickness before the image is the back focus.
+  // The object surface's glass is the medium the scene lies in (water for an underwater port).
+  if (const ZSurface& object = surfs.front(); !object.glass.empty() && object.glass != "AIR") {
+    if (object.glass == "MIRROR") throw MakeInputError(path, object.glass_line, "the object surface cannot be a mirror");
+    lens.object_medium = SurfaceGlass(object, lens_glasses, path);
+  }
   for (size_t i = 1; i + 1 < surfs.size(); ++i) {
     const ZSurface& z = surfs[i];
     if (z.infinite_thickness) throw MakeInputError(path, z.line, "an infinite thickness inside the lens");

@@ -7,6 +7,7 @@
 #include <spdlog/spdlog.h>
 
 #include "camera/realistic_camera.h"
+#include "optics/real_fnumber.h"
 #include "render/diffraction_glare.h"
 #include "render/glare_light_tracer.h"
 #include "render/lens_flare.h"
@@ -24,12 +25,14 @@ void Add(std::vector<float>& to, const std::vector<float>& from) {
   for (size_t i = 0; i < from.size(); ++i) to[i] += from[i];
 }
 
-// The stop's opening with the aperture mask over it, in stop radii.
+// The stop's opening with the aperture mask over it, less a central obstruction's shadow, in
+// stop radii.
 PupilFunction StopPupil(const RealisticCamera& camera) {
   const StopShape& shape = camera.lens().stop_shape();
   const ApertureMask* mask = camera.settings().aperture_mask.get();
-  return [&shape, mask](double u, double v) {
-    if (!shape.Contains(u, v)) return 0.0;
+  const double hidden = ObstructionRatio(camera.lens());
+  return [&shape, mask, hidden](double u, double v) {
+    if (!shape.Contains(u, v) || u * u + v * v < hidden * hidden) return 0.0;
     return mask ? double(mask->Transmittance(float(u), float(v))) : 1.0;
   };
 }
