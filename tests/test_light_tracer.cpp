@@ -75,6 +75,19 @@ TEST(LightTracer, ThinLensAndRealLensMatchThePathTracer) {
     <float name="sensor_width" value="24"/><float name="sensor_height" value="24"/>)", light, 16, 128);
 }
 
+// Under water behind a flat port (tests/data/flat-port-dgauss.lens): light paths carry flux,
+// which is the same on both sides of the port, camera paths radiance, which the port divides by
+// 1.333^2; both give the same image (the light tracer's importance once took the 1 / n^2 too:
+// its image came out 0.56 of the path tracer's).
+TEST(LightTracer, RealLensUnderWaterMatchesThePathTracer) {
+  SKIP_UNDER_SANITIZERS("ObjectMedium.TheCameraSeesTheScenesRadianceOverNSquared");
+  const char* light = R"(<emitter type="point"><point name="position" x="-0.3" y="1.6" z="0.2"/>
+    <rgb name="intensity" value="2, 2, 2"/></emitter>)";
+  ExpectSameAsPathTracer(fmt::format(R"(<sensor type="realistic"><string name="lens" value="{}/flat-port-dgauss.lens"/>
+    <float name="fnumber" value="4"/><float name="focus_distance" value="3"/>
+    <float name="sensor_width" value="24"/><float name="sensor_height" value="24"/>)", OBJEKTIV_TEST_DATA_DIR), light, 16, 128);
+}
+
 // A glass ball (index 1.5) on a floor under a spherical lamp, seen from above, framing its
 // shadow: the caustic in the shadow is found by camera paths (through the glass to the lamp: fireflies) or,
 // with `caustics`, by light paths; the two images agree.

@@ -263,6 +263,8 @@ LensSetup SetUpStop(const LensArgs& a) {
   const double efl = ComputeParaxial(lens, kLambdad).efl;
   if (!std::isfinite(efl) || std::abs(efl) > 1e12)
     throw InputError(fmt::format("{}: the lens has no optical power (afocal): it forms no image", a.lens));
+  if (efl < 0)
+    throw InputError(fmt::format("{}: a negative EFL ({:.4g} mm): the lens forms no real image of a distant point", a.lens, efl));
   Recoat(lens, a.coating);
   try {
     return SetUpLens(std::move(lens), {a.fnumber, 0, opening}, {INFINITY, FocusRequest::From::kFilm, false});

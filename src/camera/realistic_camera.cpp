@@ -21,7 +21,7 @@ bool IsDispersive(const LensPrescription& lens) {
 
 // Where the scene lies in another medium (index n0, an underwater port), radiance there is n0^2
 // times the radiance it becomes in the air before the film (n^2 L is unchanged along a ray
-// through lossless interfaces): the camera measures the scene's radiance over n0^2.
+// through lossless interfaces): a camera ray measures the scene's radiance over n0^2.
 void ScaleForObjectMedium(const LensPrescription& lens, const SampledWavelengths& lambda, SampledSpectrum& weight) {
   if (!lens.object_medium) return;
   for (int k = 0; k < kSpectrumSamples; ++k) {
@@ -192,7 +192,8 @@ std::optional<CameraImportance> RealisticCamera::SampleImportance(const Vec3f& p
       const TraceResult rk = TraceFromObject(lens_, {front.p - d, d}, lambda[k]);
       out.weight[k] = rk.ray ? float(w * rk.surface_transmittance * rk.internal_transmittance) : 0.f;
     }
-  ScaleForObjectMedium(lens_.prescription(), lambda, out.weight);
+  // (No 1 / n0^2 here: this weight takes flux through the lens to the film, and flux, unlike
+  // radiance, is the same on both sides of the port.)
   return out;
 }
 

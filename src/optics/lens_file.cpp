@@ -25,9 +25,10 @@ namespace fs = std::filesystem;
 std::shared_ptr<const Glass> ParseMedium(const std::string& m, const LensGlasses& glasses, const std::string& path,
                                          int line) {
   if (m == "air") return nullptr;
+  if (m.empty()) throw MakeInputError(path, line, "no medium given (air, a glass name, n=N or nd=N,vd=V)");
   if (m.rfind("n=", 0) == 0) {
     double n = ParseFiniteNumber(m.substr(2), path, line);
-    if (n < 1) throw MakeInputError(path, line, "index {} is below 1", n);
+    if (n < 1 || n > 5) throw MakeInputError(path, line, "index {} is not a medium's (1 to 5)", n);
     return std::make_shared<const Glass>(Glass::Constant(n));
   }
   if (m.rfind("nd=", 0) == 0) {
@@ -35,7 +36,7 @@ std::shared_ptr<const Glass> ParseMedium(const std::string& m, const LensGlasses
     if (comma == std::string::npos) throw MakeInputError(path, line, "a model glass is written nd=N,vd=V, got '{}'", Printable(m));
     double nd = ParseFiniteNumber(m.substr(3, comma - 3), path, line);
     double vd = ParseFiniteNumber(m.substr(comma + 4), path, line);
-    if (nd < 1 || vd <= 0) throw MakeInputError(path, line, "model glass needs nd >= 1 and vd > 0");
+    if (nd < 1 || nd > 5 || vd <= 0) throw MakeInputError(path, line, "model glass needs nd from 1 to 5 and vd > 0");
     return std::make_shared<const Glass>(Glass::Model(nd, vd));
   }
   return glasses.Resolve(m, line);

@@ -40,11 +40,13 @@ void SetStop(LensSystem& lens, const StopRequest& stop) {
   // narrowed to its shadow: no light would reach the film.
   if (lens.StopSemiDiameter() < full && !(RealFNumber(lens) < INFINITY)) {
     const std::optional<double> limit = ObstructionFNumber(LensSystem(rx));
-    throw InputError(fmt::format("{}: no light gets through {}{}", stop.diameter_mm > 0 ? fmt::format("a stop of {} mm", stop.diameter_mm) : fmt::format("f/{}", stop.fnumber), rx.name,
-                                 limit ? fmt::format(": its central obstruction hides the whole cone from f/{:.3g} on (a mirror "
-                                                     "lens's aperture is fixed; its filters or the exposure set the light)",
-                                                     *limit)
-                                       : ""));
+    const std::string asked =
+        stop.diameter_mm > 0 ? fmt::format("a stop of {} mm", stop.diameter_mm) : fmt::format("f/{}", stop.fnumber);
+    const std::string why = limit ? fmt::format(": its central obstruction hides the whole cone from f/{:.3g} on (a "
+                                                "mirror lens's aperture is fixed; its filters or the exposure set the light)",
+                                                *limit)
+                                  : "";
+    throw InputError(fmt::format("{}: no light gets through {}{}", asked, rx.name, why));
   }
 }
 
@@ -68,6 +70,9 @@ double DistanceFromFilm(const LensSystem& lens, const FocusRequest& focus) {
 LensSetup SetUpLens(LensPrescription prescription, const StopRequest& stop, const FocusRequest& focus) {
   LensSetup setup{LensSystem(std::move(prescription)), 0, {}, ""};
   LensSystem& lens = setup.lens;
+  if (!(lens.paraxial().efl > 0))
+    throw InputError(fmt::format("{}: EFL {:.4g} mm: the lens forms no real image of a distant point (a camera needs a "
+                                 "positive one)", lens.prescription().name, lens.paraxial().efl));
   SetStop(lens, stop);
   setup.fnumber = RealFNumber(lens);
   lens.SetStopShape(stop.opening);

@@ -16,9 +16,7 @@ LensSystem AtInfinityFocus(const LensSystem& lens, double lambda_nm) {
 LensRay ConeRay(const LensSystem& t, double sin_u) {
   return {{0, 0, t.FilmZ()}, {0, sin_u, -std::sqrt(1 - sin_u * sin_u)}};
 }
-}  // namespace
 
-namespace {
 constexpr int kScan = 1024;  // steps of sin u over (0, 1] where the axis is blocked
 
 // The boundary between sin u = a and b (one passes, the other not), by bisection.

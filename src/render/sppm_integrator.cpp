@@ -196,18 +196,23 @@ RenderStats SppmIntegrator::RenderImage(const Camera& camera, const Sampler& sam
   // The iterations' wavelengths, each iteration's shared by its camera paths and photons: the
   // whole image's colour rests on them, and four random ones an iteration left a cast over the
   // whole image that changed with the seed (blue 14% low at 16 iterations). Each iteration's
-  // four lie one in each quarter of the range of the visible density's inverse, at u + j/4 with
-  // u uniform in [0, 1/4) (unbiased on its own); u is the base-2 radical inverse of the
-  // iteration (Sobol's first dimension), turned by one random offset, scaled into [0, 1/4): after 2^k iterations the
-  // 4 x 2^k wavelengths are stratified evenly over the range (sixteen after four iterations:
-  // a smooth spectrum's X, Y, Z within 2%).
+  // four lie one in each quarter of the range of the visible density's inverse, at u + j/4
+  // with u uniform in [0, 1/4) (unbiased on its own); u is the base-2 radical inverse of the
+  // iteration (Sobol's first dimension), turned by one random offset, scaled into [0, 1/4):
+  // after 2^k iterations the 4 x 2^k wavelengths are stratified evenly over the range (sixteen
+  // after four iterations: a smooth spectrum's X, Y, Z within 2%). The hero, which a path
+  // through dispersive glass keeps alone, is the one in quarter (iteration mod 4): over every
+  // four iterations it visits each quarter, stratified within it as u is (it was always the
+  // first quarter's: light dispersed by a prism came out blue). A dispersive lens, where every
+  // camera path keeps one wavelength, is refused (io/scene_loader.cpp: the iterations' unequal
+  // weights leave a cast over the whole image).
   Sampler lambda_sampler(sampler);
   lambda_sampler.StartPixelSample(Vec2i(0, -2), 0);
   const float lambda_offset = lambda_sampler.Get1D();
   for (int it = 0; it < iterations; ++it) {
     if (options.stop && options.stop->load(std::memory_order_relaxed)) break;
     float u_lambda = std::min(float(Sobol0(uint32_t(it))) * 0x1p-32f, kOneMinusEpsilon) + lambda_offset;
-    u_lambda = std::min((u_lambda - std::floor(u_lambda)) * 0.25f, 0.25f * kOneMinusEpsilon);
+    u_lambda = std::min((u_lambda - std::floor(u_lambda)) * 0.25f, 0.25f * kOneMinusEpsilon) + 0.25f * float(it % 4);
     const SampledWavelengths lambda_it = SampledWavelengths::SampleVisible(u_lambda);
 
     // 1. Camera pass, a row at a time.
