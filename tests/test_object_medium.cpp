@@ -99,6 +99,16 @@ TEST(ObjectMedium, ReadersAndModels) {
   ASSERT_TRUE(z.object_medium);
   EXPECT_NEAR(z.object_medium->Index(587.5618), 1.333, 1e-6);
   EXPECT_NEAR(ComputeParaxial(z).object_index, 1.333, 1e-6);
+  // A plane without a semi-diameter right after the water is no dummy: it parts water from
+  // air (it was dropped as one, as a plane in air would be).
+  const std::string port = "SURF 0\n  GLAS ___BLANK 1 0 1.333 55.8\n  DISZ INFINITY\n"
+                           "SURF 1\n  TYPE STANDARD\n  CURV 0\n  DISZ 2\n  DIAM 0\n" + zmx.substr(zmx.find("SURF 1\n  STOP"));
+  try {
+    ParseZemaxLens(port, "port.zmx", GlassCatalog::Default());
+    ADD_FAILURE() << "a water-air plane without a semi-diameter was dropped";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("port.zmx:4: surface 1 has no semi-diameter"), std::string::npos) << e.what();
+  }
   // Native: once only; the paraxial camera models refuse it (their nodal points would be
   // wrong).
   EXPECT_THROW(Parse(std::string("object_medium: n=1.333\n") + kDome), InputError);

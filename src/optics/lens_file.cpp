@@ -169,7 +169,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       if (!ParseFiniteNumber(f[next + 1]))
         throw MakeInputError(path, number, "'{}': a mirror line names no medium (light goes back into the one it came "
                              "from): mirror RADIUS THICKNESS SEMI_DIAMETER [options]", Printable(f[next + 1]));
-      s.medium = lens.surfaces.empty() ? nullptr : lens.surfaces.back().medium;
+      s.medium = lens.MediumBefore(lens.surfaces.size());
       --next;
     } else {
       s.medium = ParseMedium(f[next + 1], lens_glasses, path, number);

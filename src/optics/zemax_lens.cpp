@@ -244,7 +244,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
   for (size_t i = 1; i + 1 < surfs.size(); ++i) {
     const ZSurface& z = surfs[i];
     if (z.infinite_thickness) throw MakeInputError(path, z.line, "an infinite thickness inside the lens");
-    const bool in_air = (z.glass.empty() || z.glass == "AIR") && (lens.surfaces.empty() || !lens.surfaces.back().medium);
+    const bool in_air = (z.glass.empty() || z.glass == "AIR") && !lens.MediumBefore(lens.surfaces.size());
     if (z.diam == 0 && z.clear_aperture == 0 && z.obscuration == 0 && in_air && z.curv == 0 && z.type == "STANDARD" &&
         !z.stop) {
       // A dummy plane in air without a semi-diameter (Zemax writes 0 where it computed none):
@@ -272,7 +272,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
     if (z.glass == "MIRROR") {
       // Light goes back into the medium it came from (a back-surface mirror: into the glass).
       s.mirror = true;
-      s.medium = lens.surfaces.empty() ? nullptr : lens.surfaces.back().medium;
+      s.medium = lens.MediumBefore(lens.surfaces.size());
     } else if (!z.glass.empty() && z.glass != "AIR") {
       s.medium = SurfaceGlass(z, lens_glasses, path);
     }
@@ -318,7 +318,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
         iris.is_stop = true;
         iris.flat = true;
         iris.semi_diameter = s.semi_diameter;
-        iris.medium = lens.surfaces.empty() ? nullptr : lens.surfaces.back().medium;
+        iris.medium = lens.MediumBefore(lens.surfaces.size());
         lens.surfaces.push_back(iris);
         coat_lines.push_back(0);
         surface_lines.push_back(z.line);
