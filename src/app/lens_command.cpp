@@ -146,6 +146,10 @@ int RunInfo(const LensArgs& a) {
                               {"fov_diagonal_deg", fov.diagonal}};
   const AxialTransmittance transmittance = AxialTransmittanceOf(system, a.wavelength);
   j["axial_transmittance"] = transmittance.Total();
+  // A central obstruction's share of the on-axis cone (sines: an aplanatic lens's pupil area).
+  const double hidden = ObstructionRatio(system, a.wavelength);
+  const std::optional<double> hidden_from = ObstructionFNumber(system, a.wavelength);
+  j["obstruction_share"] = hidden * hidden;
   j["axial_surface_transmittance"] = transmittance.surfaces;
   j["axial_glass_transmittance"] = transmittance.glass;
   // Each coating and the surfaces (1-based rows) that carry it.
@@ -207,6 +211,9 @@ int RunInfo(const LensArgs& a) {
                 a.wavelength, 100 * transmittance.Total(), 100 * transmittance.surfaces, 100 * transmittance.glass);
   else
     std::printf("  on-axis transmittance at %.2f nm: no ray parallel to the axis gets through\n", a.wavelength);
+  if (hidden > 0 && hidden_from)
+    std::printf("  central obstruction: hides %.1f%% of the on-axis cone (the f-number's light, a T-stop effect); "
+                "stopped down to f/%.3g it hides all\n", 100 * hidden * hidden, *hidden_from);
   if (coatings.empty()) std::printf("  coatings: none (bare glass)\n");
   for (const auto& [c, rows] : coatings) {
     std::string list;

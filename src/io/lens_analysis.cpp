@@ -83,7 +83,8 @@ void WriteLensAnalysis(const LensSystem& lens, const std::string& directory) {
     return v ? nlohmann::ordered_json(*v * scale) : nlohmann::ordered_json(nullptr);
   };
   nlohmann::ordered_json json = {
-      {"name", rx.name}, {"efl_mm", p.efl}, {"bfl_mm", p.bfl}, {"fnumber", p.fnumber}, {"max_field_deg", max_field}};
+      {"name", rx.name}, {"efl_mm", p.efl}, {"bfl_mm", p.bfl}, {"fnumber", p.fnumber}, {"max_field_deg", max_field},
+      {"object_index", p.object_index}};
 
   SpotPlot(lens, fields3, &json).Write((fs::path(directory) / "spots.svg").string());
 
