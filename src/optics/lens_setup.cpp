@@ -36,18 +36,23 @@ void SetStop(LensSystem& lens, const StopRequest& stop) {
     }
     lens.SetStopSemiDiameter(*semi);
   }
-  // A central obstruction (a mirror lens's secondary) hides the whole cone once the stop is
-  // narrowed to its shadow: no light would reach the film.
-  if (lens.StopSemiDiameter() < full && !(RealFNumber(lens) < INFINITY)) {
-    const std::optional<double> limit = ObstructionFNumber(LensSystem(rx));
-    const std::string asked =
-        stop.diameter_mm > 0 ? fmt::format("a stop of {} mm", stop.diameter_mm) : fmt::format("f/{}", stop.fnumber);
-    const std::string why = limit ? fmt::format(": its central obstruction hides the whole cone from f/{:.3g} on (a "
-                                                "mirror lens's aperture is fixed; its filters or the exposure set the light)",
-                                                *limit)
-                                  : "";
-    throw InputError(fmt::format("{}: no light gets through {}{}", asked, rx.name, why));
-  }
+}
+
+// No light on the axis with the stop as set (`fnumber`: the lens's, infinite then): a central
+// obstruction (a mirror lens's secondary) hides the whole cone once the stop is narrowed to
+// its shadow, or rims and mirrors block every ray.
+void CheckLightGetsThrough(const LensSystem& lens, const StopRequest& stop, double fnumber) {
+  if (fnumber < INFINITY) return;
+  const LensPrescription& rx = lens.prescription();
+  const std::optional<double> limit = ObstructionFNumber(LensSystem(rx));
+  const std::string asked = stop.diameter_mm > 0 ? fmt::format("a stop of {} mm", stop.diameter_mm)
+                            : stop.fnumber > 0   ? fmt::format("f/{}", stop.fnumber)
+                                                 : std::string("wide open");
+  const std::string why = limit ? fmt::format(": its central obstruction hides the whole cone from f/{:.3g} on (a "
+                                              "mirror lens's aperture is fixed; its filters or the exposure set the light)",
+                                              *limit)
+                                : ": its rims, mirrors or obstruction block every ray";
+  throw InputError(fmt::format("{}: no light gets through {}{}", asked, rx.name, why));
 }
 
 // The plane in focus as a distance from the film. Given from the entrance pupil, it depends
@@ -75,6 +80,7 @@ LensSetup SetUpLens(LensPrescription prescription, const StopRequest& stop, cons
                                  "positive one)", lens.prescription().name, lens.paraxial().efl));
   SetStop(lens, stop);
   setup.fnumber = RealFNumber(lens);
+  CheckLightGetsThrough(lens, stop, setup.fnumber);
   lens.SetStopShape(stop.opening);
   if (!stop.opening.IsRound() && lens.StopIndex() >= 0 && lens.surface(lens.StopIndex()).mirror)
     spdlog::warn("lens {}: its stop is a mirror's rim (a mirror lens has no iris); the blades or mask shape it as an "

@@ -162,11 +162,12 @@ std::optional<FieldCurvature> FieldCurvatureAt(const LensSystem& lens, double fi
   if (!chief) return std::nullopt;
   ParaxialData p = lens.Paraxial(lambda_nm);
   double theta = field_deg * M_PI / 180, eps = 1e-4 * p.entrance_pupil_diameter;
+  // Rays next to the chief ray, through the lens without its stop's limit or a central
+  // obstruction (which would block them); set up once for the four rays.
+  LensSystem open = lens.WithoutObstructions();
+  open.SetStopSemiDiameter(1e30);
   auto trace = [&](double dx, double dy) -> std::optional<LensRay> {
     LensRay r{{dx, chief->o.y + dy / std::cos(theta), kStartZ}, chief->d};
-    // Rays next to the chief ray, which a central obstruction would block.
-    LensSystem open = lens.WithoutObstructions();
-    open.SetStopSemiDiameter(1e30);
     TraceResult t = TraceFromObject(open, r, lambda_nm);
     if (!t.ray) return std::nullopt;
     return t.ray;

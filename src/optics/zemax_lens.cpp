@@ -183,22 +183,17 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
     } else if (key == "CONI") {
       need(1);
       cur->coni = ParseFiniteNumber(f[0], path, number);
-    } else if (key == "CLAP") {  // CLAP rmin rmax: a circular aperture, which clips (DIAM does not in Zemax)
+    } else if (key == "CLAP" || key == "OBSC") {
+      // CLAP rmin rmax: a circular aperture, which clips (DIAM does not in Zemax); OBSC rmin
+      // rmax: a circular obscuration (a mirror lens's secondary). Annular ones are not traced.
       need(2);
+      const char* what = key == "CLAP" ? "aperture" : "obscuration";
       double rmin = ParseFiniteNumber(f[0], path, number), rmax = ParseFiniteNumber(f[1], path, number);
       if (rmin != 0)
-        throw MakeInputError(path, number, "CLAP {} {}: an annular aperture (inner radius above 0) is not supported", rmin,
-                             rmax);
-      if (!(rmax > 0)) throw MakeInputError(path, number, "CLAP: the aperture's radius must be above 0, got {}", rmax);
-      cur->clear_aperture = rmax;
-    } else if (key == "OBSC") {  // OBSC rmin rmax: a circular obscuration (a mirror lens's secondary)
-      need(2);
-      double rmin = ParseFiniteNumber(f[0], path, number), rmax = ParseFiniteNumber(f[1], path, number);
-      if (rmin != 0)
-        throw MakeInputError(path, number, "OBSC {} {}: an annular obscuration (inner radius above 0) is not supported", rmin,
-                             rmax);
-      if (!(rmax > 0)) throw MakeInputError(path, number, "OBSC: the obscuration's radius must be above 0, got {}", rmax);
-      cur->obscuration = rmax;
+        throw MakeInputError(path, number, "{} {} {}: an annular {} (inner radius above 0) is not supported", key, rmin,
+                             rmax, what);
+      if (!(rmax > 0)) throw MakeInputError(path, number, "{}: the {}'s radius must be above 0, got {}", key, what, rmax);
+      (key == "CLAP" ? cur->clear_aperture : cur->obscuration) = rmax;
     } else if (key == "STOP") {
       for (const ZSurface& z : surfs)
         if (z.stop)
