@@ -11,7 +11,8 @@
 # sample counts (docs/images/sampling-*.png), `readme-images.sh filter` the colour filter's
 # pair (docs/images/filter-yellow.png), `readme-images.sh mirror` the mirror lens's bokeh
 # (docs/images/lens-mirror-bokeh.png), `readme-images.sh underwater` the flat port's pair
-# (docs/images/lens-underwater.png).
+# (docs/images/lens-underwater.png), `readme-images.sh anamorphic` the anamorphic lens's
+# bokeh (docs/images/lens-anamorphic-bokeh.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/objektiv
@@ -104,6 +105,12 @@ mirror() {
   oiiotool "$tmp/mirror.png" "$tmp/mirror-tele.png" --mosaic:pad=6 2x1 -o "$out/lens-mirror-bokeh.png"
 }
 
+# The anamorphic's upright ovals, desqueezed to a 3:1 frame.
+anamorphic() {
+  render scenes/bokeh/bokeh-anamorphic.xml -D spp=256 -o "$tmp/anamorphic.exr"
+  cp "$tmp/anamorphic.png" "$out/lens-anamorphic-bokeh.png"
+}
+
 # The Cornell box through the Tessar in air and behind a flat port under water.
 underwater() {
   render scenes/cornell-box/cornell-box-underwater.xml -D spp=256 -D res=400 -D lens=tessar.brendel.100mm \
@@ -113,7 +120,7 @@ underwater() {
 }
 
 case "${1:-}" in
-  flare | caustics | bump | stereo | classic | media | sampling | filter | mirror | underwater)
+  flare | caustics | bump | stereo | classic | media | sampling | filter | mirror | underwater | anamorphic)
     "$1"
     echo "wrote $out/$1-*.png"
     exit 0
@@ -126,6 +133,7 @@ cp "$tmp/bokeh-f2.8.png" "$out/lens-bokeh.png"
 cp "$tmp/bokeh-open.png" "$out/lens-bokeh-wide-open.png"
 mirror
 underwater
+anamorphic
 
 render scenes/lens/distortion-chart.xml -D spp=64 -o "$tmp/dist-wide.exr"
 render scenes/lens/distortion-chart.xml -D spp=64 -D lens=telephoto.250mm -D distance=11.4 -o "$tmp/dist-tele.exr"

@@ -14,6 +14,7 @@
 #include "io/lens_ghosts.h"
 #include "io/lens_plot.h"
 #include "io/lens_psf.h"
+#include "optics/anamorphic.h"
 #include "optics/coating_library.h"
 #include "optics/dispersion.h"
 #include "optics/focusing.h"
@@ -42,6 +43,7 @@ struct LensArgs {
   double blade_curvature = 0, blade_rotation = 0;
   double pixel_um = 0;         // 0: a quarter of lambda N (550 nm for white light)
   bool json = false;
+  std::string section = "y";  // lens plot, lens analyze: the principal section (x: an anamorphic lens's horizontal)
 };
 
 // "36x24" -> (36, 24) mm.
@@ -144,6 +146,15 @@ int RunInfo(const LensArgs& a) {
                               {"fov_horizontal_deg", fov.horizontal},
                               {"fov_vertical_deg", fov.vertical},
                               {"fov_diagonal_deg", fov.diagonal}};
+  if (!std::isfinite(fov.diagonal)) j["fov_diagonal_deg"] = nullptr;
+  // An anamorphic lens: its x-z section's first-order data and the squeeze.
+  std::optional<Anamorphosis> anamorphic;
+  if (!lens.RotationallySymmetric()) {
+    anamorphic = ComputeAnamorphosis(lens, d, a.wavelength, system.StopSemiDiameter());
+    j["squeeze"] = anamorphic->squeeze;
+    j["efl_x_mm"] = anamorphic->x.efl;
+    j["bfl_x_mm"] = anamorphic->x.bfl;
+  }
   const AxialTransmittance transmittance = AxialTransmittanceOf(system, a.wavelength);
   j["axial_transmittance"] = transmittance.Total();
   // A central obstruction's share of the on-axis cone (sines: an aplanatic lens's pupil area).
@@ -204,8 +215,17 @@ int RunInfo(const LensArgs& a) {
   std::printf("  principal planes: front %.4f mm from the first vertex, back %.4f mm from the last\n",
               d.front_principal_plane, d.back_principal_plane);
   std::printf("  real back focus (smallest on-axis spot): %.4f mm\n", real_bfl);
-  std::printf("  field of view on %gx%g mm (real chief rays): %.2f x %.2f deg, %.2f deg diagonal\n", sw, sh,
-              fov.horizontal, fov.vertical, fov.diagonal);
+  if (anamorphic)
+    std::printf("  anamorphic: the paraxial data above are the y-z section's (vertical); the x-z section's (horizontal):\n"
+                "  EFL %.4f mm   BFL %.4f mm (its focus %.4f mm from the y-z one's): squeeze %.3fx, the scene is\n"
+                "  squeezed horizontally on the film (a scene's desqueeze=\"lens\" stretches the picture back)\n",
+                anamorphic->x.efl, anamorphic->x.bfl, anamorphic->focus_split, anamorphic->squeeze);
+  if (std::isfinite(fov.diagonal))
+    std::printf("  field of view on %gx%g mm (real chief rays): %.2f x %.2f deg, %.2f deg diagonal\n", sw, sh,
+                fov.horizontal, fov.vertical, fov.diagonal);
+  else
+    std::printf("  field of view on %gx%g mm (real chief rays in each section): %.2f x %.2f deg\n", sw, sh,
+                fov.horizontal, fov.vertical);
   if (transmittance.Total() > 0)
     std::printf("  on-axis transmittance at %.2f nm: %.1f%% (surfaces: reflections and mirrors %.1f%%, glass absorption %.1f%%)\n",
                 a.wavelength, 100 * transmittance.Total(), 100 * transmittance.surfaces, 100 * transmittance.glass);
@@ -227,8 +247,18 @@ int RunInfo(const LensArgs& a) {
   return 0;
 }
 
+// The lens in the principal section asked for: as it is for y (the vertical, the analyses'
+// own plane), its x-z section's equivalent for x (optics/anamorphic.h: the same rays in that
+// plane, at the same film). A rotationally symmetric lens is the same in both.
+LensSystem InSection(LensSystem lens, const std::string& section) {
+  if (section == "y") return lens;
+  if (lens.prescription().RotationallySymmetric())
+    spdlog::info("{} is rotationally symmetric: its x-z section is its y-z section", lens.prescription().name);
+  return XSectionSystem(lens);
+}
+
 int RunAnalyze(const LensArgs& a) {
-  WriteLensAnalysis(LoadImagingLens(a.lens, kLambdad), a.output);
+  WriteLensAnalysis(InSection(LoadImagingLens(a.lens, kLambdad), a.section), a.output);
   return 0;
 }
 
@@ -239,7 +269,7 @@ int RunPlot(const LensArgs& a) {
   } catch (const InputError& e) {
     throw CLI::ValidationError(fmt::format("the plot cannot be written: {}", e.what()));
   }
-  const LensSystem system = LoadImagingLens(a.lens, a.wavelength);
+  const LensSystem system = InSection(LoadImagingLens(a.lens, a.wavelength), a.section);
   std::vector<double> fields = a.fields.empty() ? DefaultFields(system, a.wavelength) : a.fields;
   PlotLensLayout(system, fields, a.wavelength).Write(a.output);
   return 0;
@@ -430,10 +460,13 @@ std::function<int()> AddLensCommand(CLI::App& app) {
       ->delimiter(',')
       ->check(CLI::Range(0.0, 89.0));
   plot->add_option("--wavelength", args->wavelength, "Wavelength in nm")->check(kFinite)->check(CLI::Range(300.0, 2500.0));
+  const char* section_help = "Principal section: y (vertical, default) or x (horizontal: an anamorphic lens's other one)";
+  plot->add_option("--section", args->section, section_help)->check(CLI::IsMember({"x", "y"}));
   CLI::App* analyze = lens->add_subcommand(
       "analyze", "Real-ray analysis: spot diagrams, distortion, field curvature, relative illumination, colour (SVG + JSON)");
   analyze->add_option("lens", args->lens, lens_help)->required();
   analyze->add_option("-o,--output", args->output, "Output directory")->required();
+  analyze->add_option("--section", args->section, section_help)->check(CLI::IsMember({"x", "y"}));
   CLI::App* psf = lens->add_subcommand("psf", "The stop's diffraction pattern (Fraunhofer PSF) as an EXR, with its first dark ring");
   psf->add_option("lens", args->lens, lens_help)->required();
   psf->add_option("-o,--output", args->output, "Output EXR file")->required();

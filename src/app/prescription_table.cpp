@@ -37,6 +37,7 @@ std::string PrescriptionTable(const LensPrescription& lens) {
     if (s.obscuration > 0) extra += fmt::format(" obscuration={:g}", s.obscuration);
     if (s.conic != 0) extra += fmt::format(" k={:g}", s.conic);
     if (s.HasAsphericTerms()) extra += " aspheric";
+    if (s.toroidal) extra += s.curvature_x == 0 ? " rx=inf (cylinder)" : fmt::format(" rx={:.4f}", 1 / s.curvature_x);
     out += fmt::format("  {:>3}  {:>11}  {:>10.4f}  {:<{}} {:>8} {:>6}  {:>10.4f}{}\n", i + 1, radius, s.thickness,
                        MediumLabel(s), width, nd, vd, s.semi_diameter, extra);
   }
@@ -56,6 +57,8 @@ nlohmann::ordered_json PrescriptionJson(const LensPrescription& lens) {
       else r["mirror_reflectance"] = s.mirror_reflectance;
     }
     if (s.obscuration > 0) r["obscuration_mm"] = s.obscuration;
+    if (s.toroidal)  // the x-z section's radius (null: flat in x)
+      r["rx_mm"] = s.curvature_x == 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(1 / s.curvature_x);
     r["thickness_mm"] = s.thickness;
     r["medium"] = MediumLabel(s);
     if (s.medium) {

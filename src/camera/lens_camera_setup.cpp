@@ -71,6 +71,9 @@ std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int
       throw InputError(fmt::format("lens_model {}: the paraxial models need air in front of the lens; {} looks into "
                                    "another medium (its object_medium): use lens_model real",
                                    model, spec.lens.name));
+    if (!spec.lens.RotationallySymmetric())
+      throw InputError(fmt::format("lens_model {}: the paraxial models are rotationally symmetric; {} is anamorphic "
+                                   "(toroidal surfaces): use lens_model real", model, spec.lens.name));
     for (const LensSurface& s : spec.lens.surfaces)
       if (s.obscuration > 0)
         throw InputError(fmt::format("lens_model {}: the paraxial models have no central obstruction, which {} has: "

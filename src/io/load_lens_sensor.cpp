@@ -4,10 +4,12 @@
 #include <filesystem>
 
 #include "base/log.h"
+#include "base/text_file.h"
 #include "camera/lens_camera_setup.h"
 #include "camera/realistic_camera.h"
 #include "io/image_io.h"
 #include "io/loader_context.h"
+#include "optics/anamorphic.h"
 #include "optics/coating_library.h"
 #include "optics/paraxial.h"
 #include "optics/lens_file.h"
@@ -72,8 +74,10 @@ void RecoatAsAsked(const Properties& p, LensPrescription& lens) {
   }
 }
 
-// The sensor's size; the image (its pixel aspect) takes the largest centred rectangle of it.
-Vec2d SensorSize(const Properties& p, int width, int height) {
+// The sensor's size; the image takes the largest centred rectangle of it with the image's
+// aspect, or where it is desqueezed, with that aspect over the squeeze (its pixels are then
+// `squeeze` times taller than wide on the film).
+Vec2d SensorSize(const Properties& p, int width, int height, double squeeze) {
   double w = 36, h = 24;
   if (p.Has("sensor")) {
     if (p.Has("sensor_width") || p.Has("sensor_height"))
@@ -92,8 +96,31 @@ Vec2d SensorSize(const Properties& p, int width, int height) {
     w = p.FloatIn("sensor_width", 36, 1e-3, 1e4);
     h = p.Has("sensor_height") ? p.FloatIn("sensor_height", 24, 1e-3, 1e4) : p.Has("sensor_width") ? w * height / width : 24;
   }
-  double aspect = double(width) / height;
+  double aspect = double(width) / height / squeeze;
   return w / h > aspect ? Vec2d(h * aspect, h) : Vec2d(w, w / aspect);
+}
+
+// How much the picture is stretched horizontally (an anamorphic lens's squeeze undone): the
+// number given, or "lens" for the lens's own squeeze (optics/anamorphic.h); 1 where not given.
+double Desqueeze(const Properties& p, const LensPrescription& lens) {
+  if (!p.Has("desqueeze")) return 1;
+  const std::string value = p.String("desqueeze");
+  if (value != "lens") {
+    char* end = nullptr;
+    const double factor = std::strtod(value.c_str(), &end);
+    if (value.empty() || end != value.c_str() + value.size() || !(factor >= 0.1 && factor <= 10))
+      throw ErrorAt(p.LocOf("desqueeze"), "desqueeze '{}': a factor from 0.1 to 10, or \"lens\" for the lens's squeeze",
+                    Printable(value));
+    return factor;
+  }
+  if (lens.RotationallySymmetric())
+    throw ErrorAt(p.LocOf("desqueeze"), "desqueeze=\"lens\": {} is not anamorphic (it has no toroidal surface); give a "
+                  "number to stretch the picture anyway", lens.name);
+  const double squeeze = ComputeAnamorphosis(lens, ComputeParaxial(lens)).squeeze;
+  if (!(squeeze >= 0.1 && squeeze <= 10))
+    throw ErrorAt(p.LocOf("desqueeze"), "desqueeze=\"lens\": the squeeze of {} is {:.4g}, outside 0.1 to 10", lens.name, squeeze);
+  spdlog::info("{}:{}: desqueezed by the lens's squeeze, {:.4f}", p.LocOf("desqueeze").file, p.LocOf("desqueeze").line, squeeze);
+  return squeeze;
 }
 
 // A lens shift that moves the film's corners past the lens's image circle leaves them black
@@ -166,7 +193,7 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b
   }
   spec.focus_distance = p.FloatIn("focus_distance", INFINITY, 1e-6, INFINITY);
   LensCameraSettings& s = spec.settings;
-  Vec2d sensor = SensorSize(p, b.width, b.height);
+  Vec2d sensor = SensorSize(p, b.width, b.height, Desqueeze(p, spec.lens));
   s.sensor_width = sensor.x, s.sensor_height = sensor.y;
   s.shift = Vec2d(p.FloatIn("shift_x", 0, -1e4, 1e4), p.FloatIn("shift_y", 0, -1e4, 1e4));
   s.metres_per_unit = p.FloatIn("metres_per_unit", 1, 1e-12, 1e12);
@@ -244,6 +271,7 @@ SensorRegistry::PluginType RealisticSensorPlugin() {
            {"sensor", PropType::kString},
            {"sensor_width", PropType::kFloat},
            {"sensor_height", PropType::kFloat},
+           {"desqueeze", PropType::kString},
            {"shift_x", PropType::kFloat},
            {"shift_y", PropType::kFloat},
            {"metres_per_unit", PropType::kFloat},

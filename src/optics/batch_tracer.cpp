@@ -73,8 +73,15 @@ BatchLensTracer::BatchLensTracer(const LensSystem& lens_system)
     f.obscuration2 = float(s.obscuration * s.obscuration);
     f.mirror = s.mirror;
     f.reflectance = float(s.mirror_reflectance);
-    f.plane = f.c == 0;
-    f.aspheric = s.HasAsphericTerms();
+    f.cx = float(s.curvature_x);
+    // A cylinder curved in x (a flat profile) or in y (flat in x, a conic profile).
+    const bool profile_plain = !s.HasAsphericTerms();
+    f.cylinder = s.toroidal && profile_plain && ((s.Curvature() == 0) != (s.curvature_x == 0));
+    if (f.cylinder && s.Curvature() == 0) f.c = f.cx, f.k1 = 1, f.my = 0;
+    else if (f.cylinder) f.mx = 0;
+    f.toroid = s.toroidal && !f.cylinder;
+    f.plane = f.c == 0 && !s.toroidal;
+    f.aspheric = s.HasAsphericTerms() && !s.toroidal;
     f.is_stop = s.is_stop;
     f.a2 = float(s.a2);
     for (int k = 0; k < 7; ++k) f.a[k] = float(s.aspheric[k]);
@@ -104,7 +111,7 @@ namespace {
 
 // Per-surface constants of the kernel, and the tables of the media on both sides.
 struct Step {
-  float z, c, k1, semi2, obscuration2, reflectance, a2, a[7];
+  float z, c, k1, semi2, obscuration2, reflectance, cx, mx, my, a2, a[7];
   // Per ray (contiguous, one value per ray of the batch): the media's indices on both sides
   // and the absorption coefficient of the medium just crossed (air: ones and zeros).
   const float *n_in, *n_out, *alpha_in;
@@ -148,9 +155,41 @@ void ApplyCoating(const float* __restrict table, RayBatch& b, bool mirror) {
   }
 }
 
+// A toroid's sag at (x, y) and its gradient (LensSurface::SagAt in single precision): the
+// profile z_y(|y|), then z = z_y + x^2 e / (1 + q), e = c_x / (1 - c_x z_y) (1 / the x-z
+// circle's radius), q = sqrt(1 - x^2 e^2); dz/dx = x e / q, dz/dy = z_y' / q. `ok` is cleared
+// outside the surface (where the square roots' arguments were clamped).
+inline void ToroidSag(const Step& s, float x, float y, float& z, float& gx, float& gy, bool& ok) {
+  const float y2 = y * y, ay = std::abs(y);
+  const float arg = 1 - s.k1 * s.c * s.c * y2;
+  ok &= arg > 0;
+  const float root = std::sqrt(std::max(arg, 1e-12f));
+  float zy = s.c * y2 / (1 + root) + s.a2 * y2, slope = s.c * ay / root + 2 * s.a2 * ay;
+  float yp = y2 * y2, yd = y2 * ay;
+#pragma GCC unroll 7
+  for (int a = 0; a < 7; ++a) {
+    zy += s.a[a] * yp;
+    slope += float(4 + 2 * a) * s.a[a] * yd;
+    yp *= y2;
+    yd *= y2;
+  }
+  const float u = 1 - s.cx * zy;
+  ok &= u > 0;
+  const float e = s.cx / std::max(u, 1e-12f);
+  const float q2 = 1 - x * x * e * e;
+  ok &= q2 > 0;
+  const float q = std::sqrt(std::max(q2, 1e-12f));
+  z = zy + x * x * e / (1 + q);
+  gx = x * e / q;
+  gy = (y < 0 ? -slope : slope) / q;
+}
+
 // kRefract: an interface between two media; kMirror: a mirror (reflects); neither: the ray
 // only meets the surface (a stop or a plane between equal media), which may clip it.
-template <bool kPlane, bool kAspheric, bool kRefract, bool kMirror, bool kTransmission, bool kCoated>
+// kToroid: a toroid (kPlane and kAspheric false), met by Newton's method from the vertex plane;
+// a cylinder is the conic's kernel with one coordinate's terms masked out (Step::mx, my).
+template <bool kPlane, bool kAspheric, bool kToroid, bool kCylinder, bool kRefract, bool kMirror, bool kTransmission,
+          bool kCoated>
 void StepAll(const Step& s, RayBatch& b) {
   const size_t n = b.Size();
   float* __restrict ox = b.ox.data();
@@ -172,13 +211,27 @@ void StepAll(const Step& s, RayBatch& b) {
     const float dx = dxs[j], dy = dys[j], dz = dzs[j];
     bool ok = alive[j] != 0;
     float t;
-    if constexpr (kPlane) {
+    [[maybe_unused]] float tgx = 0, tgy = 0;  // a toroid's gradient at the crossing
+    if constexpr (kToroid) {
+      t = -z0 / dz;
+      float z, gx, gy;
+#pragma GCC unroll 8
+      for (int it = 0; it < 8; ++it) {
+        bool inside = true;
+        ToroidSag(s, x0 + t * dx, y0 + t * dy, z, gx, gy, inside);
+        t -= (z0 + t * dz - z) / (dz - gx * dx - gy * dy);
+      }
+      // The last step's residual decides: the crossing must be on the surface.
+      ToroidSag(s, x0 + t * dx, y0 + t * dy, z, tgx, tgy, ok);
+      ok &= std::abs(z0 + t * dz - z) <= 1e-4f * (1 + std::abs(z));
+    } else if constexpr (kPlane) {
       t = -z0 / dz;
     } else {
-      // The conic through the vertex; C / q is the root on the vertex's sheet.
-      float A = s.c * (dx * dx + dy * dy) + s.k1 * s.c * dz * dz;
-      float B = 2 * (s.c * (x0 * dx + y0 * dy) + s.k1 * s.c * z0 * dz - dz);
-      float C = s.c * (x0 * x0 + y0 * y0) + s.k1 * s.c * z0 * z0 - 2 * z0;
+      // The conic through the vertex; C / q is the root on the vertex's sheet. (mx, my: 1 but
+      // for a cylinder.)
+      float A = s.c * (s.mx * dx * dx + s.my * dy * dy) + s.k1 * s.c * dz * dz;
+      float B = 2 * (s.c * (s.mx * x0 * dx + s.my * y0 * dy) + s.k1 * s.c * z0 * dz - dz);
+      float C = s.c * (s.mx * x0 * x0 + s.my * y0 * y0) + s.k1 * s.c * z0 * z0 - 2 * z0;
       float disc = B * B - 4 * A * C;
       ok &= disc >= 0;
       float root = std::sqrt(std::max(disc, 0.f));
@@ -219,19 +272,27 @@ void StepAll(const Step& s, RayBatch& b) {
     ox[j] = px, oy[j] = py, oz[j] = pz + s.z;
     if constexpr (kRefract || kMirror) {
       // Normal from the sag's slope (unit, toward +z), turned to face the incoming ray.
-      float r = std::sqrt(r2);
-      float slope = s.c * r / std::sqrt(std::max(1 - s.k1 * s.c * s.c * r2, 1e-12f)) + 2 * s.a2 * r;
-      if constexpr (kAspheric) {
-        float rd = r2 * r;
+      float nx, ny, nz = 1;
+      if constexpr (kToroid) {
+        nx = -tgx, ny = -tgy;
+      } else if constexpr (kCylinder) {
+        // The implicit form's gradient: (-c mx x, -c my y, 1 - k1 c z).
+        nx = -s.c * s.mx * px, ny = -s.c * s.my * py, nz = 1 - s.k1 * s.c * pz;
+      } else {
+        float r = std::sqrt(r2);
+        float slope = s.c * r / std::sqrt(std::max(1 - s.k1 * s.c * s.c * r2, 1e-12f)) + 2 * s.a2 * r;
+        if constexpr (kAspheric) {
+          float rd = r2 * r;
 #pragma GCC unroll 7
-        for (int a = 0; a < 7; ++a) {
-          slope += float(4 + 2 * a) * s.a[a] * rd;
-          rd *= r2;
+          for (int a = 0; a < 7; ++a) {
+            slope += float(4 + 2 * a) * s.a[a] * rd;
+            rd *= r2;
+          }
         }
+        float inv_r = 1 / std::max(r, 1e-30f);
+        nx = -slope * px * inv_r, ny = -slope * py * inv_r;
       }
-      float inv_r = 1 / std::max(r, 1e-30f);
-      float nx = -slope * px * inv_r, ny = -slope * py * inv_r, nz = 1;
-      float inv = 1 / std::sqrt(nx * nx + ny * ny + 1);
+      float inv = 1 / std::sqrt(nx * nx + ny * ny + nz * nz);
       nx *= inv, ny *= inv, nz *= inv;
       float cos_i = -(nx * dx + ny * dy + nz * dz);
       float flip = cos_i < 0 ? -1.f : 1.f;
@@ -261,19 +322,19 @@ void StepAll(const Step& s, RayBatch& b) {
   }
 }
 
-template <bool kPlane, bool kAspheric, bool kRefract, bool kMirror>
+template <bool kPlane, bool kAspheric, bool kToroid, bool kCylinder, bool kRefract, bool kMirror>
 void StepAll(const Step& s, bool transmission, RayBatch& b) {
-  if (!transmission) StepAll<kPlane, kAspheric, kRefract, kMirror, false, false>(s, b);
-  else if ((kRefract || kMirror) && s.coating) StepAll<kPlane, kAspheric, kRefract, kMirror, true, true>(s, b);
-  else StepAll<kPlane, kAspheric, kRefract, kMirror, true, false>(s, b);
+  if (!transmission) StepAll<kPlane, kAspheric, kToroid, kCylinder, kRefract, kMirror, false, false>(s, b);
+  else if ((kRefract || kMirror) && s.coating) StepAll<kPlane, kAspheric, kToroid, kCylinder, kRefract, kMirror, true, true>(s, b);
+  else StepAll<kPlane, kAspheric, kToroid, kCylinder, kRefract, kMirror, true, false>(s, b);
 }
 
 // The kernel for a surface's shape and what it does to the ray.
-template <bool kPlane, bool kAspheric>
+template <bool kPlane, bool kAspheric, bool kToroid = false, bool kCylinder = false>
 void StepShape(const Step& s, bool refract, bool mirror, bool transmission, RayBatch& b) {
-  if (mirror) StepAll<kPlane, kAspheric, false, true>(s, transmission, b);
-  else if (refract) StepAll<kPlane, kAspheric, true, false>(s, transmission, b);
-  else StepAll<kPlane, kAspheric, false, false>(s, transmission, b);
+  if (mirror) StepAll<kPlane, kAspheric, kToroid, kCylinder, false, true>(s, transmission, b);
+  else if (refract) StepAll<kPlane, kAspheric, kToroid, kCylinder, true, false>(s, transmission, b);
+  else StepAll<kPlane, kAspheric, kToroid, kCylinder, false, false>(s, transmission, b);
 }
 
 }  // namespace
@@ -316,14 +377,16 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
     // Air is medium 0 (index one, no absorption); the ray starts in air (no absorption before
     // the first surface).
     const bool absorb = k > 0;
-    Step st{sf.z, sf.c, sf.k1, sf.semi2, sf.obscuration2, sf.reflectance, sf.a2, {},
+    Step st{sf.z, sf.c, sf.k1, sf.semi2, sf.obscuration2, sf.reflectance, sf.cx, sf.mx, sf.my, sf.a2, {},
             rays.media_index.data() + (m_in + 1) * count,
             rays.media_index.data() + (m_out + 1) * count,
             rays.media_alpha.data() + (absorb && absorbing ? m_in + 1 : 0) * count,
             sf.coating < 0 ? nullptr : coating_tables_[2 * sf.coating + (from_film ? 1 : 0)].data()};
     std::copy(sf.a, sf.a + 7, st.a);
     const bool refract = m_in != m_out && !sf.mirror;  // the stop too, where it parts two media
-    if (sf.plane) StepShape<true, false>(st, refract, sf.mirror, transmission, rays);
+    if (sf.toroid) StepShape<false, false, true>(st, refract, sf.mirror, transmission, rays);
+    else if (sf.cylinder) StepShape<false, false, false, true>(st, refract, sf.mirror, transmission, rays);
+    else if (sf.plane) StepShape<true, false>(st, refract, sf.mirror, transmission, rays);
     else if (sf.aspheric) StepShape<false, true>(st, refract, sf.mirror, transmission, rays);
     else StepShape<false, false>(st, refract, sf.mirror, transmission, rays);
     if (coated && (refract || sf.mirror) && st.coating) ApplyCoating(st.coating, rays, sf.mirror);

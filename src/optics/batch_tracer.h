@@ -63,7 +63,11 @@ class BatchLensTracer {
   struct Surface {
     float z, c, k1, semi2;        // vertex z, curvature, 1 + conic, semi-diameter squared
     float obscuration2;           // the central obstruction's radius squared (0: none)
-    bool plane, aspheric, is_stop, mirror;
+    float cx;                     // a toroid's x-z curvature (LensSurface::curvature_x)
+    // A cylinder (a toroid flat in one section, its other a conic without aspheric terms) is
+    // met in closed form: the conic's equation with x's (mx 0) or y's (my 0) terms left out.
+    float mx = 1, my = 1;
+    bool plane, aspheric, toroid, cylinder, is_stop, mirror;
     float reflectance;            // a mirror's
     float a2, a[7];
     int medium_after;            // glass index (-1: air); its tables are at medium_after + 1

@@ -12,7 +12,9 @@ FrontPoint SampleFrontElement(const LensSystem& lens, Vec2d u) {
   const double rho = s.semi_diameter * std::sqrt(u.x), phi = 2 * M_PI * u.y;
   const double x = rho * std::cos(phi), y = rho * std::sin(phi);
   FrontPoint f;
-  f.p = {x, y, lens.VertexZ(0) + s.Sag(rho)};
+  double sag = 0;
+  s.SagAt(x, y, sag);  // inside the clear disc the surface is whole (CheckReachable)
+  f.p = {x, y, lens.VertexZ(0) + sag};
   f.normal = SurfaceNormal(s, f.p);
   return f;
 }

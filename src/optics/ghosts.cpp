@@ -43,7 +43,11 @@ class BundleTracer {
                const BundleOptions& options = {})
       : lens_(lens), path_(path), source_(source), options_(options), lambda_(lambda_nm) {
     const LensSurface& front = lens.surface(0);
-    const double rim_z = lens.VertexZ(0) + front.Sag(front.semi_diameter);
+    // The rim's depth (a toroid's differs along x and y: the deeper one).
+    double sag_x = 0, sag_y = 0;
+    front.SagAt(front.semi_diameter, 0, sag_x);
+    front.SagAt(0, front.semi_diameter, sag_y);
+    const double rim_z = lens.VertexZ(0) + (std::abs(sag_x) > std::abs(sag_y) ? sag_x : sag_y);
     start_z_ = std::min(lens.VertexZ(0), rim_z) - 1;
     // Oblique light reaches the front element displaced sideways from where it crosses the
     // start plane: the square is centred where the light toward the element's middle depth

@@ -186,6 +186,13 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       keys.push_back(key);
       if (key == "k") {
         s.conic = ParseFiniteNumber(value, path, number);
+      } else if (key == "rx") {  // a toroid: its x-z section's radius (inf: a cylinder curved in y)
+        s.toroidal = true;
+        if (value != "inf") {
+          const double rx = ParseFiniteNumber(value, path, number);
+          if (rx == 0) throw MakeInputError(path, number, "rx=0: write rx=inf for a section flat in x");
+          s.curvature_x = 1 / rx;
+        }
       } else if (key == "obscuration") {  // a central obstruction's radius
         s.obscuration = ParseFiniteNumber(value, path, number);
         if (!(s.obscuration > 0 && s.obscuration < s.semi_diameter))
@@ -218,7 +225,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
         s.aspheric[(*order - 4) / 2] = ParseFiniteNumber(value, path, number);
       } else {
         throw MakeInputError(path, number, "unknown option '{}' ({})", key,
-                             s.mirror ? "k, a4..a16, obscuration, reflectance, stop" : "k, a4..a16, coating, obscuration");
+                             s.mirror ? "k, a4..a16, rx, obscuration, reflectance, stop" : "k, a4..a16, rx, coating, obscuration");
       }
     }
     CheckReachable(s, path, number);

@@ -91,12 +91,60 @@ double LensSurface::SagSlope(double r) const {
   return dz;
 }
 
+bool LensSurface::SagAt(double x, double y, double& z, double* gx, double* gy) const {
+  const double c = Curvature();
+  if (!toroidal) {
+    const double r = std::sqrt(x * x + y * y);
+    if (c != 0 && (1 + conic) * c * c * r * r > 1) return false;
+    z = Sag(r);
+    if (gx) {
+      const double slope = r > 0 ? SagSlope(r) / r : 0;
+      *gx = slope * x, *gy = slope * y;
+    }
+    return true;
+  }
+  // The profile z_y(y), then the circle of radius u = 1 / curvature_x - z_y about the axis of
+  // rotation: z = z_y + x^2 / (u (1 + q)), q = sqrt(1 - x^2 / u^2) (the sag of that circle,
+  // written without the cancellation of R - sqrt(R^2 - x^2)).
+  const double ay = std::abs(y);
+  if (c != 0 && (1 + conic) * c * c * ay * ay > 1) return false;
+  const double zy = Sag(ay), dzy = std::copysign(SagSlope(ay), y);
+  if (curvature_x == 0) {
+    z = zy;
+    if (gx) *gx = 0, *gy = dzy;
+    return true;
+  }
+  const double R = 1 / curvature_x, u = R - zy;
+  if (!(u * R > 0)) return false;  // the profile crossed the axis of rotation
+  const double q2 = 1 - (x / u) * (x / u);
+  if (!(q2 > 0)) return false;
+  const double q = std::sqrt(q2);
+  z = zy + x * x / (u * (1 + q));
+  if (gx) *gx = x / (u * q), *gy = dzy / q;
+  return true;
+}
+
+bool LensPrescription::RotationallySymmetric() const {
+  return std::none_of(surfaces.begin(), surfaces.end(), [](const LensSurface& s) { return s.toroidal; });
+}
+
 void CheckReachable(const LensSurface& s, const std::string& path, int line) {
   double c = s.Curvature();
-  if (c == 0 || s.conic <= -1) return;
-  double limit = 1 / (std::abs(c) * std::sqrt(1 + s.conic));
-  if (s.semi_diameter > limit)
-    throw MakeInputError(path, line, "semi-diameter {} is larger than the surface can reach ({:.4g})", s.semi_diameter, limit);
+  if (c != 0 && s.conic > -1) {
+    double limit = 1 / (std::abs(c) * std::sqrt(1 + s.conic));
+    if (s.semi_diameter > limit)
+      throw MakeInputError(path, line, "semi-diameter {} is larger than the surface can reach ({:.4g})", s.semi_diameter, limit);
+  }
+  if (!s.toroidal || s.curvature_x == 0) return;
+  // A toroid must be whole over its clear disc: the circle of x-z section at height y (radius
+  // 1 / curvature_x less the profile's sag there) must reach the disc's edge, x^2 + y^2 = semi^2.
+  double z;
+  for (int k = 0; k <= 32; ++k) {
+    const double y = s.semi_diameter * k / 32, x = std::sqrt(std::max(s.semi_diameter * s.semi_diameter - y * y, 0.0));
+    if (!s.SagAt(x, y, z))
+      throw MakeInputError(path, line, "semi-diameter {} is larger than the toroid can reach (x radius {:.4g})",
+                           s.semi_diameter, 1 / s.curvature_x);
+  }
 }
 
 std::optional<std::pair<size_t, std::string>> FirstCoatingMismatch(const LensPrescription& lens) {
@@ -124,6 +172,7 @@ LensPrescription LensPrescription::Scaled(double factor) const {
     s.semi_diameter *= factor;
     s.obscuration *= factor;
     s.a2 /= factor;
+    s.curvature_x /= factor;
     double scale = factor * factor * factor;  // 2k - 1 = 3 for a4
     for (double& a : s.aspheric) {
       a /= scale;

@@ -34,6 +34,12 @@ struct LensSurface {
   double conic = 0;           // k: 0 sphere, -1 paraboloid
   std::array<double, 7> aspheric{};  // even aspheric coefficients a4, a6, ..., a16
   double a2 = 0;              // r^2 aspheric term (Zemax EVENASPH PARM 1); adds 2 a2 to the paraxial curvature
+  // A toroidal surface (a cylinder where one section is flat): the y-z profile that the radius,
+  // conic and aspheric terms give, turned about an axis parallel to y that crosses the axis
+  // 1 / curvature_x behind the vertex (Zemax TOROIDAL, its radius of rotation). Its x-z
+  // section is a circle of curvature curvature_x; 0: flat in x (a cylinder curved in y only).
+  bool toroidal = false;
+  double curvature_x = 0;
   // Anti-reflection coating (optics/coating.h); null: bare. It lies on the surface's glass: on
   // the side of the glass where the other side is air, on the film side between two glasses.
   std::shared_ptr<const Coating> coating;
@@ -53,9 +59,15 @@ struct LensSurface {
     return false;
   }
   double IndexAfter(double lambda_nm) const { return medium ? medium->Index(lambda_nm) : 1.0; }
-  // Sag z(r) relative to the vertex (conic plus even aspheric terms), and dz/dr.
+  // Sag z(r) relative to the vertex (conic plus even aspheric terms), and dz/dr: the surface's
+  // own where it is rotationally symmetric, a toroid's y-z profile.
   double Sag(double r) const;
   double SagSlope(double r) const;
+  // Sag z(x, y) of any surface and, where asked, its gradient (dz/dx, dz/dy); false outside
+  // the surface (beyond where a conic turns over, or a toroid's profile reaches its axis).
+  bool SagAt(double x, double y, double& z, double* gx = nullptr, double* gy = nullptr) const;
+  // Paraxial curvature of the x-z section (a toroid's curvature_x, else ParaxialCurvature()).
+  double ParaxialCurvatureX() const { return toroidal ? curvature_x : ParaxialCurvature(); }
 };
 
 struct LensPrescription {
@@ -82,6 +94,9 @@ struct LensPrescription {
   // thicknesses, negative ones (after a mirror) included.
   double TotalTrack() const;
   int MirrorCount() const;
+  // Whether every surface is a figure of revolution about the axis (no toroid): the pupil
+  // bounds, the thin- and thick-lens models and the radial analyses rely on it.
+  bool RotationallySymmetric() const;
   // +1 where light leaves surface i toward the film (+z), -1 toward the object (after an odd
   // number of mirrors up to and including i).
   int DirectionAfter(size_t i) const;

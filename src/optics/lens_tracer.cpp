@@ -24,20 +24,39 @@ double FresnelReflectance(double n1, double n2, double cos_i) {
 }
 
 Vec3d SurfaceNormal(const LensSurface& s, const Vec3d& p) {
-  double r = std::sqrt(p.x * p.x + p.y * p.y);
-  if (r == 0) return {0, 0, 1};
-  double slope = s.SagSlope(r);
-  Vec3d n(-slope * p.x / r, -slope * p.y / r, 1);
+  double z, gx = 0, gy = 0;
+  if (!s.SagAt(p.x, p.y, z, &gx, &gy)) gx = gy = 0;
+  Vec3d n(-gx, -gy, 1);
   return n / Length(n);
 }
 
 namespace {
+
+// Where the ray (o relative to the vertex) meets a toroid: Newton on f(t) = z(t) - sag(x(t),
+// y(t)) from the vertex plane; a step that leaves the surface's domain is halved.
+std::optional<double> IntersectToroid(const LensSurface& s, const Vec3d& o, const Vec3d& d) {
+  if (d.z == 0) return std::nullopt;
+  double t = -o.z / d.z;
+  for (int it = 0; it < 60; ++it) {
+    const Vec3d p = o + d * t;
+    double z, gx, gy;
+    if (!s.SagAt(p.x, p.y, z, &gx, &gy)) return std::nullopt;
+    const double df = d.z - gx * d.x - gy * d.y;
+    if (df == 0) return std::nullopt;
+    double step = (p.z - z) / df;
+    for (int halve = 0; halve < 30 && !s.SagAt(o.x + d.x * (t - step), o.y + d.y * (t - step), z); ++halve) step *= 0.5;
+    t -= step;
+    if (std::abs(step) < 1e-13 * (1 + std::abs(t))) return t;
+  }
+  return std::nullopt;
+}
 
 // Where the ray (lens space) meets surface i: the parameter t, or nothing.
 std::optional<double> Intersect(const LensSystem& lens, int i, const LensRay& ray) {
   const LensSurface& s = lens.surface(i);
   Vec3d o = ray.o - Vec3d(0, 0, lens.VertexZ(i));  // relative to the vertex
   const Vec3d& d = ray.d;
+  if (s.toroidal) return IntersectToroid(s, o, d);
   double c = s.Curvature();
   bool aspheric = s.HasAsphericTerms();
   double t;
@@ -114,7 +133,7 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
   // implicit form c (x^2 + y^2) + (1 + k) c z^2 - 2 z = 0 at the point (no square root of
   // the sag's slope), for an asphere from the slope.
   const double curvature = s.Curvature();
-  if (s.HasAsphericTerms()) {
+  if (s.HasAsphericTerms() || s.toroidal) {
     c.normal = SurfaceNormal(s, c.p);
   } else {
     const Vec3d g(-curvature * c.p.x, -curvature * c.p.y,

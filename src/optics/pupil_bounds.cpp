@@ -53,7 +53,7 @@ class PupilBounds::Builder {
     // the stop there, trimmed slowly by vignetting, so the region changes little across an
     // annulus (on the rear vertex plane it slides with the film position).
     ParaxialData p = lens_system.Paraxial(lambdas_.front());
-    t_.rear_z_ = lens_system.VertexZ(last) + p.exit_pupil_position;
+    t_.rear_z_ = PupilPlaneZ(lens_system, lambdas_.front());
     // The window searched: wide enough for the rear element and the exit pupil; the edge's
     // tolerance a thousandth of the region's size (its first estimate: the exit pupil).
     window_ = std::max(lens.surfaces[last].semi_diameter, 1.5 * p.exit_pupil_diameter) +
@@ -210,7 +210,7 @@ class PupilBounds::Builder {
               return;
             }
             out.leaves.insert(out.leaves.end(), size_t(1) << (max_depth - depth), uint32_t(out.regions.size()));
-            out.regions.push_back(MakeRegion(std::move(both)));
+            out.regions.push_back(Region(std::move(both)));
           };
       auto end_at = [&](int k) {
         return MakeEnd(nodes_[k][m0], nodes_[k][m1], mm < 0 ? nullptr : &nodes_[k][mm], margin);
@@ -242,28 +242,6 @@ class PupilBounds::Builder {
   std::vector<uint8_t> with_mid_;             // per bin
 };
 
-PupilBounds::Region PupilBounds::MakeRegion(ConvexPolygon hull) {
-  Region region;
-  if (!(hull.area > 0)) return region;
-  ConvexPolygon& poly = region.poly;
-  poly = std::move(hull);
-  // Fan triangles from vertex 0, chosen in proportion to their area.
-  std::vector<double>& cdf = region.cdf;
-  double acc = 0;
-  cdf.push_back(0);
-  for (size_t t = 1; t + 1 < poly.vertices.size(); ++t) {
-    acc += 0.5 * Cross(poly.vertices[0], poly.vertices[t], poly.vertices[t + 1]);
-    cdf.push_back(acc);
-  }
-  for (double& c : cdf) c /= acc;
-  // Guide table: for u in [g / G, (g + 1) / G), the triangles before guide[g] are too low.
-  region.guide.resize(64);
-  for (size_t g = 0; g < region.guide.size(); ++g)
-    region.guide[g] = uint16_t(
-        std::max<ptrdiff_t>(1, std::upper_bound(cdf.begin(), cdf.end(), double(g) / region.guide.size()) - cdf.begin()));
-  return region;
-}
-
 PupilBounds::PupilBounds(const LensSystem& lens, double film_radius, const PupilBoundsOptions& options)
     : symmetry_(lens.stop_shape().symmetry()), film_radius_(film_radius) {
   // A round stop: one column, regions in the film point's frame. Any other opening: regions
@@ -280,7 +258,21 @@ PupilBounds::PupilBounds(const LensSystem& lens, double film_radius, const Pupil
   // A central obstruction only takes light away: the bound is built for the lens without it
   // (the convex hull of an annulus is its disc anyway, and the region search walks out from the
   // chief ray, which the obstruction blocks).
-  Builder(*this, lens.WithoutObstructions(), options).Build();
+  const LensSystem unobstructed = lens.WithoutObstructions();
+  if (!lens.prescription().RotationallySymmetric()) {
+    rear_z_ = PupilPlaneZ(unobstructed, options.wavelengths.front());
+    grid_ = std::make_unique<PupilGrid>(unobstructed, film_radius, rear_z_, options);
+    return;
+  }
+  Builder(*this, unobstructed, options).Build();
+}
+
+PupilBounds::~PupilBounds() = default;
+PupilBounds::PupilBounds(PupilBounds&&) noexcept = default;
+
+size_t PupilBounds::RegionCount() const { return grid_ ? grid_->RegionCount() : regions_.size(); }
+int PupilBounds::MaxAzimuthColumns() const {
+  return grid_ ? 0 : *std::max_element(columns_.begin(), columns_.end());
 }
 
 PupilBounds::Frame PupilBounds::FrameOf(Vec2d film) const {
@@ -315,31 +307,33 @@ const PupilBounds::Region* PupilBounds::RegionAt(const Frame& f) const {
 }
 
 const ConvexPolygon* PupilBounds::BoundAt(Vec2d film) const {
+  if (grid_) {
+    const PupilGrid::Found f = grid_->RegionAt(film);
+    return f.region ? &f.region->poly : nullptr;
+  }
   const Region* region = RegionAt(FrameOf(film));
   return region ? &region->poly : nullptr;
 }
 
 PupilBounds::Sample PupilBounds::SampleRear(Vec2d film, Vec2d u) const {
+  if (grid_) {
+    const PupilGrid::Found f = grid_->RegionAt(film);
+    if (!f.region) return {{0, 0, rear_z_}, 0};
+    const Vec2d p = f.region->Sample(u);
+    return {{p.x * f.mirror.x, p.y * f.mirror.y, rear_z_}, 1 / f.region->poly.area};
+  }
   const Frame frame = FrameOf(film);
   const Region* region = RegionAt(frame);
   if (!region) return {{0, 0, rear_z_}, 0};
-  const ConvexPolygon& poly = region->poly;
-  const std::vector<double>& cdf = region->cdf;
-  // Pick a fan triangle by area (reusing u.x): the guide table gives the first candidate,
-  // a short scan the triangle with cdf[t - 1] <= u.x < cdf[t].
-  const std::vector<uint16_t>& guide = region->guide;
-  size_t t = guide[std::min(size_t(u.x * guide.size()), guide.size() - 1)];
-  while (t + 1 < cdf.size() && cdf[t] <= u.x) ++t;
-  t = std::clamp<size_t>(t, 1, cdf.size() - 1);
-  double ux = (u.x - cdf[t - 1]) / std::max(cdf[t] - cdf[t - 1], 1e-300);
-  Vec2f bary = SampleUniformTriangle({float(std::min(ux, 0.99999994)), float(u.y)});
-  const Vec2d &a = poly.vertices[0], &bb = poly.vertices[t], &c = poly.vertices[t + 1];
-  double b2 = 1 - bary.x - bary.y;
-  Vec2d p(a.x * bary.x + bb.x * bary.y + c.x * b2, a.y * bary.x + bb.y * bary.y + c.y * b2);
+  Vec2d p = region->Sample(u);
   if (frame.mirrored) p.y = -p.y;
   // From the table's frame to lens space.
   const double cs = frame.cos_sin.x, sn = frame.cos_sin.y;
-  return {{p.x * cs - p.y * sn, p.x * sn + p.y * cs, rear_z_}, 1 / poly.area};
+  return {{p.x * cs - p.y * sn, p.x * sn + p.y * cs, rear_z_}, 1 / region->poly.area};
+}
+
+double PupilPlaneZ(const LensSystem& lens, double lambda_nm) {
+  return lens.VertexZ(lens.SurfaceCount() - 1) + lens.Paraxial(lambda_nm).exit_pupil_position;
 }
 
 }  // namespace objektiv

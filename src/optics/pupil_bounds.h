@@ -4,7 +4,7 @@
 // exact pdf) wastes few rays and, because the polygon contains the whole passing region,
 // leaves the estimator unbiased.
 //
-// The lens is rotationally symmetric: the region for a film point at radius r and azimuth
+// Where the lens is rotationally symmetric, the region for a film point at radius r and azimuth
 // phi is the region for the film point (r, 0) with the stop's opening turned by -phi, turned
 // by phi. A round stop makes it independent of phi: one region per film annulus. For an iris
 // of n blades it repeats every 2 pi / n and mirrors about each corner (see StopShape), so the
@@ -14,31 +14,30 @@
 // Each table cell (a range of radii and of psi) holds the convex hull of the regions traced
 // at its corners, grown a little; cells are split in radius where the region changes fast
 // (e.g. at a fisheye's image circle), and the psi columns are made narrow enough that
-// neighbouring columns' regions differ by a few per cent.
+// neighbouring columns' regions differ by a few per cent. A lens without that symmetry (with
+// toroids) has its regions tabulated over the film's x and y instead (optics/pupil_grid.h).
 #pragma once
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "optics/dispersion.h"
 #include "base/convex_polygon.h"
 #include "base/vec.h"
 #include "optics/lens_system.h"
+#include "optics/pupil_bounds_options.h"
+#include "optics/pupil_grid.h"
+#include "optics/sampled_polygon.h"
 
 namespace objektiv {
-
-struct PupilBoundsOptions {
-  int bins = 128;  // radial film bins (half as many for an opening that is not round)
-  // A probe passes if it passes at any of these wavelengths: a dispersive lens's pupil
-  // changes a little with wavelength, and the bound must hold the light of every one.
-  std::vector<double> wavelengths = {kLambdad};
-  bool rims = true;  // false: only the stop clips (a lens without optical vignetting)
-};
 
 class PupilBounds {
  public:
   // `film_radius`: largest radial film distance needed (e.g. the half-diagonal, mm).
   PupilBounds(const LensSystem& lens, double film_radius, const PupilBoundsOptions& options = {});
+  ~PupilBounds();
+  PupilBounds(PupilBounds&&) noexcept;
 
   struct Sample {
     Vec3d point;  // on the sampling (exit pupil) plane, lens space (mm)
@@ -48,20 +47,15 @@ class PupilBounds {
   Sample SampleRear(Vec2d film, Vec2d u) const;
   // The bound for the film point (x, y) in the table's frame (see FrameOf); null if no light.
   const ConvexPolygon* BoundAt(Vec2d film) const;
-  size_t RegionCount() const { return regions_.size(); }
-  // The most azimuth columns of any radial bin (1 for a round stop).
-  int MaxAzimuthColumns() const { return *std::max_element(columns_.begin(), columns_.end()); }
+  size_t RegionCount() const;
+  // The most azimuth columns of any radial bin (1 for a round stop; 0 for the x-y grid).
+  int MaxAzimuthColumns() const;
   double rear_z() const { return rear_z_; }  // the sampling plane's z (the exit pupil)
   double film_radius() const { return film_radius_; }
 
  private:
   class Builder;
-  struct Region {
-    ConvexPolygon poly;          // empty: no light
-    std::vector<double> cdf;     // over the fan triangles from vertex 0
-    std::vector<uint16_t> guide;  // where to start looking in the cdf for u in [g/G, (g+1)/G)
-  };
-  static Region MakeRegion(ConvexPolygon hull);  // the polygon and its sampling tables
+  using Region = SampledPolygon;
   // Where a film point's bound lives: its radius and azimuth psi in the table, whether the
   // table holds its mirror image (y -> -y), and the turn (cos, sin) from the table's frame to
   // lens space (the film point's azimuth for a round stop, else the axis plus whole periods).
@@ -85,6 +79,11 @@ class PupilBounds {
   double period_ = 0, span_ = 0;  // azimuths repeat every period_; the table covers [0, span_]
   std::vector<Vec2d> turns_;      // (cos, sin) of axis + k period_
   double film_radius_, rear_z_;
+  std::unique_ptr<PupilGrid> grid_;  // the x-y table of a lens without rotational symmetry
 };
+
+// The plane the bounds sample on: the paraxial exit pupil's (light from every film point
+// passes the same image of the stop there, trimmed slowly by vignetting).
+double PupilPlaneZ(const LensSystem& lens, double lambda_nm);
 
 }  // namespace objektiv

@@ -10,20 +10,20 @@ namespace objektiv {
 
 namespace {
 
-// Probing the region of the sampling plane through which light from one film point (r, 0)
-// at one wavelength leaves the lens.
+// Probing the region of the sampling plane through which light from one film point at one
+// wavelength leaves the lens.
 class RegionProbe {
  public:
-  RegionProbe(const BatchLensTracer& fast, const LensSystem& exact, double r, double film_z, double plane_z,
+  RegionProbe(const BatchLensTracer& fast, const LensSystem& exact, Vec2d film, double film_z, double plane_z,
               double lambda_nm)
-      : fast_(fast), exact_(exact), r_(r), film_z_(film_z), plane_z_(plane_z), lambda_(lambda_nm) {}
+      : fast_(fast), exact_(exact), film_(film), film_z_(film_z), plane_z_(plane_z), lambda_(lambda_nm) {}
 
   // Whether the rays aimed at each point get through.
   std::vector<uint8_t> Passes(const std::vector<Vec2d>& points) const {
     batch_.Resize(points.size());
     for (size_t n = 0; n < points.size(); ++n) {
-      Vec3d d = Normalize(Vec3d(points[n].x - r_, points[n].y, plane_z_ - film_z_));
-      batch_.ox[n] = float(r_), batch_.oy[n] = 0, batch_.oz[n] = float(film_z_);
+      Vec3d d = Normalize(Vec3d(points[n].x - film_.x, points[n].y - film_.y, plane_z_ - film_z_));
+      batch_.ox[n] = float(film_.x), batch_.oy[n] = float(film_.y), batch_.oz[n] = float(film_z_);
       batch_.dx[n] = float(d.x), batch_.dy[n] = float(d.y), batch_.dz[n] = float(d.z);
       batch_.lambda[n] = float(lambda_);
     }
@@ -32,14 +32,18 @@ class RegionProbe {
   }
 
   // The aim point whose ray crosses the stop's centre (the real chief ray), by the secant
-  // method from the axis; nothing if the ray does not reach the stop.
+  // method from the axis (in the meridional plane, for a film point on +x of a rotationally
+  // symmetric lens; else by Newton's method in both coordinates); nothing if the ray does not
+  // reach the stop.
   std::optional<Vec2d> ChiefAim() const {
+    if (film_.y != 0 || !exact_.prescription().RotationallySymmetric()) return ChiefAimSkew();
+    const double r = film_.x;
     auto stop_x = [&](double a) -> std::optional<double> {
-      Vec3d o(r_, 0, film_z_);
+      Vec3d o(r, 0, film_z_);
       std::optional<Vec3d> hit = StopCrossingFromFilm(exact_, {o, Normalize(Vec3d(a, 0, plane_z_) - o)}, lambda_);
       return hit ? std::optional<double>(hit->x) : std::nullopt;
     };
-    double a0 = 0, a1 = 1e-3 * (1 + std::abs(r_));
+    double a0 = 0, a1 = 1e-3 * (1 + std::abs(r));
     std::optional<double> f0 = stop_x(a0), f1 = stop_x(a1);
     for (int it = 0; it < 30 && f0 && f1; ++it) {
       if (std::abs(*f1) < 1e-9 || *f1 == *f0) return Vec2d(a1, 0);
@@ -47,6 +51,30 @@ class RegionProbe {
       a0 = a1, f0 = f1, a1 = a2, f1 = stop_x(a1);
     }
     if (f1 && std::abs(*f1) < 1e-6) return Vec2d(a1, 0);
+    return std::nullopt;
+  }
+
+  // The chief ray's aim where it need not lie in a plane through the axis: Newton's method on
+  // the stop crossing (x, y) as a function of the aim, its Jacobian by finite differences.
+  std::optional<Vec2d> ChiefAimSkew() const {
+    const Vec3d o(film_.x, film_.y, film_z_);
+    auto stop_at = [&](Vec2d a) -> std::optional<Vec2d> {
+      std::optional<Vec3d> hit = StopCrossingFromFilm(exact_, {o, Normalize(Vec3d(a.x, a.y, plane_z_) - o)}, lambda_);
+      return hit ? std::optional<Vec2d>(Vec2d(hit->x, hit->y)) : std::nullopt;
+    };
+    const double h = 1e-4 * (1 + std::hypot(film_.x, film_.y));
+    Vec2d a(0, 0);
+    for (int it = 0; it < 30; ++it) {
+      std::optional<Vec2d> f = stop_at(a), fx = stop_at(a + Vec2d(h, 0)), fy = stop_at(a + Vec2d(0, h));
+      if (!f || !fx || !fy) return std::nullopt;
+      if (std::hypot(f->x, f->y) < 1e-7) return a;
+      const double j11 = (fx->x - f->x) / h, j21 = (fx->y - f->y) / h, j12 = (fy->x - f->x) / h, j22 = (fy->y - f->y) / h;
+      const double det = j11 * j22 - j12 * j21;
+      if (det == 0 || !std::isfinite(det)) return std::nullopt;
+      a = a - Vec2d((j22 * f->x - j12 * f->y) / det, (j11 * f->y - j21 * f->x) / det);
+    }
+    std::optional<Vec2d> f = stop_at(a);
+    if (f && std::hypot(f->x, f->y) < 1e-6) return a;
     return std::nullopt;
   }
 
@@ -107,7 +135,8 @@ class RegionProbe {
  private:
   const BatchLensTracer& fast_;
   const LensSystem& exact_;
-  double r_, film_z_, plane_z_, lambda_;
+  Vec2d film_;
+  double film_z_, plane_z_, lambda_;
   mutable RayBatch batch_;
 };
 
@@ -173,11 +202,16 @@ std::vector<Vec2d> TraceEdge(const RegionProbe& probe, Vec2d c, double limit, do
 
 PupilRegion TracePupilRegion(const PupilRegionProbe& probe, double r, const std::vector<double>& lambdas,
                              double turn) {
+  return TracePupilRegionAt(probe, Vec2d(r, 0), lambdas, turn);
+}
+
+PupilRegion TracePupilRegionAt(const PupilRegionProbe& probe, Vec2d film, const std::vector<double>& lambdas,
+                               double turn) {
   const double c = std::cos(turn), s = std::sin(turn);
   std::vector<Vec2d> points;
   double size = 0;
   for (double lambda : lambdas) {
-    RegionProbe rays(probe.fast, probe.exact, r, probe.film_z, probe.plane_z, lambda);
+    RegionProbe rays(probe.fast, probe.exact, film, probe.film_z, probe.plane_z, lambda);
     std::optional<Vec2d> centre = rays.Inside(probe.window);
     if (!centre) continue;
     if (probe.recentre) centre = rays.Centred(*centre, 2 * probe.window);

@@ -34,5 +34,8 @@ struct PupilRegionProbe {
 // by `turn` (radians) about the axis afterwards.
 PupilRegion TracePupilRegion(const PupilRegionProbe& probe, double r, const std::vector<double>& lambdas,
                              double turn = 0);
+// The same for any film point (x, y) (a lens without rotational symmetry).
+PupilRegion TracePupilRegionAt(const PupilRegionProbe& probe, Vec2d film, const std::vector<double>& lambdas,
+                               double turn = 0);
 
 }  // namespace objektiv

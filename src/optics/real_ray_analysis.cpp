@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "optics/anamorphic.h"
 #include "optics/paraxial.h"
 
 namespace objektiv {
@@ -258,6 +259,12 @@ double FieldForHeight(const LensSystem& lens, double h, double max_field, double
 
 FieldOfView SensorFieldOfView(const LensSystem& lens, double width, double height, double lambda_nm) {
   double max_field = MaxImagedField(lens, lambda_nm);
+  if (!lens.prescription().RotationallySymmetric()) {
+    // Horizontal in the x-z section, vertical in the y-z one; the corner's chief ray is skew.
+    const LensSystem x = XSectionSystem(lens);
+    return {2 * FieldForHeight(x, width / 2, MaxImagedField(x, lambda_nm), lambda_nm),
+            2 * FieldForHeight(lens, height / 2, max_field, lambda_nm), NAN};
+  }
   return {2 * FieldForHeight(lens, width / 2, max_field, lambda_nm),
           2 * FieldForHeight(lens, height / 2, max_field, lambda_nm),
           2 * FieldForHeight(lens, std::hypot(width, height) / 2, max_field, lambda_nm)};

@@ -30,7 +30,7 @@ struct ZSurface {
   bool stop = false, infinite_thickness = false;
   std::string glass;
   double model_nd = 0, model_vd = 0;
-  double parm[9] = {};
+  double parm[17] = {};  // PARM 0..16
 };
 
 // A thickness: Zemax writes an infinite one (the object at infinity) as a word. Every other
@@ -168,8 +168,9 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
     if (key == "TYPE") {
       need(1);
       cur->type = f[0];
-      if (f[0] != "STANDARD" && f[0] != "EVENASPH")
-        throw MakeInputError(path, number, "surface type {} is not supported (STANDARD and EVENASPH are)", Printable(f[0]));
+      if (f[0] != "STANDARD" && f[0] != "EVENASPH" && f[0] != "TOROIDAL")
+        throw MakeInputError(path, number, "surface type {} is not supported (STANDARD, EVENASPH and TOROIDAL are)",
+                             Printable(f[0]));
     } else if (key == "CURV") {
       need(1);
       cur->curv = ParseFiniteNumber(f[0], path, number);
@@ -214,8 +215,8 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
       cur->coat_line = number;
     } else if (key == "PARM") {
       need(2);
-      std::optional<int> k = ParseIntegerIn(f[0], 1, 8);
-      if (!k) throw MakeInputError(path, number, "PARM index '{}' is not an integer from 1 to 8", Printable(f[0]));
+      std::optional<int> k = ParseIntegerIn(f[0], 0, 16);
+      if (!k) throw MakeInputError(path, number, "PARM index '{}' is not an integer from 0 to 16", Printable(f[0]));
       cur->parm[*k] = ParseFiniteNumber(f[1], path, number);
     } else if (!kIgnored.count(key)) {
       warn_once(key, number);
@@ -259,6 +260,23 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
       // PARM k multiplies r^(2k) in lens units: convert to mm.
       s.a2 = z.parm[1] / unit;
       for (int k = 2; k <= 8; ++k) s.aspheric[k - 2] = z.parm[k] / std::pow(unit, 2 * k - 1);
+    } else if (z.type == "TOROIDAL") {
+      // PARM 1: the radius of rotation (0: infinite, a cylinder flat in x); PARM 2..8: the
+      // profile's terms in y^2, y^4, ..., y^14; PARM 13: the count of Zernike sag terms.
+      if (z.parm[13] != 0)
+        throw MakeInputError(path, z.line, "TOROIDAL surface {} with {} Zernike sag terms (PARM 13): not supported", i,
+                             z.parm[13]);
+      s.toroidal = true;
+      s.curvature_x = z.parm[1] != 0 ? 1 / (z.parm[1] * unit) : 0;
+      s.a2 = z.parm[2] / unit;
+      for (int k = 3; k <= 8; ++k) s.aspheric[k - 3] = z.parm[k] / std::pow(unit, 2 * (k - 1) - 1);
+    }
+    // A parameter the surface's type does not read changes nothing in Zemax either; one that
+    // would matter for another type is said (a typo in TYPE would otherwise pass unseen).
+    for (int k = 1; k <= 16; ++k) {
+      const bool read = (z.type == "EVENASPH" && k <= 8) || (z.type == "TOROIDAL" && (k <= 8 || k == 13));
+      if (z.parm[k] != 0 && !read)
+        spdlog::warn("{}:{}: PARM {} = {} means nothing to a {} surface: ignored", path, z.line, k, z.parm[k], z.type);
     }
     s.obscuration = z.obscuration * unit;
     if (s.obscuration >= s.semi_diameter)
@@ -302,7 +320,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
     CheckSize(s, path, z.line);
     if (z.stop) {
       have_stop = true;
-      if ((s.flat && !s.HasAsphericTerms()) || s.mirror) {
+      if ((s.flat && !s.HasAsphericTerms() && !s.toroidal) || s.mirror) {
         // A plane: the stop itself (in air, in glass, or between two media). A mirror: its rim
         // (a mirror lens has no iris; an iris plane at its vertex would lie behind where the
         // light turns).
