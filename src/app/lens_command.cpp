@@ -99,8 +99,13 @@ int RunList() {
       const std::string shown = first ? name : name + ext;
       first = false;
       const LensSystem lens(LoadLens(shown, GlassCatalog::Default()));
-      std::printf("%-28s %10.3f %8.2f %8.2f  %s\n", shown.c_str(), lens.paraxial().efl, lens.paraxial().fnumber,
-                  WideOpenFNumber(lens.prescription()), lens.prescription().source.c_str());
+      // An anamorphic's squeeze before its source (the EFL is its y-z section's).
+      const std::string squeeze =
+          lens.prescription().HasToroids()
+              ? fmt::format("anamorphic, squeeze {:.2f}x; ", ComputeAnamorphosis(lens.prescription(), lens.paraxial()).squeeze)
+              : "";
+      std::printf("%-28s %10.3f %8.2f %8.2f  %s%s\n", shown.c_str(), lens.paraxial().efl, lens.paraxial().fnumber,
+                  WideOpenFNumber(lens.prescription()), squeeze.c_str(), lens.prescription().source.c_str());
     }
   }
   return 0;
@@ -149,11 +154,13 @@ int RunInfo(const LensArgs& a) {
   if (!std::isfinite(fov.diagonal)) j["fov_diagonal_deg"] = nullptr;
   // An anamorphic lens: its x-z section's first-order data and the squeeze.
   std::optional<Anamorphosis> anamorphic;
-  if (!lens.RotationallySymmetric()) {
+  if (lens.HasToroids()) {
     anamorphic = ComputeAnamorphosis(lens, d, a.wavelength, system.StopSemiDiameter());
     j["squeeze"] = anamorphic->squeeze;
     j["efl_x_mm"] = anamorphic->x.efl;
     j["bfl_x_mm"] = anamorphic->x.bfl;
+    j["fnumber_x"] = anamorphic->x.fnumber;
+    j["entrance_pupil_diameter_x_mm"] = anamorphic->x.entrance_pupil_diameter;
   }
   const AxialTransmittance transmittance = AxialTransmittanceOf(system, a.wavelength);
   j["axial_transmittance"] = transmittance.Total();
@@ -206,6 +213,8 @@ int RunInfo(const LensArgs& a) {
     std::printf("  object space: %s (n %.5f): field angles are the scene's, in that medium\n",
                 MediumLabel(lens.object_medium).c_str(), d.object_index);
   std::printf("%s", PrescriptionTable(lens).c_str());
+  if (!lens.Centred())
+    std::printf("  decentred or tilted surfaces: the first-order data below are the lens's centred on its axis\n");
   std::printf("  paraxial, object at infinity, %.2f nm:\n", a.wavelength);
   std::printf("  EFL %.4f mm   BFL %.4f mm   FFL %.4f mm   f/%.3f\n", d.efl, d.bfl, d.ffl, d.fnumber);
   std::printf("  entrance pupil: diameter %.4f mm, %.4f mm behind the first vertex\n", d.entrance_pupil_diameter,
@@ -215,11 +224,20 @@ int RunInfo(const LensArgs& a) {
   std::printf("  principal planes: front %.4f mm from the first vertex, back %.4f mm from the last\n",
               d.front_principal_plane, d.back_principal_plane);
   std::printf("  real back focus (smallest on-axis spot): %.4f mm\n", real_bfl);
-  if (anamorphic)
+  if (anamorphic) {
+    const double q = anamorphic->squeeze;
+    const std::string effect =
+        std::abs(q - 1) < 5e-4 ? "no squeeze: both sections have the same focal length"
+        : q > 1 ? fmt::format("squeeze {:.3f}x, the scene is squeezed horizontally on the film (a scene's\n"
+                              "  desqueeze=\"lens\" stretches the picture back)", q)
+                : fmt::format("squeeze {:.3f}x, the scene is stretched horizontally on the film (a scene's\n"
+                              "  desqueeze=\"lens\" squeezes the picture back)", q);
     std::printf("  anamorphic: the paraxial data above are the y-z section's (vertical); the x-z section's (horizontal):\n"
-                "  EFL %.4f mm   BFL %.4f mm (its focus %.4f mm from the y-z one's): squeeze %.3fx, the scene is\n"
-                "  squeezed horizontally on the film (a scene's desqueeze=\"lens\" stretches the picture back)\n",
-                anamorphic->x.efl, anamorphic->x.bfl, anamorphic->focus_split, anamorphic->squeeze);
+                "  EFL %.4f mm   BFL %.4f mm (its focus %.4f mm from the y-z one's)   f/%.3f, entrance pupil %.4f mm wide\n"
+                "  %s\n",
+                anamorphic->x.efl, anamorphic->x.bfl, anamorphic->focus_split, anamorphic->x.fnumber,
+                anamorphic->x.entrance_pupil_diameter, effect.c_str());
+  }
   if (std::isfinite(fov.diagonal))
     std::printf("  field of view on %gx%g mm (real chief rays): %.2f x %.2f deg, %.2f deg diagonal\n", sw, sh,
                 fov.horizontal, fov.vertical, fov.diagonal);
@@ -248,8 +266,8 @@ int RunInfo(const LensArgs& a) {
 }
 
 // The lens in the principal section asked for: as it is for y (the vertical, the analyses'
-// own plane), its x-z section's equivalent for x (optics/anamorphic.h: the same rays in that
-// plane, at the same film). A rotationally symmetric lens is the same in both.
+// own plane), turned a quarter about its axis for x (optics/anamorphic.h: its x-z section
+// then lies in the analyses' plane; the same film). A rotationally symmetric lens is the same.
 LensSystem InSection(LensSystem lens, const std::string& section) {
   if (section == "y") return lens;
   if (lens.prescription().RotationallySymmetric())

@@ -1,6 +1,7 @@
 #include "app/prescription_table.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -15,6 +16,20 @@ std::string MediumLabel(const std::shared_ptr<const Glass>& medium) {
   if (g.catalog() == "MODEL" || g.catalog() == "CONSTANT" || g.catalog() == "FORMULA") return g.name();
   return g.catalog() + ":" + g.name();
 }
+
+namespace {
+// The angle (degrees) between a placed surface's axis and the lens's.
+double AxisTilt(const SurfacePlacement& p) { return std::acos(std::clamp(p.ez.z, -1.0, 1.0)) * 180 / M_PI; }
+// " decentred (x, y) mm, axis tilted a deg" (and the turn about the axis where it is not tilted).
+std::string PlacementLabel(const SurfacePlacement& p) {
+  std::string out;
+  if (p.offset.x != 0 || p.offset.y != 0) out += fmt::format(" decentred ({:.4g}, {:.4g}) mm", p.offset.x, p.offset.y);
+  const double tilt = AxisTilt(p);
+  if (tilt > 1e-9) out += fmt::format(" axis tilted {:.4g} deg", tilt);
+  else if (p.ex.y != 0) out += fmt::format(" turned {:.4g} deg about the axis", std::atan2(p.ex.y, p.ex.x) * 180 / M_PI);
+  return out;
+}
+}  // namespace
 
 std::string PrescriptionTable(const LensPrescription& lens) {
   size_t width = 12;  // the medium column: as wide as its longest label
@@ -38,6 +53,7 @@ std::string PrescriptionTable(const LensPrescription& lens) {
     if (s.conic != 0) extra += fmt::format(" k={:g}", s.conic);
     if (s.HasAsphericTerms()) extra += " aspheric";
     if (s.toroidal) extra += s.curvature_x == 0 ? " rx=inf (cylinder)" : fmt::format(" rx={:.4f}", 1 / s.curvature_x);
+    if (s.placement) extra += PlacementLabel(*s.placement);
     out += fmt::format("  {:>3}  {:>11}  {:>10.4f}  {:<{}} {:>8} {:>6}  {:>10.4f}{}\n", i + 1, radius, s.thickness,
                        MediumLabel(s), width, nd, vd, s.semi_diameter, extra);
   }
@@ -57,6 +73,13 @@ nlohmann::ordered_json PrescriptionJson(const LensPrescription& lens) {
       else r["mirror_reflectance"] = s.mirror_reflectance;
     }
     if (s.obscuration > 0) r["obscuration_mm"] = s.obscuration;
+    if (s.placement) {
+      r["decenter_mm"] = {s.placement->offset.x, s.placement->offset.y};
+      r["axis_tilt_deg"] = AxisTilt(*s.placement);
+      r["axes"] = {{s.placement->ex.x, s.placement->ex.y, s.placement->ex.z},
+                   {s.placement->ey.x, s.placement->ey.y, s.placement->ey.z},
+                   {s.placement->ez.x, s.placement->ez.y, s.placement->ez.z}};
+    }
     if (s.toroidal)  // the x-z section's radius (null: flat in x)
       r["rx_mm"] = s.curvature_x == 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(1 / s.curvature_x);
     r["thickness_mm"] = s.thickness;

@@ -7,6 +7,7 @@
 #include "base/log.h"
 #include "camera/paraxial_lens_camera.h"
 #include "camera/realistic_camera.h"
+#include "optics/anamorphic.h"
 #include "optics/lens_setup.h"
 
 namespace objektiv {
@@ -55,7 +56,8 @@ std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int
   LensCameraSettings settings = spec.settings;
   if (spec.model == LensModel::kReal) {
     if (spec.convergence_mm > 0) {
-      const ParaxialData& p = lens.paraxial();
+      // The shift is horizontal: an anamorphic lens's x-z section's pupils.
+      const ParaxialData p = spec.lens.HasToroids() ? XSectionSystem(lens).paraxial() : lens.paraxial();
       const double xp_z = lens.VertexZ(lens.SurfaceCount() - 1) + p.exit_pupil_position;
       settings.shift.x += ChiefRayFilmX(spec.eye_offset_mm, spec.convergence_mm, p.entrance_pupil_diameter,
                                         p.exit_pupil_diameter, lens.FilmZ() - xp_z);
@@ -72,8 +74,9 @@ std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int
                                    "another medium (its object_medium): use lens_model real",
                                    model, spec.lens.name));
     if (!spec.lens.RotationallySymmetric())
-      throw InputError(fmt::format("lens_model {}: the paraxial models are rotationally symmetric; {} is anamorphic "
-                                   "(toroidal surfaces): use lens_model real", model, spec.lens.name));
+      throw InputError(fmt::format("lens_model {}: the paraxial models are rotationally symmetric; {} is not ({}): "
+                                   "use lens_model real", model, spec.lens.name,
+                                   spec.lens.HasToroids() ? "anamorphic, toroidal surfaces" : "decentred or tilted surfaces"));
     for (const LensSurface& s : spec.lens.surfaces)
       if (s.obscuration > 0)
         throw InputError(fmt::format("lens_model {}: the paraxial models have no central obstruction, which {} has: "

@@ -173,7 +173,7 @@ std::optional<CameraImportance> RealisticCamera::SampleImportance(const Vec3f& p
   const double hero_transmittance = settings_.transmission ? r.surface_transmittance * r.internal_transmittance : 1.0;
   double w = 1;
   if (masked && lens_.StopIndex() >= 0 && path.size() > size_t(lens_.StopIndex())) {
-    const Vec3d& s = path[size_t(lens_.StopIndex())];
+    const Vec3d s = lens_.InSurfaceFrame(lens_.StopIndex(), path[size_t(lens_.StopIndex())]);
     w *= settings_.aperture_mask->Transmittance(float(s.x / stop_radius_), float(s.y / stop_radius_));
   }
   // The flux through the front element toward this film point, J projected pi r^2 / distance^2,

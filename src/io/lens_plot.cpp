@@ -34,13 +34,23 @@ Svg PlotLensLayout(const LensSystem& lens, const std::vector<double>& fields, do
   Svg svg(W, H);
   svg.Text({margin, 24}, fmt::format("{}: EFL {:.2f} mm, f/{:.2f}, {:.1f} nm", rx.name, p.efl, p.fnumber, lambda_nm), 15);
 
+  // Lens-space (z, y) of surface i's y-z section at height y in its own frame (decentred or
+  // tilted surfaces drawn where they are).
+  auto section = [&](int i, double y) {
+    const LensSurface& s = lens.surface(i);
+    double sag = 0;
+    s.SagAt(0, y, sag);
+    const Vec3d local(0, y, sag), vertex(0, 0, lens.VertexZ(i));
+    const Vec3d p = s.placement ? vertex + s.placement->offset + s.placement->FromLocal(local) : vertex + local;
+    return Vec2d(p.z, p.y);
+  };
   // Elements: the profile of each surface followed by the next one's, where glass lies between.
   auto profile = [&](int i, double from, double to) {
     std::vector<Vec2d> pts;
     const int steps = 48;
     for (int k = 0; k <= steps; ++k) {
-      double y = from + (to - from) * k / steps;
-      pts.push_back(map(lens.VertexZ(i) + lens.surface(i).Sag(std::abs(y)), y));
+      const Vec2d zy = section(i, from + (to - from) * k / steps);
+      pts.push_back(map(zy.x, zy.y));
     }
     return pts;
   };
@@ -57,12 +67,12 @@ Svg PlotLensLayout(const LensSystem& lens, const std::vector<double>& fields, do
     double h = std::max(semi_i, semi_j);
     std::vector<Vec2d> poly = profile(i, -semi_i, semi_i);
     // Flat rims out to the larger of the two apertures, as lens elements are ground.
-    poly.push_back(map(lens.VertexZ(i) + lens.surface(i).Sag(semi_i), h));
-    poly.push_back(map(lens.VertexZ(j) + lens.surface(j).Sag(semi_j), h));
+    poly.push_back(map(section(i, semi_i).x, h));
+    poly.push_back(map(section(j, semi_j).x, h));
     std::vector<Vec2d> back = profile(j, semi_j, -semi_j);
     poly.insert(poly.end(), back.begin(), back.end());
-    poly.push_back(map(lens.VertexZ(j) + lens.surface(j).Sag(semi_j), -h));
-    poly.push_back(map(lens.VertexZ(i) + lens.surface(i).Sag(semi_i), -h));
+    poly.push_back(map(section(j, -semi_j).x, -h));
+    poly.push_back(map(section(i, -semi_i).x, -h));
     svg.Polygon(poly, "#cfe3f5", "#2b5d8a", 1.2);
   }
   // Mirrors: their reflecting face, silvered; a central obstruction: a dark bar across it.
@@ -75,9 +85,10 @@ Svg PlotLensLayout(const LensSystem& lens, const std::vector<double>& fields, do
   svg.Line(map(z_start, 0), map(z_end, 0), "#888", 0.8, "6,4");
   int stop = rx.StopIndex();
   if (stop >= 0) {
-    double zs = lens.VertexZ(stop), r = lens.StopSemiDiameter(), outer = std::max(r * 1.25, r + 0.08 * max_semi);
-    svg.Line(map(zs, r), map(zs, outer), "#000", 3);
-    svg.Line(map(zs, -r), map(zs, -outer), "#000", 3);
+    double r = lens.StopSemiDiameter(), outer = std::max(r * 1.25, r + 0.08 * max_semi);
+    const Vec2d a = section(stop, r), b = section(stop, outer), c = section(stop, -r), d = section(stop, -outer);
+    svg.Line(map(a.x, a.y), map(b.x, b.y), "#000", 3);
+    svg.Line(map(c.x, c.y), map(d.x, d.y), "#000", 3);
   }
   svg.Line(map(z_end, -y_extent), map(z_end, y_extent), "#444", 2);
   svg.Text(map(z_end, -y_extent) + Vec2d(0, 16), "film", 11, "middle");

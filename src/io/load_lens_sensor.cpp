@@ -113,7 +113,7 @@ double Desqueeze(const Properties& p, const LensPrescription& lens) {
                     Printable(value));
     return factor;
   }
-  if (lens.RotationallySymmetric())
+  if (!lens.HasToroids())
     throw ErrorAt(p.LocOf("desqueeze"), "desqueeze=\"lens\": {} is not anamorphic (it has no toroidal surface); give a "
                   "number to stretch the picture anyway", lens.name);
   const double squeeze = ComputeAnamorphosis(lens, ComputeParaxial(lens)).squeeze;

@@ -1,5 +1,8 @@
 #include "io/svg.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "base/output_file.h"
@@ -46,6 +49,14 @@ void Svg::Circle(Vec2d c, double r, const std::string& fill, double opacity) {
 }
 
 void Svg::Text(Vec2d at, const std::string& text, double size, const std::string& anchor, const std::string& fill) {
+  // A line that would run past the right edge (a long lens name in a title) is set smaller: a
+  // sans-serif glyph is about 0.56 of the font size wide on average.
+  if (anchor == "start") {
+    size_t glyphs = 0;
+    for (unsigned char c : text) glyphs += (c & 0xC0) != 0x80;  // UTF-8 lead bytes
+    const double wide = 0.56 * size * double(glyphs), room = width_ - at.x - 8;
+    if (wide > room && room > 0) size = std::max(7.0, std::floor(size * room / wide * 10) / 10);
+  }
   items_.push_back(fmt::format(R"(<text x="{:.2f}" y="{:.2f}" font-family="sans-serif" font-size="{}" text-anchor="{}" fill="{}">{}</text>)",
                                at.x, at.y, size, anchor, fill, Escape(text)));
 }

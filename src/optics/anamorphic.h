@@ -8,6 +8,8 @@
 // times horizontally on the film (2 for a classic 2x anamorphic) and the picture is stretched
 // back by it (desqueezed). 1 for a rotationally symmetric lens.
 #pragma once
+#include <optional>
+
 #include "optics/dispersion.h"
 #include "optics/lens_prescription.h"
 #include "optics/lens_system.h"
@@ -15,14 +17,12 @@
 
 namespace objektiv {
 
-// The lens as its x-z section sees it paraxially: each toroid replaced by a sphere of its x-z
-// curvature (no conic or aspheric terms: a toroid's x-z section is a circle).
+// The lens turned a quarter about its axis (TurnedAboutAxis): its x-z section becomes the y-z
+// section that paraxial optics and the real-ray analyses trace (what lay along +x lies along +y).
 LensPrescription XSection(const LensPrescription& lens);
 
-// The lens as set up, in its x-z section: a ray in the x-z plane meets a toroid where its
-// section is the circle of curvature curvature_x and is turned within that plane, as by a
-// sphere of that curvature; so the x-z plane's real rays (and the horizontal analyses) are
-// this system's y-z ones. Same stop and film.
+// The lens as set up, turned a quarter about its axis (XSection): the same lens in every ray,
+// its horizontal analyses those of this system's y-z plane. Same stop and film.
 LensSystem XSectionSystem(const LensSystem& lens);
 
 struct Anamorphosis {
@@ -33,5 +33,14 @@ struct Anamorphosis {
 // The x-z section's data at lambda, with the stop's semi-diameter as ComputeParaxial takes it.
 Anamorphosis ComputeAnamorphosis(const LensPrescription& lens, const ParaxialData& y, double lambda_nm = kLambdad,
                                  double stop_semi_diameter = -1);
+
+// A front anamorphic's own focusing (LensPrescription::focus_gap): the gap that makes its x-z
+// section image an object `distance_from_film` mm in front of the film sharp on the film
+// `back_focus` mm behind the last vertex, paraxially (the film and the object stay put, the
+// elements in front of the gap move); the secant method from the gap as designed. Nothing
+// where the lens has no focus gap, the object is at infinity (the design's own gap), or no
+// gap between 0 and 4 times the design's does it.
+std::optional<double> AnamorphicFocusGap(const LensPrescription& lens, double distance_from_film, double back_focus,
+                                         double lambda_nm = kLambdad);
 
 }  // namespace objektiv

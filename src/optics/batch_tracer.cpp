@@ -83,6 +83,17 @@ BatchLensTracer::BatchLensTracer(const LensSystem& lens_system)
     f.plane = f.c == 0 && !s.toroidal;
     f.aspheric = s.HasAsphericTerms() && !s.toroidal;
     f.is_stop = s.is_stop;
+    if (s.placement) {
+      const SurfacePlacement& pl = *s.placement;
+      f.placed = true;
+      const Vec3d origin = Vec3d(0, 0, lens_system.VertexZ(int(i))) + pl.offset;
+      const Vec3d axes[3] = {pl.ex, pl.ey, pl.ez};
+      for (int a = 0; a < 3; ++a) {
+        f.axes[a][0] = float(axes[a].x), f.axes[a][1] = float(axes[a].y), f.axes[a][2] = float(axes[a].z);
+      }
+      f.origin[0] = float(origin.x), f.origin[1] = float(origin.y), f.origin[2] = float(origin.z);
+      f.z = 0;  // the kernel works in the surface's frame
+    }
     f.a2 = float(s.a2);
     for (int k = 0; k < 7; ++k) f.a[k] = float(s.aspheric[k]);
     f.medium_after = -1;
@@ -339,6 +350,36 @@ void StepShape(const Step& s, bool refract, bool mirror, bool transmission, RayB
 
 }  // namespace
 
+void BatchLensTracer::ToSurfaceFrame(const Surface& s, RayBatch& b) {
+  const size_t n = b.Size();
+  const float(&a)[3][3] = s.axes;
+  for (size_t j = 0; j < n; ++j) {
+    const float x = b.ox[j] - s.origin[0], y = b.oy[j] - s.origin[1], z = b.oz[j] - s.origin[2];
+    b.ox[j] = a[0][0] * x + a[0][1] * y + a[0][2] * z;
+    b.oy[j] = a[1][0] * x + a[1][1] * y + a[1][2] * z;
+    b.oz[j] = a[2][0] * x + a[2][1] * y + a[2][2] * z;
+    const float dx = b.dx[j], dy = b.dy[j], dz = b.dz[j];
+    b.dx[j] = a[0][0] * dx + a[0][1] * dy + a[0][2] * dz;
+    b.dy[j] = a[1][0] * dx + a[1][1] * dy + a[1][2] * dz;
+    b.dz[j] = a[2][0] * dx + a[2][1] * dy + a[2][2] * dz;
+  }
+}
+
+void BatchLensTracer::FromSurfaceFrame(const Surface& s, RayBatch& b) {
+  const size_t n = b.Size();
+  const float(&a)[3][3] = s.axes;
+  for (size_t j = 0; j < n; ++j) {
+    const float x = b.ox[j], y = b.oy[j], z = b.oz[j];
+    b.ox[j] = s.origin[0] + a[0][0] * x + a[1][0] * y + a[2][0] * z;
+    b.oy[j] = s.origin[1] + a[0][1] * x + a[1][1] * y + a[2][1] * z;
+    b.oz[j] = s.origin[2] + a[0][2] * x + a[1][2] * y + a[2][2] * z;
+    const float dx = b.dx[j], dy = b.dy[j], dz = b.dz[j];
+    b.dx[j] = a[0][0] * dx + a[1][0] * dy + a[2][0] * dz;
+    b.dy[j] = a[0][1] * dx + a[1][1] * dy + a[2][1] * dz;
+    b.dz[j] = a[0][2] * dx + a[1][2] * dy + a[2][2] * dz;
+  }
+}
+
 void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) const {
   const size_t count = rays.Size();
   if (count == 0) return;  // e.g. a pixel outside a fisheye's image circle: no sample starts a ray
@@ -384,6 +425,7 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
             sf.coating < 0 ? nullptr : coating_tables_[2 * sf.coating + (from_film ? 1 : 0)].data()};
     std::copy(sf.a, sf.a + 7, st.a);
     const bool refract = m_in != m_out && !sf.mirror;  // the stop too, where it parts two media
+    if (sf.placed) ToSurfaceFrame(sf, rays);
     if (sf.toroid) StepShape<false, false, true>(st, refract, sf.mirror, transmission, rays);
     else if (sf.cylinder) StepShape<false, false, false, true>(st, refract, sf.mirror, transmission, rays);
     else if (sf.plane) StepShape<true, false>(st, refract, sf.mirror, transmission, rays);
@@ -402,6 +444,7 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
           if (rays.alive[j] && !stop_shape_.Contains(rays.ox[j] * inv, rays.oy[j] * inv)) rays.alive[j] = 0;
       }
     }
+    if (sf.placed) FromSurfaceFrame(sf, rays);
   }
   if (absorbing)
     for (size_t j = 0; j < count; ++j) rays.transmittance[j] *= std::exp(-rays.depth[j]);

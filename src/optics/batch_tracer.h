@@ -68,12 +68,18 @@ class BatchLensTracer {
     // met in closed form: the conic's equation with x's (mx 0) or y's (my 0) terms left out.
     float mx = 1, my = 1;
     bool plane, aspheric, toroid, cylinder, is_stop, mirror;
+    // Decentred or tilted: rays are taken into the surface's frame (origin: its vertex at
+    // `origin`; axes[0..2] its x, y, z in lens space) for the step, and back.
+    bool placed = false;
+    float origin[3] = {0, 0, 0}, axes[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     float reflectance;            // a mirror's
     float a2, a[7];
     int medium_after;            // glass index (-1: air); its tables are at medium_after + 1
     int coating;                 // -1: bare (Fresnel's equations inline) or a mirror of constant reflectance; else coating_tables_[2 coating + toward object] (a metal mirror's reflectance: both the same)
   };
   void Trace(RayBatch& rays, bool from_film, bool transmission) const;
+  static void ToSurfaceFrame(const Surface& s, RayBatch& rays);
+  static void FromSurfaceFrame(const Surface& s, RayBatch& rays);
 
   std::vector<Surface> surfaces_;
   // Per medium (air first), 360..830 nm at 1 nm: index, absorption coefficient per mm.

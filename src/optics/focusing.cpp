@@ -19,7 +19,7 @@ ObjectRay TraceFromObjectPoint(const LensPrescription& lens, double s, double la
   for (size_t i = 0; i < surf.size(); ++i) {
     const double n_before = index[i], n_after = index[i + 1];
     if (surf[i].is_stop) y_stop = y;
-    nu -= y * surf[i].ParaxialCurvature() * (n_after - n_before);
+    nu -= y * surf[i].ParaxialCurvatureInY() * (n_after - n_before);
     if (i + 1 < surf.size()) y += surf[i].thickness * nu / n_after;
   }
   return {y, nu, y_stop};

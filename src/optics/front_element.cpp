@@ -14,8 +14,14 @@ FrontPoint SampleFrontElement(const LensSystem& lens, Vec2d u) {
   FrontPoint f;
   double sag = 0;
   s.SagAt(x, y, sag);  // inside the clear disc the surface is whole (CheckReachable)
-  f.p = {x, y, lens.VertexZ(0) + sag};
-  f.normal = SurfaceNormal(s, f.p);
+  const Vec3d local(x, y, sag);
+  f.normal = SurfaceNormal(s, local);
+  f.p = Vec3d(0, 0, lens.VertexZ(0)) + local;
+  if (s.placement) {  // decentred or tilted: the point and the normal carried into lens space
+    f.p = Vec3d(0, 0, lens.VertexZ(0)) + s.placement->offset + s.placement->FromLocal(local);
+    f.normal = s.placement->FromLocal(f.normal);
+    f.axis = s.placement->ez;
+  }
   return f;
 }
 

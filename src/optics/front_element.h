@@ -15,12 +15,13 @@ namespace objektiv {
 
 struct FrontPoint {
   Vec3d p;       // lens space, on the first surface
-  Vec3d normal;  // unit, n.z > 0 (toward the film; light enters against it)
-  // cos(d, n) / n.z for light travelling in unit direction d; 0 where d does not enter the
-  // surface from the object side.
+  Vec3d normal;  // unit, toward the film along the surface's axis (light enters against it)
+  Vec3d axis{0, 0, 1};  // the surface's own axis (tilted with it: optics/surface_placement.h)
+  // cos(d, n) / (n . axis) for light travelling in unit direction d (the disc is sampled across
+  // the surface's own axis); 0 where d does not enter the surface from the object side.
   double ProjectedCosine(const Vec3d& d) const {
     const double c = Dot(d, normal);
-    return c > 0 ? c / normal.z : 0;
+    return c > 0 ? c / Dot(normal, axis) : 0;
   }
 };
 

@@ -56,8 +56,11 @@ class BundleTracer {
     const Vec3d d = source.at_infinity ? source.direction : Normalize(Vec3d(0, 0, lens.VertexZ(0)) - source.position);
     const double slope_x = d.z > 0 ? d.x / d.z : 0, slope_y = d.z > 0 ? d.y / d.z : 0;
     const double middle = 0.5 * (lens.VertexZ(0) + rim_z) - start_z_, depth = std::abs(rim_z - lens.VertexZ(0)) + 1;
-    centre_ = Vec2d(-slope_x * middle, -slope_y * middle);
-    reach_ = front.semi_diameter + 0.5 * depth * std::max(std::abs(slope_x), std::abs(slope_y));
+    // A decentred front element: the square follows it (a tilted one reaches a little further).
+    const Vec3d off = front.placement ? front.placement->offset : Vec3d(0, 0, 0);
+    const double tilt = front.placement ? std::sqrt(std::max(0.0, 1 - front.placement->ez.z * front.placement->ez.z)) : 0;
+    centre_ = Vec2d(off.x - slope_x * middle, off.y - slope_y * middle);
+    reach_ = front.semi_diameter * (1 + tilt) + 0.5 * depth * std::max(std::abs(slope_x), std::abs(slope_y));
   }
 
   struct Corner {

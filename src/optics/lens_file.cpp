@@ -18,7 +18,19 @@
 #include "optics/zemax_lens.h"
 
 namespace objektiv {
+
 namespace {
+// "a,b,c" -> {"a", "b", "c"} (an empty part stays, to be refused as a number).
+std::vector<std::string> SplitCommas(const std::string& text) {
+  std::vector<std::string> parts;
+  size_t start = 0;
+  for (;;) {
+    const size_t comma = text.find(',', start);
+    parts.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) return parts;
+    start = comma + 1;
+  }
+}
 
 namespace fs = std::filesystem;
 
@@ -100,7 +112,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
   FileCoatings coatings;
   std::shared_ptr<const Coating> default_coating;
   std::vector<size_t> explicitly_coated;  // surfaces with their own coating=
-  int default_line = 0, object_medium_line = 0;
+  int default_line = 0, object_medium_line = 0, focus_gap_line = 0;
   std::vector<int> coating_lines;  // the lines of explicitly_coated
   std::vector<int> surface_lines;  // per surface
   while (std::getline(lines, line)) {
@@ -122,12 +134,19 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
         lens.object_medium = ParseMedium(value, lens_glasses, path, number);
         object_medium_line = number;
       }
+      else if (key == "focus_gap") {  // an anamorphic's own focusing: the gap after this row
+        if (focus_gap_line) throw MakeInputError(path, number, "focus_gap is given twice (first on line {})", focus_gap_line);
+        const std::optional<int> row = ParseIntegerIn(value, 1, 1000);
+        if (!row) throw MakeInputError(path, number, "focus_gap '{}': the row (1, 2, ...) after which the gap changes", Printable(value));
+        lens.focus_gap = *row - 1;
+        focus_gap_line = number;
+      }
       else if (key == "default_coating") {
         if (default_line) throw MakeInputError(path, number, "default_coating is given twice (first on line {})", default_line);
         default_coating = coatings.Find(value, path, number);
         default_line = number;
       }
-      else throw MakeInputError(path, number, "unknown key '{}' (name, source, focal_length, fnumber, image_circle, default_coating, object_medium)", key);
+      else throw MakeInputError(path, number, "unknown key '{}' (name, source, focal_length, fnumber, image_circle, default_coating, object_medium, focus_gap)", key);
       continue;
     }
     if (f[0] == "coating") {
@@ -137,7 +156,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
     LensSurface s;
     size_t next;
     if (f[0] == "stop") {
-      if (f.size() != 4) throw MakeInputError(path, number, "a stop line is: stop THICKNESS MEDIUM SEMI_DIAMETER");
+      if (f.size() < 4) throw MakeInputError(path, number, "a stop line is: stop THICKNESS MEDIUM SEMI_DIAMETER [decenter= tilt=]");
       if (stop_line) throw MakeInputError(path, number, "a second stop (the first is on line {})", stop_line);
       s.is_stop = true;
       s.flat = true;
@@ -177,14 +196,30 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
     s.semi_diameter = ParseFiniteNumber(f[next + 2], path, number);
     if (!(s.semi_diameter > 0)) throw MakeInputError(path, number, "semi-diameter must be positive");
     std::vector<std::string> keys;  // each option once
+    double decenter[2] = {0, 0}, tilt[3] = {0, 0, 0};
     for (size_t i = next + 3; i < f.size(); ++i) {
-      if (f[0] == "stop") throw MakeInputError(path, number, "the stop takes no options");
       size_t eq = f[i].find('=');
       if (eq == std::string::npos) throw MakeInputError(path, number, "option '{}' is not key=value", f[i]);
       std::string key = f[i].substr(0, eq), value = f[i].substr(eq + 1);
+      if (f[0] == "stop" && key != "decenter" && key != "tilt")
+        throw MakeInputError(path, number, "the stop takes no options but decenter= and tilt=");
       if (std::find(keys.begin(), keys.end(), key) != keys.end()) throw MakeInputError(path, number, "option '{}' is given twice", key);
       keys.push_back(key);
-      if (key == "k") {
+      if (key == "decenter" || key == "tilt") {  // mm in x, y; degrees about x, y, z
+        const std::vector<std::string> parts = SplitCommas(value);
+        const size_t most = key == "decenter" ? 2 : 3;
+        if (parts.empty() || parts.size() > most)
+          throw MakeInputError(path, number, "{}={}: {}", key, Printable(value),
+                               key == "decenter" ? "DX,DY in mm" : "AX[,AY[,AZ]] in degrees");
+        for (size_t k = 0; k < parts.size(); ++k) {
+          const double v = ParseFiniteNumber(parts[k], path, number);
+          if (key == "decenter" && !(std::abs(v) <= kMaxLensLength))
+            throw MakeInputError(path, number, "decenter {} mm is beyond {} mm: not a lens", v, kMaxLensLength);
+          if (key == "tilt" && !(std::abs(v) < 90))
+            throw MakeInputError(path, number, "tilt {} degrees: a surface is tilted by less than 90 degrees", v);
+          (key == "decenter" ? decenter[k] : tilt[k]) = v;
+        }
+      } else if (key == "k") {
         s.conic = ParseFiniteNumber(value, path, number);
       } else if (key == "rx") {  // a toroid: its x-z section's radius (inf: a cylinder curved in y)
         s.toroidal = true;
@@ -225,9 +260,12 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
         s.aspheric[(*order - 4) / 2] = ParseFiniteNumber(value, path, number);
       } else {
         throw MakeInputError(path, number, "unknown option '{}' ({})", key,
-                             s.mirror ? "k, a4..a16, rx, obscuration, reflectance, stop" : "k, a4..a16, rx, coating, obscuration");
+                             s.mirror ? "k, a4..a16, rx, decenter, tilt, obscuration, reflectance, stop"
+                                      : "k, a4..a16, rx, decenter, tilt, coating, obscuration");
       }
     }
+    const SurfacePlacement placed = SurfacePlacement::DecenterTilt(decenter[0], decenter[1], tilt[0], tilt[1], tilt[2]);
+    if (!placed.IsIdentity()) s.placement = placed;
     CheckReachable(s, path, number);
     CheckSize(s, path, number);
     lens.surfaces.push_back(std::move(s));
@@ -238,6 +276,17 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
   if (!stop_line) throw MakeInputError(path, 0, "no stop line (or a mirror with stop=yes)");
   if (lens.surfaces.back().medium) throw MakeInputError(path, last_line, "the last surface must leave the lens into air");
   if (auto mismatch = FirstDirectionMismatch(lens)) throw MakeInputError(path, surface_lines[mismatch->first], "{}", mismatch->second);
+  if (focus_gap_line) {
+    if (lens.focus_gap + 1 >= int(lens.surfaces.size()))
+      throw MakeInputError(path, focus_gap_line, "focus_gap {}: the gap after row {} lies inside the lens only for rows 1 to {}",
+                           lens.focus_gap + 1, lens.focus_gap + 1, lens.surfaces.size() - 1);
+    if (!lens.HasToroids())
+      throw MakeInputError(path, focus_gap_line, "focus_gap: the lens has no toroidal surface; only an anamorphic focuses "
+                           "its sections apart (the whole lens moves to focus)");
+    if (!(lens.surfaces[size_t(lens.focus_gap)].thickness > 0))
+      throw MakeInputError(path, focus_gap_line, "focus_gap {}: the gap after that row is {} mm; it must be positive",
+                           lens.focus_gap + 1, lens.surfaces[size_t(lens.focus_gap)].thickness);
+  }
   // A coating where the medium does not change coats nothing.
   for (size_t k = 0; k < explicitly_coated.size(); ++k) {
     const size_t i = explicitly_coated[k];

@@ -124,8 +124,34 @@ bool LensSurface::SagAt(double x, double y, double& z, double* gx, double* gy) c
   return true;
 }
 
-bool LensPrescription::RotationallySymmetric() const {
-  return std::none_of(surfaces.begin(), surfaces.end(), [](const LensSurface& s) { return s.toroidal; });
+double LensSurface::ParaxialCurvatureInY() const {
+  if (!toroidal || !placement) return ParaxialCurvature();
+  const Vec3d u = placement->ToLocal(Vec3d(0, 1, 0));
+  const double norm = u.x * u.x + u.y * u.y;
+  if (!(norm > 0)) return ParaxialCurvature();
+  return (ParaxialCurvatureX() * u.x * u.x + ParaxialCurvature() * u.y * u.y) / norm;
+}
+
+LensPrescription TurnedAboutAxis(const LensPrescription& lens, double angle) {
+  LensPrescription out = lens;
+  const double c = std::cos(angle), s = std::sin(angle);
+  auto turn = [&](const Vec3d& v) { return Vec3d(c * v.x - s * v.y, s * v.x + c * v.y, v.z); };
+  for (LensSurface& surface : out.surfaces) {
+    if (!surface.toroidal && !surface.placement && !surface.is_stop) continue;  // the same turned
+    SurfacePlacement p = surface.placement.value_or(SurfacePlacement{});
+    p.offset = turn(p.offset);
+    p.ex = turn(p.ex), p.ey = turn(p.ey), p.ez = turn(p.ez);
+    surface.placement = p;
+  }
+  return out;
+}
+
+bool LensPrescription::HasToroids() const {
+  return std::any_of(surfaces.begin(), surfaces.end(), [](const LensSurface& s) { return s.toroidal; });
+}
+
+bool LensPrescription::Centred() const {
+  return std::none_of(surfaces.begin(), surfaces.end(), [](const LensSurface& s) { return s.placement.has_value(); });
 }
 
 void CheckReachable(const LensSurface& s, const std::string& path, int line) {
@@ -173,6 +199,7 @@ LensPrescription LensPrescription::Scaled(double factor) const {
     s.obscuration *= factor;
     s.a2 /= factor;
     s.curvature_x /= factor;
+    if (s.placement) s.placement->offset *= factor;
     double scale = factor * factor * factor;  // 2k - 1 = 3 for a4
     for (double& a : s.aspheric) {
       a /= scale;

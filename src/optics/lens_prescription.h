@@ -9,6 +9,7 @@
 #include "optics/coating.h"
 #include "optics/glass.h"
 #include "optics/mirror_metal.h"
+#include "optics/surface_placement.h"
 
 namespace objektiv {
 
@@ -40,6 +41,8 @@ struct LensSurface {
   // section is a circle of curvature curvature_x; 0: flat in x (a cylinder curved in y only).
   bool toroidal = false;
   double curvature_x = 0;
+  // Decentred or tilted (optics/surface_placement.h); none: centred on the axis.
+  std::optional<SurfacePlacement> placement;
   // Anti-reflection coating (optics/coating.h); null: bare. It lies on the surface's glass: on
   // the side of the glass where the other side is air, on the film side between two glasses.
   std::shared_ptr<const Coating> coating;
@@ -68,6 +71,11 @@ struct LensSurface {
   bool SagAt(double x, double y, double& z, double* gx = nullptr, double* gy = nullptr) const;
   // Paraxial curvature of the x-z section (a toroid's curvature_x, else ParaxialCurvature()).
   double ParaxialCurvatureX() const { return toroidal ? curvature_x : ParaxialCurvature(); }
+  // The vertex curvature of the surface's section by the lens's y-z plane, what paraxial
+  // optics traces: ParaxialCurvature(), or for a toroid turned about its axis by its placement,
+  // Euler's c_x u_x^2 + c_y u_y^2, u the lens's y in the surface's frame (a tilt is ignored:
+  // paraxial data are those of the lens centred).
+  double ParaxialCurvatureInY() const;
 };
 
 struct LensPrescription {
@@ -77,6 +85,10 @@ struct LensPrescription {
   // The medium in front of the first surface, where the scene is: null is air; water for an
   // underwater housing's port, oil for an immersion objective. The film side is always air.
   std::shared_ptr<const Glass> object_medium;
+  // An anamorphic's own focusing (a front adapter's focus ring): the gap after this surface
+  // (0-based) changes so that the x-z section focuses where the y-z section does
+  // (optics/anamorphic.h: AnamorphicFocusGap); -1: none (only the whole lens moves).
+  int focus_gap = -1;
   // The coatings the lens file defines (used by its surfaces or not: a scene may choose one).
   std::vector<std::shared_ptr<const Coating>> defined_coatings;
 
@@ -94,9 +106,12 @@ struct LensPrescription {
   // thicknesses, negative ones (after a mirror) included.
   double TotalTrack() const;
   int MirrorCount() const;
-  // Whether every surface is a figure of revolution about the axis (no toroid): the pupil
-  // bounds, the thin- and thick-lens models and the radial analyses rely on it.
-  bool RotationallySymmetric() const;
+  // Whether every surface is a figure of revolution about the axis (no toroid, none decentred
+  // or tilted): the radial pupil bounds, the thin- and thick-lens models and the radial
+  // analyses rely on it.
+  bool RotationallySymmetric() const { return Centred() && !HasToroids(); }
+  bool HasToroids() const;
+  bool Centred() const;  // no surface decentred or tilted
   // +1 where light leaves surface i toward the film (+z), -1 toward the object (after an odd
   // number of mirrors up to and including i).
   int DirectionAfter(size_t i) const;
@@ -113,6 +128,10 @@ struct LensPrescription {
 void CoatAirGlassSurfaces(LensPrescription& lens, const std::shared_ptr<const Coating>& coating, bool only_bare);
 
 void CheckReachable(const LensSurface& s, const std::string& path, int line);
+// The lens turned by `angle` (radians, right-handed) about its axis, as a whole: its toroids,
+// decentred or tilted surfaces and its stop (with the opening the stop's frame carries) get the
+// turned placement; surfaces of revolution on the axis are the same turned.
+LensPrescription TurnedAboutAxis(const LensPrescription& lens, double angle);
 // The first surface whose thickness goes against the direction light travels after it (a
 // positive thickness after an odd number of mirrors, a negative one otherwise), or an odd
 // number of mirrors in all (the image would lie on the object's side, where the film cannot

@@ -1,9 +1,13 @@
 #include "optics/lens_setup.h"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "base/error.h"
 #include "base/log.h"
+#include "optics/anamorphic.h"
+#include "optics/focusing.h"
 #include "optics/real_fnumber.h"
 
 namespace objektiv {
@@ -70,6 +74,53 @@ double DistanceFromFilm(const LensSystem& lens, const FocusRequest& focus) {
   return distance;
 }
 
+// Sets the anamorphic focus gap of the lens for an object `distance` mm from the film (where
+// its prescription has one; optics/anamorphic.h) and says how it moved ("" where it did not).
+std::string FocusAnamorphicGap(LensSystem& lens, double distance, double lambda_nm) {
+  const LensPrescription& rx = lens.prescription();
+  if (rx.focus_gap < 0 || !(distance < 1e12)) return "";
+  const double back = ParaxialFocus(rx, distance, lambda_nm).back_focus;
+  const std::optional<double> gap = AnamorphicFocusGap(rx, distance, back, lambda_nm);
+  const double design = rx.surfaces[size_t(rx.focus_gap)].thickness;
+  if (!gap) {
+    spdlog::warn("lens {}: its anamorphic focusing cannot bring the horizontal section into focus at {:.4g} m (the gap "
+                 "after row {} stays {:.3f} mm)", rx.name, distance * 1e-3, rx.focus_gap + 1, design);
+    return "";
+  }
+  LensPrescription t = rx;
+  t.surfaces[size_t(rx.focus_gap)].thickness = *gap;
+  LensSystem focused(std::move(t));
+  focused.SetStopSemiDiameter(lens.StopSemiDiameter());
+  focused.SetStopShape(lens.stop_shape());
+  lens = std::move(focused);
+  return fmt::format("; anamorphic focusing: the gap after row {} {:.3f} mm (designed {:.3f})", rx.focus_gap + 1, *gap,
+                     design);
+}
+
+// For an anamorphic lens, how far apart its sections focus the object the lens is focused on
+// (paraxially), and a warning where that blurs one of them beyond a full-frame circle of
+// confusion (0.03 mm): a front adapter without focusing of its own is sharp near infinity only.
+std::string AnamorphicFocusNote(const LensSystem& lens, const LensFocus& focus, double lambda_nm, bool quiet) {
+  const LensPrescription& rx = lens.prescription();
+  if (!rx.HasToroids()) return "";
+  const double distance = focus.plane_of_focus_to_film;
+  double split = 0;
+  if (std::isinf(distance)) {
+    split = ComputeAnamorphosis(rx, lens.paraxial(), lambda_nm).focus_split;
+  } else {
+    const double y = ParaxialFocus(rx, distance, lambda_nm).back_focus;
+    const double object = distance - y - rx.TotalTrack();
+    split = ImageObject(XSection(rx), object, lambda_nm).back_focus - y;
+  }
+  const double blur = std::abs(split) / lens.paraxial().fnumber;  // the blur disc's diameter
+  if (blur > 0.03 && !quiet)
+    spdlog::warn("lens {}: at this focus its horizontal and vertical sections focus {:.2f} mm apart, which blurs one of "
+                 "them by about {:.3f} mm on the film{}", rx.name, std::abs(split), blur,
+                 rx.focus_gap < 0 ? " (the lens has no anamorphic focusing of its own: see focus_gap in docs/lens-format.md)"
+                                  : "");
+  return fmt::format("; the sections' paraxial foci {:.3f} mm apart", std::abs(split));
+}
+
 }  // namespace
 
 LensSetup SetUpLens(LensPrescription prescription, const StopRequest& stop, const FocusRequest& focus) {
@@ -86,6 +137,9 @@ LensSetup SetUpLens(LensPrescription prescription, const StopRequest& stop, cons
     spdlog::warn("lens {}: its stop is a mirror's rim (a mirror lens has no iris); the blades or mask shape it as an "
                  "iris there would", lens.prescription().name);
   const double distance = DistanceFromFilm(lens, focus);
+  // A front anamorphic with focusing of its own: its gap set for this distance first (where
+  // the y-z section puts the film), then the whole lens focused as usual.
+  std::string anamorphic_focus = FocusAnamorphicGap(lens, distance, focus.lambda_nm);
   setup.focus = focus.real_rays ? FocusLens(lens, distance, focus.lambda_nm)
                                 : ParaxialFocus(lens.prescription(), distance, focus.lambda_nm);
   lens.SetBackFocus(setup.focus.back_focus);
@@ -94,6 +148,7 @@ LensSetup SetUpLens(LensPrescription prescription, const StopRequest& stop, cons
   setup.report = fmt::format("lens {}: EFL {:.2f} mm, f/{:.3g} (paraxial f/{:.3g}){}; {}", lens.prescription().name,
                              p.efl, setup.fnumber, p.fnumber, blades >= 3 ? fmt::format(", {} blades", blades) : "",
                              DescribeFocus(setup.focus, p.bfl));
+  setup.report += anamorphic_focus + AnamorphicFocusNote(lens, setup.focus, focus.lambda_nm, focus.quiet);
   return setup;
 }
 
@@ -101,6 +156,7 @@ LensSystem AtParaxialInfinityFocus(LensPrescription prescription, double lambda_
   FocusRequest focus;
   focus.real_rays = false;
   focus.lambda_nm = lambda_nm;
+  focus.quiet = true;
   return SetUpLens(std::move(prescription), {}, focus).lens;
 }
 

@@ -26,6 +26,7 @@ struct FocusRequest {
   From from = From::kFilm;
   bool real_rays = true;  // false: the paraxial focus
   double lambda_nm = kLambdad;
+  bool quiet = false;     // no warnings (the lens commands report the figures themselves)
 };
 
 struct LensSetup {

@@ -42,6 +42,13 @@ class LensSystem {
   void SetBackFocus(double mm) { film_z_ = vertex_z_.back() + mm; }
   double BackFocus() const { return film_z_ - vertex_z_.back(); }
   double VertexZ(int i) const { return vertex_z_[i]; }
+  // A lens-space point in surface i's own frame, relative to its vertex (its placement undone:
+  // optics/surface_placement.h); for a centred surface, p - (0, 0, VertexZ(i)).
+  Vec3d InSurfaceFrame(int i, const Vec3d& p) const {
+    const Vec3d rel = p - Vec3d(0, 0, vertex_z_[i]);
+    const std::optional<SurfacePlacement>& placed = prescription_.surfaces[i].placement;
+    return placed ? placed->ToLocal(rel - placed->offset) : rel;
+  }
   double FilmZ() const { return film_z_; }
 
   // Unpolarised reflectance of surface i for light crossing it toward the film (or toward the

@@ -16,7 +16,7 @@ std::optional<Vec3d> StopCrossingFromFilm(const LensSystem& lens, const LensRay&
   TraceFromFilm(lens, ray, lambda_nm, &path);
   const size_t k = size_t(lens.SurfaceCount()) - 1 - size_t(stop);
   if (path.size() <= k) return std::nullopt;
-  return path[k];
+  return lens.InSurfaceFrame(stop, path[k]) + Vec3d(0, 0, lens.VertexZ(stop));
 }
 
 double FresnelReflectance(double n1, double n2, double cos_i) {
@@ -51,11 +51,9 @@ std::optional<double> IntersectToroid(const LensSurface& s, const Vec3d& o, cons
   return std::nullopt;
 }
 
-// Where the ray (lens space) meets surface i: the parameter t, or nothing.
-std::optional<double> Intersect(const LensSystem& lens, int i, const LensRay& ray) {
-  const LensSurface& s = lens.surface(i);
-  Vec3d o = ray.o - Vec3d(0, 0, lens.VertexZ(i));  // relative to the vertex
-  const Vec3d& d = ray.d;
+// Where a ray (o relative to the surface's vertex, in its frame) meets surface s: the
+// parameter t, or nothing.
+std::optional<double> Intersect(const LensSurface& s, const Vec3d& o, const Vec3d& d) {
   if (s.toroidal) return IntersectToroid(s, o, d);
   double c = s.Curvature();
   bool aspheric = s.HasAsphericTerms();
@@ -109,15 +107,22 @@ std::optional<double> Intersect(const LensSystem& lens, int i, const LensRay& ra
 SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, double lambda_nm, bool toward_film) {
   SurfaceCrossing c;
   const LensSurface& s = lens.surface(i);
-  std::optional<double> t = Intersect(lens, i, ray);
+  // The ray in the surface's frame (its vertex at the origin): a rigid motion, so the ray's
+  // parameter t is the same in both.
+  const Vec3d vertex(0, 0, lens.VertexZ(i));
+  const SurfacePlacement* placed = s.placement ? &*s.placement : nullptr;
+  const Vec3d o = placed ? placed->ToLocal(ray.o - vertex - placed->offset) : ray.o - vertex;
+  const Vec3d d = placed ? placed->ToLocal(ray.d) : ray.d;
+  std::optional<double> t = Intersect(s, o, d);
   if (!t || *t < -1e-9) {
     c.failure = TraceFailure::kMissedSurface;
     return c;
   }
   c.t = *t;
   c.p = ray.o + ray.d * *t;
-  const double r = std::sqrt(c.p.x * c.p.x + c.p.y * c.p.y);
-  if ((s.is_stop ? !lens.InsideStop(c.p.x, c.p.y) : r > s.semi_diameter) || r < s.obscuration) {
+  const Vec3d p = o + d * *t;  // in the surface's frame
+  const double r = std::sqrt(p.x * p.x + p.y * p.y);
+  if ((s.is_stop ? !lens.InsideStop(p.x, p.y) : r > s.semi_diameter) || r < s.obscuration) {
     c.failure = TraceFailure::kClipped;
     return c;
   }
@@ -134,12 +139,12 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
   // the sag's slope), for an asphere from the slope.
   const double curvature = s.Curvature();
   if (s.HasAsphericTerms() || s.toroidal) {
-    c.normal = SurfaceNormal(s, c.p);
+    c.normal = SurfaceNormal(s, p);
   } else {
-    const Vec3d g(-curvature * c.p.x, -curvature * c.p.y,
-                  1 - (1 + s.conic) * curvature * (c.p.z - lens.VertexZ(i)));
+    const Vec3d g(-curvature * p.x, -curvature * p.y, 1 - (1 + s.conic) * curvature * p.z);
     c.normal = g / Length(g);
   }
+  if (placed) c.normal = placed->FromLocal(c.normal);
   if (Dot(c.normal, ray.d) > 0) c.normal = -c.normal;
   c.cos_i = -Dot(c.normal, ray.d);
   if (c.mirror) {

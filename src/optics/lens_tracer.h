@@ -90,8 +90,9 @@ std::optional<LensRay> Refracted(const SurfaceCrossing& c, const Vec3d& d);
 // and `to` (1 in air).
 double SegmentTransmittance(const LensSystem& lens, int from, int to, double lambda_nm, double length);
 
-// Where a ray from the film meets the stop's plane, whether or not the stop lets it through;
-// nothing if it does not get that far (or the lens has no stop).
+// Where a ray from the film meets the stop's plane, whether or not the stop lets it through, in
+// the stop's own frame (LensSystem::InSurfaceFrame: relative to its vertex, the same as lens
+// space where it is centred); nothing if it does not get that far (or the lens has no stop).
 std::optional<Vec3d> StopCrossingFromFilm(const LensSystem& lens, const LensRay& ray, double lambda_nm);
 
 }  // namespace objektiv

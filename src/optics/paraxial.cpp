@@ -20,7 +20,7 @@ YNu TraceRange(const LensPrescription& lens, const std::vector<double>& n, YNu r
   const auto& s = lens.surfaces;
   int step = backward ? -1 : 1;
   for (int i = first;; i += step) {
-    double c = s[i].ParaxialCurvature();
+    double c = s[i].ParaxialCurvatureInY();
     const double n_object = n[i], n_film = n[i + 1];
     double n_before = backward ? n_film : n_object, n_after = backward ? n_object : n_film;
     if (backward) c = -c;  // seen from the film side the curvature changes sign

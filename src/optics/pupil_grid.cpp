@@ -24,7 +24,9 @@ class PupilGrid::Builder {
     window_ = std::max(lens.surface(last).semi_diameter, 1.5 * p.exit_pupil_diameter) + std::abs(plane_z - lens.VertexZ(last));
     tolerance_ = 1e-3 * std::max(p.exit_pupil_diameter, 1e-9);
     round_ = lens.stop_shape().symmetry().order == 0;
-    g_.quadrant_ = round_;  // centred toroids are symmetric under x -> -x and y -> -y; so is a round stop
+    // Centred toroids are symmetric under x -> -x and y -> -y; so is a round stop. A decentred or
+    // tilted surface is not.
+    g_.quadrant_ = round_ && lens.prescription().Centred();
     g_.cells_ = g_.quadrant_ ? 8 : 16;
     g_.x0_ = g_.quadrant_ ? 0 : -film_radius;
     g_.size_ = g_.quadrant_ ? film_radius : 2 * film_radius;

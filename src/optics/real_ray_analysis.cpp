@@ -259,7 +259,7 @@ double FieldForHeight(const LensSystem& lens, double h, double max_field, double
 
 FieldOfView SensorFieldOfView(const LensSystem& lens, double width, double height, double lambda_nm) {
   double max_field = MaxImagedField(lens, lambda_nm);
-  if (!lens.prescription().RotationallySymmetric()) {
+  if (lens.prescription().HasToroids() && lens.prescription().Centred()) {
     // Horizontal in the x-z section, vertical in the y-z one; the corner's chief ray is skew.
     const LensSystem x = XSectionSystem(lens);
     return {2 * FieldForHeight(x, width / 2, MaxImagedField(x, lambda_nm), lambda_nm),

@@ -56,7 +56,8 @@ std::optional<FieldCurvature> FieldCurvatureAt(const LensSystem& lens, double fi
 // Full field of view (degrees) of a sensor `width` x `height` mm: the field angles whose real
 // chief rays reach the edges and the corner (distortion included); where the sensor extends
 // beyond the image circle (fisheyes), the image circle's field. An anamorphic lens: the
-// horizontal in its x-z section (optics/anamorphic.h), no diagonal (NaN).
+// horizontal in its x-z section (optics/anamorphic.h), no diagonal (NaN). A decentred or
+// tilted lens: every height from fields in the y-z plane, as for a centred lens (approximate).
 struct FieldOfView {
   double horizontal = 0, vertical = 0, diagonal = 0;
 };

@@ -20,6 +20,18 @@
 namespace objektiv {
 namespace {
 
+// A surface's placement: the coordinate breaks' frame less its z (the vertex's place along the
+// axis); none where that is the identity.
+std::optional<SurfacePlacement> Placement(SurfacePlacement frame) {
+  frame.offset.z = 0;
+  const double e = 1e-12;
+  auto near = [&](double a, double b) { return std::abs(a - b) <= e; };
+  if (near(frame.offset.x, 0) && near(frame.offset.y, 0) && near(frame.offset.z, 0) && near(frame.ex.x, 1) &&
+      near(frame.ey.y, 1) && near(frame.ez.z, 1))
+    return std::nullopt;
+  return frame;
+}
+
 struct ZSurface {
   int line = 0, glass_line = 0, coat_line = 0;
   std::string coat;  // COAT: a coating name (Zemax's COATING.DAT or I.xx)
@@ -31,6 +43,7 @@ struct ZSurface {
   std::string glass;
   double model_nd = 0, model_vd = 0;
   double parm[17] = {};  // PARM 0..16
+  int parm_line[17] = {};  // where each was given (0: not)
 };
 
 // A thickness: Zemax writes an infinite one (the object at infinity) as a word. Every other
@@ -168,8 +181,8 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
     if (key == "TYPE") {
       need(1);
       cur->type = f[0];
-      if (f[0] != "STANDARD" && f[0] != "EVENASPH" && f[0] != "TOROIDAL")
-        throw MakeInputError(path, number, "surface type {} is not supported (STANDARD, EVENASPH and TOROIDAL are)",
+      if (f[0] != "STANDARD" && f[0] != "EVENASPH" && f[0] != "TOROIDAL" && f[0] != "COORDBRK")
+        throw MakeInputError(path, number, "surface type {} is not supported (STANDARD, EVENASPH, TOROIDAL and COORDBRK are)",
                              Printable(f[0]));
     } else if (key == "CURV") {
       need(1);
@@ -217,7 +230,11 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
       need(2);
       std::optional<int> k = ParseIntegerIn(f[0], 0, 16);
       if (!k) throw MakeInputError(path, number, "PARM index '{}' is not an integer from 0 to 16", Printable(f[0]));
+      if (cur->parm_line[*k])
+        throw MakeInputError(path, number, "PARM {} is given twice for this surface (first on line {})", *k,
+                             cur->parm_line[*k]);
       cur->parm[*k] = ParseFiniteNumber(f[1], path, number);
+      cur->parm_line[*k] = number;
     } else if (!kIgnored.count(key)) {
       warn_once(key, number);
     }
@@ -237,9 +254,43 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
     if (object.glass == "MIRROR") throw MakeInputError(path, object.glass_line, "the object surface cannot be a mirror");
     lens.object_medium = SurfaceGlass(object, lens_glasses, path);
   }
+  // Coordinate breaks: the frame the next surface is placed in (its origin and axes in the
+  // object side's frame), moved along its z by every thickness. A surface's vertex z along the
+  // axis is the frame's z there (each thickness the step to the next vertex, the last to the
+  // film), its placement the frame's decentre and axes (optics/surface_placement.h).
+  SurfacePlacement frame;
+  double last_z = 0;   // the last surface's vertex z, in the frame's coordinates
+  int break_line = 0;  // the last coordinate break's
+  auto advance = [&](double disz) { frame.offset = frame.offset + frame.ez * disz; };
+  auto place = [&](LensSurface& surface) {  // where the frame is now
+    if (!lens.surfaces.empty()) lens.surfaces.back().thickness = frame.offset.z - last_z;
+    last_z = frame.offset.z;
+    surface.placement = Placement(frame);
+  };
   for (size_t i = 1; i + 1 < surfs.size(); ++i) {
     const ZSurface& z = surfs[i];
     if (z.infinite_thickness) throw MakeInputError(path, z.line, "an infinite thickness inside the lens");
+    if (z.type == "COORDBRK") {
+      // PARM 1, 2: decentre x, y; PARM 3, 4, 5: tilts about x, y, z (degrees, right-handed);
+      // PARM 6: order (0: decentre, then tilt x, y, z; else tilt z, y, x, then decentre).
+      if (!z.glass.empty() && z.glass != "AIR")
+        throw MakeInputError(path, z.glass_line, "a coordinate break (surface {}) has no glass", i);
+      const double k = M_PI / 180;
+      auto decentre = [&] { frame.offset = frame.offset + frame.ex * (z.parm[1] * unit) + frame.ey * (z.parm[2] * unit); };
+      if (z.parm[6] == 0) {
+        decentre();
+        frame = frame.Turned(0, z.parm[3] * k).Turned(1, z.parm[4] * k).Turned(2, z.parm[5] * k);
+      } else {
+        frame = frame.Turned(2, z.parm[5] * k).Turned(1, z.parm[4] * k).Turned(0, z.parm[3] * k);
+        decentre();
+      }
+      if (!(std::abs(z.disz * unit) <= kMaxLensLength) || !(frame.offset.x * frame.offset.x + frame.offset.y * frame.offset.y <=
+                                                             kMaxLensLength * kMaxLensLength))
+        throw MakeInputError(path, z.line, "coordinate break {} moves the lens beyond {} mm", i, kMaxLensLength);
+      advance(z.disz * unit);
+      break_line = z.line;
+      continue;
+    }
     const bool in_air = (z.glass.empty() || z.glass == "AIR") && !lens.MediumBefore(lens.surfaces.size());
     if (z.diam == 0 && z.clear_aperture == 0 && z.obscuration == 0 && in_air && z.curv == 0 && z.type == "STANDARD" &&
         !z.stop) {
@@ -247,7 +298,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
       // it neither refracts nor clips; its thickness joins the gap before it.
       if (!(std::abs(z.disz * unit) <= kMaxLensLength))
         throw MakeInputError(path, z.line, "thickness {} mm is beyond {} mm: not a lens", z.disz * unit, kMaxLensLength);
-      if (!lens.surfaces.empty()) lens.surfaces.back().thickness += z.disz * unit;
+      advance(z.disz * unit);
       continue;
     }
     if (!(z.diam > 0) && !(z.clear_aperture > 0)) throw MakeInputError(path, z.line, "surface {} has no semi-diameter (DIAM)", i);
@@ -264,9 +315,11 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
       // PARM 1: the radius of rotation (0: infinite, a cylinder flat in x); PARM 2..8: the
       // profile's terms in y^2, y^4, ..., y^14; PARM 13: the count of Zernike sag terms.
       if (z.parm[13] != 0)
-        throw MakeInputError(path, z.line, "TOROIDAL surface {} with {} Zernike sag terms (PARM 13): not supported", i,
-                             z.parm[13]);
-      s.toroidal = true;
+        throw MakeInputError(path, z.parm_line[13], "TOROIDAL surface {} with {} Zernike sag terms (PARM 13): not supported",
+                             i, z.parm[13]);
+      // Flat in both sections without terms: a plane, whatever its type says.
+      s.toroidal = z.curv != 0 || z.parm[1] != 0 || s.a2 != 0 || s.HasAsphericTerms() ||
+                   std::any_of(z.parm + 2, z.parm + 9, [](double v) { return v != 0; });
       s.curvature_x = z.parm[1] != 0 ? 1 / (z.parm[1] * unit) : 0;
       s.a2 = z.parm[2] / unit;
       for (int k = 3; k <= 8; ++k) s.aspheric[k - 3] = z.parm[k] / std::pow(unit, 2 * (k - 1) - 1);
@@ -276,7 +329,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
     for (int k = 1; k <= 16; ++k) {
       const bool read = (z.type == "EVENASPH" && k <= 8) || (z.type == "TOROIDAL" && (k <= 8 || k == 13));
       if (z.parm[k] != 0 && !read)
-        spdlog::warn("{}:{}: PARM {} = {} means nothing to a {} surface: ignored", path, z.line, k, z.parm[k], z.type);
+        spdlog::warn("{}:{}: PARM {} = {} means nothing to a {} surface: ignored", path, z.parm_line[k], k, z.parm[k], z.type);
     }
     s.obscuration = z.obscuration * unit;
     if (s.obscuration >= s.semi_diameter)
@@ -332,16 +385,33 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
         iris.flat = true;
         iris.semi_diameter = s.semi_diameter;
         iris.medium = lens.MediumBefore(lens.surfaces.size());
+        place(iris);
         lens.surfaces.push_back(iris);
         coat_lines.push_back(0);
         surface_lines.push_back(z.line);
       }
     }
+    place(s);
+    const double disz = s.thickness;
     lens.surfaces.push_back(std::move(s));
     coat_lines.push_back(z.coat_line);
     surface_lines.push_back(z.line);
+    advance(disz);
   }
+  if (!lens.surfaces.empty()) lens.surfaces.back().thickness = frame.offset.z - last_z;  // to the film
   if (!have_stop) throw MakeInputError(path, 0, "no STOP surface");
+  if (break_line) {
+    // The film stays across the axis: the breaks must bring the image surface back onto it
+    // (a tilted or decentred image plane is not modelled); the film where the frame ends.
+    const SurfacePlacement& end = frame;
+    const double tilt = std::max({std::abs(end.ex.y), std::abs(end.ex.z), std::abs(end.ey.z), 1 - end.ex.x, 1 - end.ey.y});
+    if (tilt > 1e-9 || std::hypot(end.offset.x, end.offset.y) > 1e-9 * (1 + std::abs(end.offset.z)))
+      throw MakeInputError(path, break_line, "after the coordinate breaks the image surface lies tilted or decentred "
+                           "(by {:.3g} mm across the axis): the film stays on the axis; undo the breaks before the image",
+                           std::hypot(end.offset.x, end.offset.y));
+    if (lens.MirrorCount() > 0)
+      throw MakeInputError(path, break_line, "coordinate breaks in a lens with mirrors (folds) are not supported");
+  }
   if (auto mismatch = FirstCoatingMismatch(lens)) throw MakeInputError(path, coat_lines[mismatch->first], "{}", mismatch->second);
   lens_glasses.WarnUnused();
   if (lens.surfaces.back().medium) throw MakeInputError(path, surfs[surfs.size() - 2].line, "the last surface must leave the lens into air");
