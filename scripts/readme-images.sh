@@ -12,7 +12,8 @@
 # pair (docs/images/filter-yellow.png), `readme-images.sh mirror` the mirror lens's bokeh
 # (docs/images/lens-mirror-bokeh.png), `readme-images.sh underwater` the flat port's pair
 # (docs/images/lens-underwater.png), `readme-images.sh anamorphic` the anamorphic lens's
-# bokeh (docs/images/lens-anamorphic-bokeh.png).
+# bokeh (docs/images/lens-anamorphic-bokeh.png), `readme-images.sh tilt` the tilt lens's pair
+# (docs/images/lens-tilt-shift.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/objektiv
@@ -111,6 +112,13 @@ anamorphic() {
   cp "$tmp/anamorphic.png" "$out/lens-anamorphic-bokeh.png"
 }
 
+# The double Gauss wide open over a floor, straight and tilted by the Scheimpflug angle.
+tilt() {
+  render scenes/lens/tilt-shift.xml -D spp=256 -D width=480 -D height=320 -D tilt=0 -o "$tmp/tilt-0.exr"
+  render scenes/lens/tilt-shift.xml -D spp=256 -D width=480 -D height=320 -o "$tmp/tilt-9.exr"
+  oiiotool "$tmp/tilt-0.png" "$tmp/tilt-9.png" --mosaic:pad=6 2x1 -o "$out/lens-tilt-shift.png"
+}
+
 # The Cornell box through the Tessar in air and behind a flat port under water.
 underwater() {
   render scenes/cornell-box/cornell-box-underwater.xml -D spp=256 -D res=400 -D lens=tessar.brendel.100mm \
@@ -120,7 +128,7 @@ underwater() {
 }
 
 case "${1:-}" in
-  flare | caustics | bump | stereo | classic | media | sampling | filter | mirror | underwater | anamorphic)
+  flare | caustics | bump | stereo | classic | media | sampling | filter | mirror | underwater | anamorphic | tilt)
     "$1"
     echo "wrote $out/$1-*.png"
     exit 0
@@ -134,6 +142,7 @@ cp "$tmp/bokeh-open.png" "$out/lens-bokeh-wide-open.png"
 mirror
 underwater
 anamorphic
+tilt
 
 render scenes/lens/distortion-chart.xml -D spp=64 -o "$tmp/dist-wide.exr"
 render scenes/lens/distortion-chart.xml -D spp=64 -D lens=telephoto.250mm -D distance=11.4 -o "$tmp/dist-tele.exr"

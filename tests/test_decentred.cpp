@@ -1,7 +1,7 @@
-// Decentred and tilted surfaces (decenter=, tilt=): a decentred singlet's focus on its own
-// axis, a tilted plate's lateral shift against its closed form, the batch tracer against the
-// exact one, the pupil bounds of a lens without any symmetry, the placement's rotations and
-// the reader's checks.
+// Decentred and tilted surfaces (decenter=, tilt=, Zemax COORDBRK) and a scene's tilt lens: a
+// decentred singlet's focus on its own axis, a tilted plate's lateral shift against its closed
+// form, the batch tracer against the exact one, the pupil bounds of a lens without any
+// symmetry, the placement's rotations, the f-number of a moved lens, and the readers' checks.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +11,8 @@
 #include "base/error.h"
 #include "base/rng.h"
 #include "camera/lens_camera_setup.h"
+#include "camera/realistic_camera.h"
+#include "io/scene_loader.h"
 #include "optics/batch_tracer.h"
 #include "optics/lens_file.h"
 #include "optics/lens_setup.h"
@@ -151,6 +153,18 @@ TEST(Placement, CameraTakesTheCrookedLensAndTheParaxialModelsRefuseIt) {
   LensCameraSpec spec;
   spec.lens = Crooked().prescription();
   EXPECT_NO_THROW(MakeLensCamera(Transform(), 48, 32, spec));
+  // A lens's f-number is its own, whatever its placement: the double Gauss moved 3 mm across
+  // the axis as a whole (a shift lens) still opens to f/2.03 (its axial cone, traced along the
+  // film's normal, would have been vignetted to about f/2.8).
+  const LensPrescription dgauss = LoadLens("dgauss.50mm", GlassCatalog::Default());
+  SurfacePlacement shift;
+  shift.offset = {3, 0, 0};
+  StopRequest stop;
+  stop.fnumber = 2.1;
+  const LensSetup shifted = SetUpLens(MovedAsAWhole(dgauss, shift, 0), stop, {});
+  const LensSetup centred = SetUpLens(dgauss, stop, {});
+  EXPECT_NEAR(shifted.lens.StopSemiDiameter(), centred.lens.StopSemiDiameter(), 1e-12);
+  EXPECT_FALSE(shifted.lens.prescription().Centred());
   spec.model = LensModel::kThick;
   try {
     MakeLensCamera(Transform(), 48, 32, spec);
@@ -169,7 +183,7 @@ TEST(Placement, ReaderChecksDecenterAndTilt) {
     }
     return std::string("accepted");
   };
-  EXPECT_EQ(error("stop 5 air 8 decenter=0.5\nsurface 40 5 n=1.5 10 tilt=1,2,3\nsurface -40 40 air 10\n"), "accepted");
+  EXPECT_EQ(error("stop 5 air 8 decenter=0.5,0\nsurface 40 5 n=1.5 10 tilt=1,2,3\nsurface -40 40 air 10\n"), "accepted");
   EXPECT_NE(error("stop 5 air 8\nsurface 40 5 n=1.5 10 decenter=1,2,3\nsurface -40 40 air 10\n").find("test.lens:2: decenter=1,2,3"),
             std::string::npos);
   EXPECT_NE(error("stop 5 air 8\nsurface 40 5 n=1.5 10 tilt=95\nsurface -40 40 air 10\n").find("test.lens:2: tilt 95"),
@@ -177,6 +191,13 @@ TEST(Placement, ReaderChecksDecenterAndTilt) {
   EXPECT_NE(error("stop 5 air 8 k=1\nsurface 40 5 n=1.5 10\nsurface -40 40 air 10\n").find("test.lens:1: the stop takes"),
             std::string::npos);
   EXPECT_NE(error("stop 5 air 8\nsurface 40 5 n=1.5 10 decenter=,1\nsurface -40 40 air 10\n").find("test.lens:2:"),
+            std::string::npos);
+  EXPECT_NE(error("stop 5 air 8 decenter=1\nsurface 40 5 n=1.5 10\nsurface -40 40 air 10\n").find("test.lens:1: decenter=1: DX,DY"),
+            std::string::npos);
+  // A toroid turned a quarter about the axis is a toroid with its sections swapped; at 45
+  // degrees its sections cross the film's axes, which paraxial optics here does not model.
+  EXPECT_EQ(error("stop 5 air 8\nsurface inf 5 n=1.5 10 rx=40 tilt=0,0,90\nsurface -40 40 air 10\n"), "accepted");
+  EXPECT_NE(error("stop 5 air 8\nsurface inf 5 n=1.5 10 rx=40 tilt=0,0,45\nsurface -40 40 air 10\n").find("test.lens:2: a toroid turned 45 degrees"),
             std::string::npos);
   // A zero placement is none.
   EXPECT_TRUE(Parse("stop 5 air 8 decenter=0,0 tilt=0\nsurface 40 5 n=1.5 10\nsurface -40 40 air 10\n").Centred());
@@ -236,6 +257,48 @@ TEST(Placement, ZemaxCoordinateBreaksBecomePlacements) {
     EXPECT_NE(std::string(e.what()).find("cb.zmx:32: after the coordinate breaks the image surface lies tilted or decentred"),
               std::string::npos)
         << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace objektiv
+
+namespace objektiv {
+namespace {
+
+std::string TiltScene(const std::string& tilt) {
+  return R"(<scene version="3.0.0">
+  <integrator type="path"/>
+  <sensor type="realistic">
+    <string name="lens" value="dgauss.50mm"/>
+    <float name="fnumber" value="2.03"/>
+    )" + tilt + R"(
+    <float name="focus_distance" value="1.73"/>
+    <film type="hdrfilm"><integer name="width" value="48"/><integer name="height" value="32"/></film>
+  </sensor>
+</scene>)";
+}
+
+TEST(Placement, SceneTiltTurnsTheWholeLensAndKeepsItsFNumber) {
+  // tilt_x turns the lens about its entrance pupil: every surface placed, its axis turned by the
+  // angle, the stop as wide as the straight lens's at the same f-number.
+  const RenderSetup straight = LoadSceneFromString(TiltScene(""), "t.xml", {});
+  const RenderSetup tilted = LoadSceneFromString(TiltScene(R"(<float name="tilt_x" value="-9.4"/>)"), "t.xml", {});
+  const auto* a = dynamic_cast<const RealisticCamera*>(straight.camera.get());
+  const auto* b = dynamic_cast<const RealisticCamera*>(tilted.camera.get());
+  ASSERT_TRUE(a && b);
+  EXPECT_TRUE(a->lens().prescription().Centred());
+  for (const LensSurface& s : b->lens().prescription().surfaces) {
+    ASSERT_TRUE(s.placement);
+    EXPECT_NEAR(std::acos(s.placement->ez.z) * 180 / M_PI, 9.4, 1e-9);
+    EXPECT_GT(s.placement->ez.y, 0);  // right-handed about x: -9.4 turns the axis toward +y at the film end: the front down
+  }
+  EXPECT_NEAR(b->lens().StopSemiDiameter(), a->lens().StopSemiDiameter(), 1e-12);
+  try {
+    LoadSceneFromString(TiltScene(R"(<float name="tilt_x" value="50"/>)"), "t.xml", {});
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("t.xml:6:"), std::string::npos) << e.what();
   }
 }
 

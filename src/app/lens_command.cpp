@@ -214,7 +214,8 @@ int RunInfo(const LensArgs& a) {
                 MediumLabel(lens.object_medium).c_str(), d.object_index);
   std::printf("%s", PrescriptionTable(lens).c_str());
   if (!lens.Centred())
-    std::printf("  decentred or tilted surfaces: the first-order data below are the lens's centred on its axis\n");
+    std::printf("  decentred or tilted surfaces: the f-number, first-order data and field of view below are the lens's\n"
+                "  centred on its axis\n");
   std::printf("  paraxial, object at infinity, %.2f nm:\n", a.wavelength);
   std::printf("  EFL %.4f mm   BFL %.4f mm   FFL %.4f mm   f/%.3f\n", d.efl, d.bfl, d.ffl, d.fnumber);
   std::printf("  entrance pupil: diameter %.4f mm, %.4f mm behind the first vertex\n", d.entrance_pupil_diameter,

@@ -20,13 +20,17 @@ std::string MediumLabel(const std::shared_ptr<const Glass>& medium) {
 namespace {
 // The angle (degrees) between a placed surface's axis and the lens's.
 double AxisTilt(const SurfacePlacement& p) { return std::acos(std::clamp(p.ez.z, -1.0, 1.0)) * 180 / M_PI; }
-// " decentred (x, y) mm, axis tilted a deg" (and the turn about the axis where it is not tilted).
+// " decentred (x, y) mm, axis (x, y, z)" (its direction in lens space where tilted), or the turn
+// about the axis where only turned (a toroid's sections).
 std::string PlacementLabel(const SurfacePlacement& p) {
+  auto clean = [](double v) { return std::abs(v) < 1e-12 ? 0.0 : v; };
   std::string out;
-  if (p.offset.x != 0 || p.offset.y != 0) out += fmt::format(" decentred ({:.4g}, {:.4g}) mm", p.offset.x, p.offset.y);
-  const double tilt = AxisTilt(p);
-  if (tilt > 1e-9) out += fmt::format(" axis tilted {:.4g} deg", tilt);
-  else if (p.ex.y != 0) out += fmt::format(" turned {:.4g} deg about the axis", std::atan2(p.ex.y, p.ex.x) * 180 / M_PI);
+  if (clean(p.offset.x) != 0 || clean(p.offset.y) != 0)
+    out += fmt::format(" decentred ({:.4g}, {:.4g}) mm", clean(p.offset.x), clean(p.offset.y));
+  if (AxisTilt(p) > 1e-9)
+    out += fmt::format(" axis ({:.4f}, {:.4f}, {:.4f}), tilted {:.4g} deg", clean(p.ez.x), clean(p.ez.y), p.ez.z, AxisTilt(p));
+  else if (clean(p.ex.y) != 0)
+    out += fmt::format(" turned {:.4g} deg about the axis", std::atan2(p.ex.y, p.ex.x) * 180 / M_PI);
   return out;
 }
 }  // namespace

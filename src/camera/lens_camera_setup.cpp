@@ -49,7 +49,8 @@ double ChiefRayFilmX(double offset, double distance, double ep_diameter, double 
 
 std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int height, const LensCameraSpec& spec) {
   auto start = std::chrono::steady_clock::now();
-  LensSetup setup = SetUpLens(spec.lens, {spec.fnumber, spec.stop_diameter, StopOpening(spec)}, Focus(spec, to_world));
+  LensSetup setup =
+      SetUpLens(spec.lens, {spec.fnumber, spec.stop_diameter, StopOpening(spec)}, Focus(spec, to_world), spec.tilt);
   const LensSystem& lens = setup.lens;
   spdlog::info("{}", setup.report);
   std::unique_ptr<Camera> camera;

@@ -100,6 +100,15 @@ Vec2d SensorSize(const Properties& p, int width, int height, double squeeze) {
   return w / h > aspect ? Vec2d(h * aspect, h) : Vec2d(w, w / aspect);
 }
 
+// A tilt-shift lens's tilt (tilt_x, tilt_y: degrees, right-handed about the film's x and y
+// axes, x then y): the whole lens turned about its entrance pupil once its stop is set
+// (optics/lens_setup.h), the film where it was; the plane of focus tilts with it (Scheimpflug).
+std::optional<SurfacePlacement> Tilt(const Properties& p) {
+  const double ax = p.FloatIn("tilt_x", 0, -45, 45), ay = p.FloatIn("tilt_y", 0, -45, 45);
+  if (ax == 0 && ay == 0) return std::nullopt;
+  return SurfacePlacement::DecenterTilt(0, 0, ax, ay, 0);
+}
+
 // How much the picture is stretched horizontally (an anamorphic lens's squeeze undone): the
 // number given, or "lens" for the lens's own squeeze (optics/anamorphic.h); 1 where not given.
 double Desqueeze(const Properties& p, const LensPrescription& lens) {
@@ -177,6 +186,7 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b
   // The prescription scaled as a whole to another focal length (radii, thicknesses, apertures).
   if (p.Has("focal_length")) spec.lens = ScaledToFocalLength(spec.lens, p.FloatIn("focal_length", 50, 1e-3, 1e6));
   RecoatAsAsked(p, spec.lens);
+  spec.tilt = Tilt(p);
   spec.model = p.Choice("lens_model", LensModel::kReal, kLensModels);
   if (p.Has("fnumber") && p.Has("aperture_diameter"))
     throw ErrorAt(p.LocOf("aperture_diameter"), "give either fnumber or aperture_diameter, not both");
@@ -272,6 +282,8 @@ SensorRegistry::PluginType RealisticSensorPlugin() {
            {"sensor_width", PropType::kFloat},
            {"sensor_height", PropType::kFloat},
            {"desqueeze", PropType::kString},
+           {"tilt_x", PropType::kFloat},
+           {"tilt_y", PropType::kFloat},
            {"shift_x", PropType::kFloat},
            {"shift_y", PropType::kFloat},
            {"metres_per_unit", PropType::kFloat},

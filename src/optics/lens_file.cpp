@@ -207,16 +207,18 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       keys.push_back(key);
       if (key == "decenter" || key == "tilt") {  // mm in x, y; degrees about x, y, z
         const std::vector<std::string> parts = SplitCommas(value);
-        const size_t most = key == "decenter" ? 2 : 3;
-        if (parts.empty() || parts.size() > most)
+        if (key == "decenter" ? parts.size() != 2 : (parts.empty() || parts.size() > 3))
           throw MakeInputError(path, number, "{}={}: {}", key, Printable(value),
                                key == "decenter" ? "DX,DY in mm" : "AX[,AY[,AZ]] in degrees");
         for (size_t k = 0; k < parts.size(); ++k) {
           const double v = ParseFiniteNumber(parts[k], path, number);
           if (key == "decenter" && !(std::abs(v) <= kMaxLensLength))
             throw MakeInputError(path, number, "decenter {} mm is beyond {} mm: not a lens", v, kMaxLensLength);
-          if (key == "tilt" && !(std::abs(v) < 90))
-            throw MakeInputError(path, number, "tilt {} degrees: a surface is tilted by less than 90 degrees", v);
+          // Tilts about x and y below 90 degrees (the surface still faces the light); any turn about z.
+          if (key == "tilt" && !(std::abs(v) < (k == 2 ? 180.000001 : 90)))
+            throw MakeInputError(path, number, "tilt {} degrees about {}: {}", v, "xyz"[k],
+                                 k == 2 ? "a turn about z lies within 180 degrees either way"
+                                        : "the surface must still face the light (less than 90 degrees)");
           (key == "decenter" ? decenter[k] : tilt[k]) = v;
         }
       } else if (key == "k") {
@@ -266,6 +268,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
     }
     const SurfacePlacement placed = SurfacePlacement::DecenterTilt(decenter[0], decenter[1], tilt[0], tilt[1], tilt[2]);
     if (!placed.IsIdentity()) s.placement = placed;
+    if (std::string why = ToroidTurnMismatch(s); !why.empty()) throw MakeInputError(path, number, "{}", why);
     CheckReachable(s, path, number);
     CheckSize(s, path, number);
     lens.surfaces.push_back(std::move(s));

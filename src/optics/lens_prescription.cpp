@@ -146,6 +146,37 @@ LensPrescription TurnedAboutAxis(const LensPrescription& lens, double angle) {
   return out;
 }
 
+LensPrescription CentredOnAxis(const LensPrescription& lens) {
+  LensPrescription out = lens;
+  for (LensSurface& s : out.surfaces) s.placement.reset();
+  return out;
+}
+
+std::string ToroidTurnMismatch(const LensSurface& s) {
+  if (!s.toroidal || !s.placement) return "";
+  const Vec3d& ex = s.placement->ex;
+  if (std::abs(ex.x) < 1e-9 || std::abs(ex.y) < 1e-9) return "";
+  return fmt::format("a toroid turned {:.4g} degrees about the axis: its sections must lie along the film's x and y "
+                     "(turns of 0, 90, 180 degrees), as crossed cylinders at other angles are not modelled",
+                     std::atan2(ex.y, ex.x) * 180 / M_PI);
+}
+
+LensPrescription MovedAsAWhole(const LensPrescription& lens, const SurfacePlacement& motion, double pivot_z) {
+  LensPrescription out = lens;
+  const Vec3d pivot(0, 0, pivot_z);
+  double z = 0;  // each vertex's place on the axis
+  for (LensSurface& surface : out.surfaces) {
+    const SurfacePlacement p = surface.placement.value_or(SurfacePlacement{});
+    const Vec3d vertex(0, 0, z);
+    SurfacePlacement moved;
+    moved.offset = pivot + motion.offset + motion.FromLocal(vertex + p.offset - pivot) - vertex;
+    moved.ex = motion.FromLocal(p.ex), moved.ey = motion.FromLocal(p.ey), moved.ez = motion.FromLocal(p.ez);
+    surface.placement = moved;
+    z += surface.thickness;
+  }
+  return out;
+}
+
 bool LensPrescription::HasToroids() const {
   return std::any_of(surfaces.begin(), surfaces.end(), [](const LensSurface& s) { return s.toroidal; });
 }

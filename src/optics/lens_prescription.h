@@ -132,6 +132,17 @@ void CheckReachable(const LensSurface& s, const std::string& path, int line);
 // decentred or tilted surfaces and its stop (with the opening the stop's frame carries) get the
 // turned placement; surfaces of revolution on the axis are the same turned.
 LensPrescription TurnedAboutAxis(const LensPrescription& lens, double angle);
+// The same lens with every surface back on the axis, untilted (what its f-number, paraxial
+// data and field of view are reported for).
+LensPrescription CentredOnAxis(const LensPrescription& lens);
+// Why a toroid cannot lie as it is placed: turned about the axis so that its sections no longer
+// lie along the film's x and y (paraxial optics would need the coupled, skew treatment of
+// crossed cylinders, not modelled); empty where it can.
+std::string ToroidTurnMismatch(const LensSurface& s);
+// The lens moved as a whole by the rigid motion `motion` (its turn, then its offset) about the
+// point (0, 0, pivot_z) of lens space: every surface placed where that puts it (a tilt-shift
+// lens's tilt); the film stays.
+LensPrescription MovedAsAWhole(const LensPrescription& lens, const SurfacePlacement& motion, double pivot_z);
 // The first surface whose thickness goes against the direction light travels after it (a
 // positive thickness after an odd number of mirrors, a negative one otherwise), or an odd
 // number of mirrors in all (the image would lie on the object's side, where the film cannot

@@ -123,19 +123,30 @@ std::string AnamorphicFocusNote(const LensSystem& lens, const LensFocus& focus, 
 
 }  // namespace
 
-LensSetup SetUpLens(LensPrescription prescription, const StopRequest& stop, const FocusRequest& focus) {
+LensSetup SetUpLens(LensPrescription prescription, const StopRequest& stop, const FocusRequest& focus,
+                    const std::optional<SurfacePlacement>& tilt) {
   LensSetup setup{LensSystem(std::move(prescription)), 0, {}, ""};
   LensSystem& lens = setup.lens;
   if (!(lens.paraxial().efl > 0))
     throw InputError(fmt::format("{}: EFL {:.4g} mm: the lens forms no real image of a distant point (a camera needs a "
                                  "positive one)", lens.prescription().name, lens.paraxial().efl));
-  SetStop(lens, stop);
-  setup.fnumber = RealFNumber(lens);
-  CheckLightGetsThrough(lens, stop, setup.fnumber);
+  // The f-number is the lens's own: the stop is set on the lens centred on its axis (a
+  // decentred or tilted element would vignette the axial cone and take it for a slower lens).
+  LensSystem reference = lens.prescription().Centred() ? lens : LensSystem(CentredOnAxis(lens.prescription()));
+  SetStop(reference, stop);
+  setup.fnumber = RealFNumber(reference);
+  CheckLightGetsThrough(reference, stop, setup.fnumber);
+  lens.SetStopSemiDiameter(reference.StopSemiDiameter());
   lens.SetStopShape(stop.opening);
   if (!stop.opening.IsRound() && lens.StopIndex() >= 0 && lens.surface(lens.StopIndex()).mirror)
     spdlog::warn("lens {}: its stop is a mirror's rim (a mirror lens has no iris); the blades or mask shape it as an "
                  "iris there would", lens.prescription().name);
+  if (tilt) {
+    LensSystem tilted(MovedAsAWhole(lens.prescription(), *tilt, lens.paraxial().entrance_pupil_position));
+    tilted.SetStopSemiDiameter(lens.StopSemiDiameter());
+    tilted.SetStopShape(lens.stop_shape());
+    lens = std::move(tilted);
+  }
   const double distance = DistanceFromFilm(lens, focus);
   // A front anamorphic with focusing of its own: its gap set for this distance first (where
   // the y-z section puts the film), then the whole lens focused as usual.

@@ -37,8 +37,11 @@ struct LensSetup {
 };
 
 // Throws InputError (without a location: the caller knows where the request was written) when
-// the stop cannot be set as asked.
-LensSetup SetUpLens(LensPrescription prescription, const StopRequest& stop, const FocusRequest& focus);
+// the stop cannot be set as asked. `tilt`: a tilt-shift lens's tilt, the whole lens turned
+// about its entrance pupil (MovedAsAWhole) once its stop is set (the f-number is the lens's
+// own), before it focuses.
+LensSetup SetUpLens(LensPrescription prescription, const StopRequest& stop, const FocusRequest& focus,
+                    const std::optional<SurfacePlacement>& tilt = {});
 
 // The lens fully open, at its paraxial focus for an object at infinity at `lambda_nm`: how
 // `objektiv lens info`, `plot` and `analyze` take a lens.

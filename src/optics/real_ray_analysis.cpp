@@ -258,6 +258,12 @@ double FieldForHeight(const LensSystem& lens, double h, double max_field, double
 }  // namespace
 
 FieldOfView SensorFieldOfView(const LensSystem& lens, double width, double height, double lambda_nm) {
+  if (!lens.prescription().Centred()) {  // the lens's own field, centred on its axis
+    LensSystem centred(CentredOnAxis(lens.prescription()));
+    centred.SetStopSemiDiameter(lens.StopSemiDiameter());
+    centred.SetBackFocus(lens.BackFocus());
+    return SensorFieldOfView(centred, width, height, lambda_nm);
+  }
   double max_field = MaxImagedField(lens, lambda_nm);
   if (lens.prescription().HasToroids() && lens.prescription().Centred()) {
     // Horizontal in the x-z section, vertical in the y-z one; the corner's chief ray is skew.

@@ -57,7 +57,7 @@ std::optional<FieldCurvature> FieldCurvatureAt(const LensSystem& lens, double fi
 // chief rays reach the edges and the corner (distortion included); where the sensor extends
 // beyond the image circle (fisheyes), the image circle's field. An anamorphic lens: the
 // horizontal in its x-z section (optics/anamorphic.h), no diagonal (NaN). A decentred or
-// tilted lens: every height from fields in the y-z plane, as for a centred lens (approximate).
+// tilted lens: the field of the lens centred on its axis.
 struct FieldOfView {
   double horizontal = 0, vertical = 0, diagonal = 0;
 };

@@ -392,6 +392,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
       }
     }
     place(s);
+    if (std::string why = ToroidTurnMismatch(s); !why.empty()) throw MakeInputError(path, z.line, "{}", why);
     const double disz = s.thickness;
     lens.surfaces.push_back(std::move(s));
     coat_lines.push_back(z.coat_line);
