@@ -1,5 +1,6 @@
 #include "optics/real_ray_analysis.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "optics/anamorphic.h"
@@ -193,7 +194,11 @@ Spot SpotDiagram(const LensSystem& lens, double field_deg, double lambda_nm, int
   std::optional<LensRay> chief = ChiefRay(lens, field_deg, lambda_nm);
   // Centre the grid on the chief ray's entrance (the real entrance pupil's centre).
   double y_centre = chief ? chief->o.y : -std::tan(theta) * (p.entrance_pupil_position - kStartZ);
-  double radius = 0.6 * p.entrance_pupil_diameter;  // 1.2 pupil radii
+  // 1.2 pupil radii; an anamorphic's pupil is an oval: the larger of its sections' (the same
+  // grid, turned a quarter, for the lens turned a quarter: both sections' spots agree).
+  double pupil = p.entrance_pupil_diameter;
+  if (lens.prescription().HasToroids()) pupil = std::max(pupil, XSectionSystem(lens).Paraxial(lambda_nm).entrance_pupil_diameter);
+  double radius = 0.6 * pupil;
   int launched = 0;
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
