@@ -298,6 +298,9 @@ TEST(Placement, SceneTiltTurnsTheWholeLensAndKeepsItsFNumber) {
     EXPECT_GT(s.placement->ez.y, 0);  // right-handed about x: -9.4 turns the axis toward +y at the film end: the front down
   }
   EXPECT_NEAR(b->lens().StopSemiDiameter(), a->lens().StopSemiDiameter(), 1e-12);
+  // The paraxial models have no tilt: refused, not ignored.
+  std::string thin = TiltScene(R"(<float name="tilt_x" value="-5"/><string name="lens_model" value="thin"/>)");
+  EXPECT_THROW(LoadSceneFromString(thin, "t.xml", {}), InputError);
   try {
     LoadSceneFromString(TiltScene(R"(<float name="tilt_x" value="50"/>)"), "t.xml", {});
     ADD_FAILURE() << "accepted";

@@ -74,6 +74,9 @@ std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int
       throw InputError(fmt::format("lens_model {}: the paraxial models need air in front of the lens; {} looks into "
                                    "another medium (its object_medium): use lens_model real",
                                    model, spec.lens.name));
+    if (spec.tilt)
+      throw InputError(fmt::format("lens_model {}: the paraxial models cannot be tilted (tilt_x, tilt_y): use lens_model "
+                                   "real", model));
     if (!spec.lens.RotationallySymmetric())
       throw InputError(fmt::format("lens_model {}: the paraxial models are rotationally symmetric; {} is not ({}): "
                                    "use lens_model real", model, spec.lens.name,
