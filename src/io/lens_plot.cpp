@@ -34,13 +34,16 @@ Svg PlotLensLayout(const LensSystem& lens, const std::vector<double>& fields, do
   Svg svg(W, H);
   svg.Text({margin, 24}, fmt::format("{}: EFL {:.2f} mm, f/{:.2f}, {:.1f} nm", rx.name, p.efl, p.fnumber, lambda_nm), 15);
 
-  // Lens-space (z, y) of surface i's y-z section at height y in its own frame (decentred or
-  // tilted surfaces drawn where they are).
+  // Lens-space (z, y) of surface i where the lens's y-z plane cuts it at height y (a placed
+  // surface: the point of its own frame under (0, y), carried back; a surface turned about the
+  // axis, a toroid's x-z section drawn for `--section x`, then shows its curve).
   auto section = [&](int i, double y) {
     const LensSurface& s = lens.surface(i);
+    const Vec3d vertex(0, 0, lens.VertexZ(i));
+    const Vec3d under = s.placement ? s.placement->ToLocal(Vec3d(0, y, 0) - s.placement->offset) : Vec3d(0, y, 0);
     double sag = 0;
-    s.SagAt(0, y, sag);
-    const Vec3d local(0, y, sag), vertex(0, 0, lens.VertexZ(i));
+    s.SagAt(under.x, under.y, sag);
+    const Vec3d local(under.x, under.y, sag);
     const Vec3d p = s.placement ? vertex + s.placement->offset + s.placement->FromLocal(local) : vertex + local;
     return Vec2d(p.z, p.y);
   };
