@@ -12,6 +12,7 @@
 #include "base/sampling.h"
 #include "camera/lens_camera_setup.h"
 #include "camera/realistic_camera.h"
+#include "batch_agreement.h"
 #include "log_capture.h"
 #include "render_helpers.h"
 #include "optics/anamorphic.h"
@@ -29,6 +30,15 @@ namespace objektiv {
 namespace {
 
 LensPrescription Parse(const std::string& text) { return ParseNativeLens(text, "test.lens", GlassCatalog::Default()); }
+// The reader's message for a lens text, or "accepted".
+std::string ParseError(const std::string& text) {
+  try {
+    Parse(text);
+  } catch (const InputError& e) {
+    return std::string(e.what());
+  }
+  return std::string("accepted");
+}
 
 TEST(Toroid, SagIsTheTorusOfItsTwoRadii) {
   // Profile: a circle of radius Ry = 60 (z_y = Ry - sqrt(Ry^2 - y^2)); turned about the axis
@@ -173,38 +183,13 @@ TEST(Anamorphic, XSectionIsTheLensTurnedAQuarter) {
 }
 
 TEST(Anamorphic, BatchTracerFollowsTheExactOne) {
-  const LensSystem lens = Anamorphic();
-  BatchLensTracer fast(lens);
-  RayBatch batch;
-  std::vector<LensRay> rays;
-  PCG32 rng(1, 2);
-  const double rear_z = lens.VertexZ(lens.SurfaceCount() - 1);
-  for (int k = 0; k < 4000; ++k) {
-    const Vec3d o(rng.UniformFloat() * 36 - 18, rng.UniformFloat() * 24 - 12, lens.FilmZ());
-    const Vec3d aim(rng.UniformFloat() * 40 - 20, rng.UniformFloat() * 40 - 20, rear_z);
-    const Vec3d d = Normalize(aim - o);
-    rays.push_back({o, d});
-    batch.Push({float(o.x), float(o.y), float(o.z), float(d.x), float(d.y), float(d.z), 550.f});
-  }
-  fast.TraceFromFilm(batch);
-  int agree = 0, through = 0;
-  double worst = 0;
-  for (size_t k = 0; k < rays.size(); ++k) {
-    const TraceResult exact = TraceFromFilm(lens, rays[k], 550);
-    if (bool(exact.ray) == bool(batch.alive[k])) ++agree;
-    if (!exact.ray || !batch.alive[k]) continue;
-    ++through;
-    // Both carried to the plane 100 mm in front of the first vertex.
-    const double t_exact = (-100 - exact.ray->o.z) / exact.ray->d.z, t_fast = (-100 - batch.oz[k]) / batch.dz[k];
-    const double dx = exact.ray->o.x + t_exact * exact.ray->d.x - (batch.ox[k] + t_fast * batch.dx[k]);
-    const double dy = exact.ray->o.y + t_exact * exact.ray->d.y - (batch.oy[k] + t_fast * batch.dy[k]);
-    worst = std::max(worst, std::hypot(dx, dy));
-    EXPECT_NEAR(batch.transmittance[k], exact.surface_transmittance * exact.internal_transmittance, 1e-4);
-  }
-  EXPECT_GT(through, 400);
+  // Carried to the plane 100 mm in front of the first vertex.
+  const test::BatchAgreement a = test::CompareTracers(Anamorphic(), 4000, 20, -100, 1, 2);
+  EXPECT_LE(a.worst_transmittance, 1e-4);
+  EXPECT_GT(a.through, 400);
   // Rays that graze a rim may go either way in single precision: a few in a thousand.
-  EXPECT_GE(agree, int(rays.size()) - 8);
-  EXPECT_LT(worst, 5e-3);  // mm, 100 mm in front of the lens (directions to about 5e-5)
+  EXPECT_GE(a.agree, a.rays - 8);
+  EXPECT_LT(a.worst_mm, 5e-3);  // mm, 100 mm in front of the lens (directions to about 5e-5)
 }
 
 // A 1.5x anamorphic on the double Gauss at f/2 whose rims cut the beams into cat's eyes that
@@ -297,19 +282,11 @@ TEST(Anamorphic, NativeReaderChecksTheToroid) {
   EXPECT_TRUE(p.surfaces[2].toroidal);
   EXPECT_EQ(p.surfaces[2].curvature_x, 0);
   EXPECT_FALSE(p.RotationallySymmetric());
-  auto error = [](const std::string& text) {
-    try {
-      Parse(text);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("accepted");
-  };
-  EXPECT_NE(error("surface inf 5 n=1.5 10 rx=0\nstop 5 air 8\n").find("test.lens:1: rx=0"), std::string::npos);
+  EXPECT_NE(ParseError("surface inf 5 n=1.5 10 rx=0\nstop 5 air 8\n").find("test.lens:1: rx=0"), std::string::npos);
   // A semi-diameter beyond the x-z circle, and beyond where the profile reaches the axis of rotation.
-  EXPECT_NE(error("surface inf 5 n=1.5 10 rx=8\nstop 5 air 8\n").find("test.lens:1: semi-diameter 10 is larger than the toroid"),
+  EXPECT_NE(ParseError("surface inf 5 n=1.5 10 rx=8\nstop 5 air 8\n").find("test.lens:1: semi-diameter 10 is larger than the toroid"),
             std::string::npos);
-  EXPECT_NE(error("surface 12 5 n=1.5 10 rx=9\nstop 5 air 8\n").find("test.lens:1: semi-diameter 10 is larger than the toroid"),
+  EXPECT_NE(ParseError("surface 12 5 n=1.5 10 rx=9\nstop 5 air 8\n").find("test.lens:1: semi-diameter 10 is larger than the toroid"),
             std::string::npos);
 }
 
@@ -417,7 +394,7 @@ TEST(Anamorphic, DesqueezedTheBallIsRound) {
 }
 
 TEST(Anamorphic, DesqueezeIsChecked) {
-  auto error = [](const std::string& xml) {
+  auto scene_error = [](const std::string& xml) {
     try {
       LoadSceneFromString(xml, "test.xml", {});
     } catch (const InputError& e) {
@@ -427,11 +404,11 @@ TEST(Anamorphic, DesqueezeIsChecked) {
   };
   std::string symmetric = BallScene(R"(<string name="desqueeze" value="lens"/>)");
   symmetric.replace(symmetric.find("anamorphic.250mm"), 16, "dgauss.50mm");
-  EXPECT_NE(error(symmetric).find("is not anamorphic"), std::string::npos) << error(symmetric);
-  const std::string bad = error(BallScene(R"(<string name="desqueeze" value="2x"/>)"));
+  EXPECT_NE(scene_error(symmetric).find("is not anamorphic"), std::string::npos) << scene_error(symmetric);
+  const std::string bad = scene_error(BallScene(R"(<string name="desqueeze" value="2x"/>)"));
   EXPECT_NE(bad.find("test.xml:6: desqueeze '2x'"), std::string::npos) << bad;
   // A number, with an iris of blades (the x-y table over the whole film, no mirror symmetry).
-  EXPECT_EQ(error(BallScene(R"(<string name="desqueeze" value="1.33"/><integer name="blades" value="5"/>)")), "accepted");
+  EXPECT_EQ(scene_error(BallScene(R"(<string name="desqueeze" value="1.33"/><integer name="blades" value="5"/>)")), "accepted");
 }
 
 }  // namespace
@@ -480,19 +457,11 @@ TEST(Anamorphic, ItsOwnFocusingBringsBothSectionsTogether) {
 }
 
 TEST(Anamorphic, FocusGapIsChecked) {
-  auto error = [](const std::string& text) {
-    try {
-      Parse(text);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("accepted");
-  };
   const std::string adapter = "surface inf 3 n=1.5 20 rx=-50\nsurface inf 50 air 20 rx=50\nstop 10 air 8\n";
-  EXPECT_EQ(error("focus_gap: 2\n" + adapter), "accepted");
-  EXPECT_NE(error("focus_gap: 3\n" + adapter).find("test.lens:1: focus_gap 3"), std::string::npos);
-  EXPECT_NE(error("focus_gap: x\n" + adapter).find("test.lens:1: focus_gap 'x'"), std::string::npos);
-  EXPECT_NE(error("focus_gap: 1\nsurface 50 3 n=1.5 20\nsurface inf 50 air 20\nstop 10 air 8\n").find("no toroidal"),
+  EXPECT_EQ(ParseError("focus_gap: 2\n" + adapter), "accepted");
+  EXPECT_NE(ParseError("focus_gap: 3\n" + adapter).find("test.lens:1: focus_gap 3"), std::string::npos);
+  EXPECT_NE(ParseError("focus_gap: x\n" + adapter).find("test.lens:1: focus_gap 'x'"), std::string::npos);
+  EXPECT_NE(ParseError("focus_gap: 1\nsurface 50 3 n=1.5 20\nsurface inf 50 air 20\nstop 10 air 8\n").find("no toroidal"),
             std::string::npos);
 }
 

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "base/error.h"
+#include "batch_agreement.h"
 #include "base/rng.h"
 #include "camera/lens_camera_setup.h"
 #include "camera/realistic_camera.h"
@@ -92,34 +93,11 @@ LensSystem Crooked() {
 TEST(Placement, BatchTracerFollowsTheExactOne) {
   const LensSystem lens = Crooked();
   EXPECT_FALSE(lens.prescription().Centred());
-  BatchLensTracer fast(lens);
-  RayBatch batch;
-  std::vector<LensRay> rays;
-  PCG32 rng(9, 9);
-  const double rear_z = lens.VertexZ(lens.SurfaceCount() - 1);
-  for (int k = 0; k < 3000; ++k) {
-    const Vec3d o(rng.UniformFloat() * 36 - 18, rng.UniformFloat() * 24 - 12, lens.FilmZ());
-    const Vec3d aim(rng.UniformFloat() * 24 - 12, rng.UniformFloat() * 24 - 12, rear_z);
-    const Vec3d d = Normalize(aim - o);
-    rays.push_back({o, d});
-    batch.Push({float(o.x), float(o.y), float(o.z), float(d.x), float(d.y), float(d.z), 550.f});
-  }
-  fast.TraceFromFilm(batch);
-  int agree = 0, through = 0;
-  double worst = 0;
-  for (size_t k = 0; k < rays.size(); ++k) {
-    const TraceResult exact = TraceFromFilm(lens, rays[k], 550);
-    agree += bool(exact.ray) == bool(batch.alive[k]);
-    if (!exact.ray || !batch.alive[k]) continue;
-    ++through;
-    const double t_exact = (-50 - exact.ray->o.z) / exact.ray->d.z, t_fast = (-50 - batch.oz[k]) / batch.dz[k];
-    worst = std::max(worst, std::hypot(exact.ray->o.x + t_exact * exact.ray->d.x - (batch.ox[k] + t_fast * batch.dx[k]),
-                                       exact.ray->o.y + t_exact * exact.ray->d.y - (batch.oy[k] + t_fast * batch.dy[k])));
-    EXPECT_NEAR(batch.transmittance[k], exact.surface_transmittance * exact.internal_transmittance, 1e-4);
-  }
-  EXPECT_GT(through, 300);
-  EXPECT_GE(agree, int(rays.size()) - 6);
-  EXPECT_LT(worst, 2e-3);  // mm, 50 mm in front of the lens
+  const test::BatchAgreement a = test::CompareTracers(lens, 3000, 12, -50, 9, 9);
+  EXPECT_LE(a.worst_transmittance, 1e-4);
+  EXPECT_GT(a.through, 300);
+  EXPECT_GE(a.agree, a.rays - 6);
+  EXPECT_LT(a.worst_mm, 2e-3);  // mm, 50 mm in front of the lens
 }
 
 TEST(Placement, PupilBoundsHoldAllTheLight) {

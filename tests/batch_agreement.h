@@ -1,0 +1,54 @@
+// The batch (single-precision) lens tracer against the exact one on random rays from the film:
+// rays from full-frame film points aimed at points of the rear vertex's plane, traced by both
+// at 550 nm, carried to a plane in front of the lens and compared there.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "base/rng.h"
+#include "optics/batch_tracer.h"
+#include "optics/lens_tracer.h"
+
+namespace objektiv::test {
+
+struct BatchAgreement {
+  int rays = 0, agree = 0, through = 0;  // traced; passed or blocked by both; passed by both
+  double worst_mm = 0;                   // the largest distance between them on the plane
+  double worst_transmittance = 0;        // the largest difference of their transmittances
+};
+
+// `aim_half`: the aim points' square, +-aim_half mm; `plane_z`: lens-space z of the plane.
+inline BatchAgreement CompareTracers(const LensSystem& lens, int count, double aim_half, double plane_z, uint64_t seed,
+                                     uint64_t stream) {
+  BatchLensTracer fast(lens);
+  RayBatch batch;
+  std::vector<LensRay> rays;
+  PCG32 rng(seed, stream);
+  const double rear_z = lens.VertexZ(lens.SurfaceCount() - 1);
+  for (int k = 0; k < count; ++k) {
+    const Vec3d o(rng.UniformFloat() * 36 - 18, rng.UniformFloat() * 24 - 12, lens.FilmZ());
+    const Vec3d aim(rng.UniformFloat() * 2 * aim_half - aim_half, rng.UniformFloat() * 2 * aim_half - aim_half, rear_z);
+    const Vec3d d = Normalize(aim - o);
+    rays.push_back({o, d});
+    batch.Push({float(o.x), float(o.y), float(o.z), float(d.x), float(d.y), float(d.z), 550.f});
+  }
+  fast.TraceFromFilm(batch);
+  BatchAgreement a;
+  a.rays = count;
+  for (size_t k = 0; k < rays.size(); ++k) {
+    const TraceResult exact = TraceFromFilm(lens, rays[k], 550);
+    a.agree += bool(exact.ray) == bool(batch.alive[k]);
+    if (!exact.ray || !batch.alive[k]) continue;
+    ++a.through;
+    const double t_exact = (plane_z - exact.ray->o.z) / exact.ray->d.z, t_fast = (plane_z - batch.oz[k]) / batch.dz[k];
+    a.worst_mm = std::max(a.worst_mm, std::hypot(exact.ray->o.x + t_exact * exact.ray->d.x - (batch.ox[k] + t_fast * batch.dx[k]),
+                                                 exact.ray->o.y + t_exact * exact.ray->d.y - (batch.oy[k] + t_fast * batch.dy[k])));
+    a.worst_transmittance = std::max(
+        a.worst_transmittance, std::abs(batch.transmittance[k] - exact.surface_transmittance * exact.internal_transmittance));
+  }
+  return a;
+}
+
+}  // namespace objektiv::test
