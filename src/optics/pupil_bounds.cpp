@@ -47,18 +47,12 @@ class PupilBounds::Builder {
  public:
   Builder(PupilBounds& table, const LensSystem& lens_system, const PupilBoundsOptions& options)
       : t_(table), lens_(lens_system), lambdas_(options.wavelengths), rims_(options.rims) {
-    const LensPrescription& lens = lens_system.prescription();
-    const int last = int(lens.surfaces.size()) - 1;
     // Sample on the exit pupil's plane: light from every film point passes the same image of
     // the stop there, trimmed slowly by vignetting, so the region changes little across an
     // annulus (on the rear vertex plane it slides with the film position).
-    ParaxialData p = lens_system.Paraxial(lambdas_.front());
     t_.rear_z_ = PupilPlaneZ(lens_system, lambdas_.front());
-    // The window searched: wide enough for the rear element and the exit pupil; the edge's
-    // tolerance a thousandth of the region's size (its first estimate: the exit pupil).
-    window_ = std::max(lens.surfaces[last].semi_diameter, 1.5 * p.exit_pupil_diameter) +
-              std::abs(t_.rear_z_ - lens_system.VertexZ(last));
-    tolerance_ = 1e-3 * std::max(p.exit_pupil_diameter, 1e-9);
+    const PupilSearch search = PupilSearchFor(lens_system, t_.rear_z_, lambdas_.front());
+    window_ = search.window, tolerance_ = search.tolerance;
     // Columns start at 90 degrees or less. The finest: 2.8 degrees for an iris (95% or more
     // of the rays then pass for every shipped lens); 5.6 degrees for an opening without
     // symmetry, whose columns cover the whole turn (88-97% pass, in a few seconds' set-up

@@ -17,12 +17,8 @@ class PupilGrid::Builder {
   Builder(PupilGrid& grid, const LensSystem& lens, double film_radius, double plane_z, const PupilBoundsOptions& options)
       : g_(grid), lens_(lens), fast_(lens), lambdas_(options.wavelengths), plane_z_(plane_z) {
     if (!options.rims) fast_.IgnoreRims();
-    const int last = lens.SurfaceCount() - 1;
-    const ParaxialData p = lens.Paraxial(lambdas_.front());
-    // As the radial table's: wide enough for the rear element and the exit pupil; the edge's
-    // tolerance a thousandth of the exit pupil.
-    window_ = std::max(lens.surface(last).semi_diameter, 1.5 * p.exit_pupil_diameter) + std::abs(plane_z - lens.VertexZ(last));
-    tolerance_ = 1e-3 * std::max(p.exit_pupil_diameter, 1e-9);
+    const PupilSearch search = PupilSearchFor(lens, plane_z, lambdas_.front());  // as the radial table's
+    window_ = search.window, tolerance_ = search.tolerance;
     round_ = lens.stop_shape().symmetry().order == 0;
     // Centred toroids are symmetric under x -> -x and y -> -y; so is a round stop. A decentred or
     // tilted surface is not.

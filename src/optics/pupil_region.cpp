@@ -200,6 +200,13 @@ std::vector<Vec2d> TraceEdge(const RegionProbe& probe, Vec2d c, double limit, do
 
 }  // namespace
 
+PupilSearch PupilSearchFor(const LensSystem& lens, double plane_z, double lambda_nm) {
+  const int last = lens.SurfaceCount() - 1;
+  const ParaxialData p = lens.Paraxial(lambda_nm);
+  return {std::max(lens.surface(last).semi_diameter, 1.5 * p.exit_pupil_diameter) + std::abs(plane_z - lens.VertexZ(last)),
+          1e-3 * std::max(p.exit_pupil_diameter, 1e-9)};
+}
+
 PupilRegion TracePupilRegion(const PupilRegionProbe& probe, double r, const std::vector<double>& lambdas,
                              double turn) {
   return TracePupilRegionAt(probe, Vec2d(r, 0), lambdas, turn);

@@ -30,6 +30,14 @@ struct PupilRegionProbe {
   bool recentre;                // move the probe's centre off the edge (openings cut by masks)
 };
 
+// Where a table looks for regions on the sampling plane at plane_z: a window wide enough for
+// the rear element and the exit pupil (its half-width, mm), and the edge's tolerance, a
+// thousandth of the region's size (its first estimate: the exit pupil).
+struct PupilSearch {
+  double window, tolerance;
+};
+PupilSearch PupilSearchFor(const LensSystem& lens, double plane_z, double lambda_nm);
+
 // The region for the film point (r, 0), light of every wavelength given, its points turned
 // by `turn` (radians) about the axis afterwards.
 PupilRegion TracePupilRegion(const PupilRegionProbe& probe, double r, const std::vector<double>& lambdas,
