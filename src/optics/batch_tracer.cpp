@@ -240,9 +240,10 @@ void StepAll(const Step& s, RayBatch& b) {
     } else {
       // The conic through the vertex; C / q is the root on the vertex's sheet. (mx, my: 1 but
       // for a cylinder.)
-      float A = s.c * (s.mx * dx * dx + s.my * dy * dy) + s.k1 * s.c * dz * dz;
-      float B = 2 * (s.c * (s.mx * x0 * dx + s.my * y0 * dy) + s.k1 * s.c * z0 * dz - dz);
-      float C = s.c * (s.mx * x0 * x0 + s.my * y0 * y0) + s.k1 * s.c * z0 * z0 - 2 * z0;
+      const float mx = kCylinder ? s.mx : 1.f, my = kCylinder ? s.my : 1.f;  // no multiply but for a cylinder
+      float A = s.c * (mx * dx * dx + my * dy * dy) + s.k1 * s.c * dz * dz;
+      float B = 2 * (s.c * (mx * x0 * dx + my * y0 * dy) + s.k1 * s.c * z0 * dz - dz);
+      float C = s.c * (mx * x0 * x0 + my * y0 * y0) + s.k1 * s.c * z0 * z0 - 2 * z0;
       float disc = B * B - 4 * A * C;
       ok &= disc >= 0;
       float root = std::sqrt(std::max(disc, 0.f));
