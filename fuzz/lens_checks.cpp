@@ -33,6 +33,11 @@ void CheckPrescription(const LensPrescription& lens) {
     Require(std::isfinite(s.semi_diameter) && s.semi_diameter > 0, "semi-diameter not positive and finite", i);
     Require(std::isfinite(s.conic) && std::isfinite(s.a2), "conic or r^2 term not finite", i);
     for (double a : s.aspheric) Require(std::isfinite(a), "aspheric coefficient not finite", i);
+    if (s.forbes) {
+      Require(std::isfinite(s.forbes->norm_radius()) && s.forbes->norm_radius() > 0, "Q-type normalisation not positive", i);
+      for (double a : s.forbes->terms()) Require(std::isfinite(a), "Q-type term not finite", i);
+      Require(std::isfinite(s.ParaxialCurvature()), "Q-type paraxial curvature not finite", i);
+    }
     double n = s.IndexAfter(kLambdaD);
     Require(std::isfinite(n) && n >= 1, "index after the surface below 1 or not finite", i);
   }

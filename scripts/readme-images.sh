@@ -13,7 +13,8 @@
 # (docs/images/lens-mirror-bokeh.png), `readme-images.sh underwater` the flat port's pair
 # (docs/images/lens-underwater.png), `readme-images.sh anamorphic` the anamorphic lens's
 # bokeh (docs/images/lens-anamorphic-bokeh.png), `readme-images.sh tilt` the tilt lens's pair
-# (docs/images/lens-tilt-shift.png).
+# (docs/images/lens-tilt-shift.png), `readme-images.sh asphere` the singlet and its Q-type
+# asphere (docs/images/lens-asphere.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/objektiv
@@ -119,6 +120,13 @@ tilt() {
   oiiotool "$tmp/tilt-0.png" "$tmp/tilt-9.png" --mosaic:pad=6 2x1 -o "$out/lens-tilt-shift.png"
 }
 
+# The spherical singlet and the same singlet with a Q-type aspheric front, side by side.
+asphere() {
+  render scenes/lens/asphere-singlet.xml -D spp=256 -o "$tmp/singlet.exr"
+  render scenes/lens/asphere-singlet.xml -D spp=256 -D lens=asphere.50mm -o "$tmp/asphere.exr"
+  oiiotool "$tmp/singlet.png" "$tmp/asphere.png" --mosaic:pad=6 2x1 -o "$out/lens-asphere.png"
+}
+
 # The Cornell box through the Tessar in air and behind a flat port under water.
 underwater() {
   render scenes/cornell-box/cornell-box-underwater.xml -D spp=256 -D res=400 -D lens=tessar.brendel.100mm \
@@ -128,7 +136,7 @@ underwater() {
 }
 
 case "${1:-}" in
-  flare | caustics | bump | stereo | classic | media | sampling | filter | mirror | underwater | anamorphic | tilt)
+  flare | caustics | bump | stereo | classic | media | sampling | filter | mirror | underwater | anamorphic | tilt | asphere)
     "$1"
     echo "wrote $out/$1-*.png"
     exit 0
@@ -143,6 +151,7 @@ mirror
 underwater
 anamorphic
 tilt
+asphere
 
 render scenes/lens/distortion-chart.xml -D spp=64 -o "$tmp/dist-wide.exr"
 render scenes/lens/distortion-chart.xml -D spp=64 -D lens=telephoto.250mm -D distance=11.4 -o "$tmp/dist-tele.exr"

@@ -13,6 +13,7 @@
 #include "camera/lens_camera_setup.h"
 #include "camera/realistic_camera.h"
 #include "batch_agreement.h"
+#include "pupil_bound_checks.h"
 #include "log_capture.h"
 #include "render_helpers.h"
 #include "optics/anamorphic.h"
@@ -211,18 +212,10 @@ TEST(Anamorphic, PupilBoundsPassMostRaysWithoutRotationalSymmetry) {
     lens.SetStopShape(StopShape::Iris(blades, 0, 0.3));
     const PupilBounds bounds(lens, std::hypot(kHalfWidth, kHalfHeight));
     PCG32 rng(11, 3);
-    int launched = 0, passed = 0;
-    for (int i = 0; i < 20000; ++i) {
-      const Vec2d film = FilmPoint(rng);
-      const PupilBounds::Sample s = bounds.SampleRear(film, {rng.UniformFloat(), rng.UniformFloat()});
-      if (s.pdf == 0) continue;
-      ++launched;
-      const Vec3d o(film.x, film.y, lens.FilmZ());
-      passed += bool(TraceFromFilm(lens, {o, Normalize(s.point - o)}, kLambdad).ray);
-    }
-    EXPECT_GT(launched, 19500) << blades;
+    const test::PassRate pass = test::CameraPassRate(lens, bounds, 20000, rng, FilmPoint, kLambdad);
+    EXPECT_GT(pass.launched, 19500) << blades;
     // 94.5% (the radial tables of the shipped lenses: 95% or more; the shipped anamorphic 99.3%).
-    EXPECT_GE(double(passed) / launched, 0.94) << blades << " blades: " << passed << "/" << launched;
+    EXPECT_GE(pass.Rate(), 0.94) << blades << " blades: " << pass.passed << "/" << pass.launched;
   }
 }
 
@@ -235,24 +228,12 @@ TEST(Anamorphic, PupilBoundsHoldAllTheLight) {
     LensSystem lens = Vignetting();
     lens.SetStopShape(StopShape::Iris(blades, 0, 0.3));
     const PupilBounds bounds(lens, std::hypot(kHalfWidth, kHalfHeight));
-    const double half = 30;  // mm: wider than the rear element's light on the exit pupil's plane
     PCG32 rng(5, 1);
     for (Vec2d film : {Vec2d(0, 0), Vec2d(9.3, 5.1), Vec2d(-16.7, 11.2), Vec2d(17.9, -8.3), Vec2d(-1.1, -11.7)}) {
-      const Vec3d o(film.x, film.y, lens.FilmZ());
-      const int n = 40000;
-      int brute = 0, via_bound = 0;
-      for (int i = 0; i < n; ++i) {
-        const Vec3d target(half * (2 * rng.UniformFloat() - 1), half * (2 * rng.UniformFloat() - 1), bounds.rear_z());
-        brute += bool(TraceFromFilm(lens, {o, Normalize(target - o)}, kLambdad).ray);
-        const PupilBounds::Sample s = bounds.SampleRear(film, {rng.UniformFloat(), rng.UniformFloat()});
-        if (s.pdf > 0) via_bound += bool(TraceFromFilm(lens, {o, Normalize(s.point - o)}, kLambdad).ray);
-      }
-      const ConvexPolygon* poly = bounds.BoundAt(film);
-      ASSERT_TRUE(poly);
-      const double square = 4 * half * half;
-      const double a_brute = square * brute / n, a_bound = poly->area * via_bound / n;
-      const double se = std::sqrt(square * a_brute / n + poly->area * a_bound / n);
-      EXPECT_NEAR(a_bound, a_brute, 4 * se) << blades << " blades at " << film.x << ", " << film.y;
+      // 30 mm: wider than the rear element's light on the exit pupil's plane.
+      const test::AreaEstimates a = test::PassingArea(lens, bounds, film, 30, 40000, rng, kLambdad);
+      ASSERT_TRUE(a.has_bound);
+      EXPECT_NEAR(a.bound, a.brute, 4 * a.se) << blades << " blades at " << film.x << ", " << film.y;
     }
   }
 }

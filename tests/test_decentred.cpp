@@ -10,6 +10,7 @@
 
 #include "base/error.h"
 #include "batch_agreement.h"
+#include "pupil_bound_checks.h"
 #include "base/rng.h"
 #include "camera/lens_camera_setup.h"
 #include "camera/realistic_camera.h"
@@ -106,24 +107,12 @@ TEST(Placement, PupilBoundsHoldAllTheLight) {
   // symmetry: the x-y table covers the whole film).
   const LensSystem lens = Crooked();
   const PupilBounds bounds(lens, std::hypot(18.0, 12.0));
-  const double half = 30;
   PCG32 rng(2, 7);
   for (Vec2d film : {Vec2d(0, 0), Vec2d(12.1, 7.3), Vec2d(-15.2, 9.9), Vec2d(-8.4, -11.1), Vec2d(16.9, -4.2)}) {
-    const Vec3d o(film.x, film.y, lens.FilmZ());
-    const int n = 40000;
-    int brute = 0, via_bound = 0;
-    for (int i = 0; i < n; ++i) {
-      const Vec3d target(half * (2 * rng.UniformFloat() - 1), half * (2 * rng.UniformFloat() - 1), bounds.rear_z());
-      brute += bool(TraceFromFilm(lens, {o, Normalize(target - o)}, 587.56).ray);
-      const PupilBounds::Sample s = bounds.SampleRear(film, {rng.UniformFloat(), rng.UniformFloat()});
-      if (s.pdf > 0) via_bound += bool(TraceFromFilm(lens, {o, Normalize(s.point - o)}, 587.56).ray);
-    }
-    const ConvexPolygon* poly = bounds.BoundAt(film);
-    ASSERT_TRUE(poly);
-    const double square = 4 * half * half, a_brute = square * brute / n, a_bound = poly->area * via_bound / n;
-    const double se = std::sqrt(square * a_brute / n + poly->area * a_bound / n);
-    EXPECT_NEAR(a_bound, a_brute, 4 * se) << film.x << ", " << film.y;
-    EXPECT_GT(double(via_bound) / n, 0.9) << film.x << ", " << film.y;  // few rays wasted
+    const test::AreaEstimates a = test::PassingArea(lens, bounds, film, 30, 40000, rng, 587.56);
+    ASSERT_TRUE(a.has_bound);
+    EXPECT_NEAR(a.bound, a.brute, 4 * a.se) << film.x << ", " << film.y;
+    EXPECT_GT(a.passed_share, 0.9) << film.x << ", " << film.y;  // few rays wasted
   }
 }
 

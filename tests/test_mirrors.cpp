@@ -275,8 +275,9 @@ TEST(Mirrors, MirrorLensCameraGetsAllTheLightAndFewRaysAreWasted) {
     EXPECT_NEAR(mean, bmean, 4 * std::hypot(se, bse)) << "f/" << fnumber << ", film radius " << r;
     // The bound is convex: it holds the obstruction's shadow too. Wide open the share of the
     // pupil the secondary hides, (25 / 67.5)^2 = 13.7%, is lost; of the rest at least 95% passes.
-    if (fnumber == 0)
+    if (fnumber == 0) {
       EXPECT_GE(double(passed) / launched, 0.95 * (1 - std::pow(25 / 67.51, 2))) << "film radius " << r;
+    }
   }
   }
 }

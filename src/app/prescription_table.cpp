@@ -55,7 +55,8 @@ std::string PrescriptionTable(const LensPrescription& lens) {
     if (s.mirror && !s.mirror_metal && s.mirror_reflectance != 1) extra += fmt::format(" reflectance={:g}", s.mirror_reflectance);
     if (s.obscuration > 0) extra += fmt::format(" obscuration={:g}", s.obscuration);
     if (s.conic != 0) extra += fmt::format(" k={:g}", s.conic);
-    if (s.HasAsphericTerms()) extra += " aspheric";
+    if (s.forbes) extra += fmt::format(" {} ({} terms, norm {:g})", s.forbes->Name(), s.forbes->terms().size(), s.forbes->norm_radius());
+    else if (s.HasAsphericTerms()) extra += " aspheric";
     if (s.toroidal) extra += s.curvature_x == 0 ? " rx=inf (cylinder)" : fmt::format(" rx={:.4f}", 1 / s.curvature_x);
     if (s.placement) extra += PlacementLabel(*s.placement);
     out += fmt::format("  {:>3}  {:>11}  {:>10.4f}  {:<{}} {:>8} {:>6}  {:>10.4f}{}\n", i + 1, radius, s.thickness,
@@ -94,6 +95,11 @@ nlohmann::ordered_json PrescriptionJson(const LensPrescription& lens) {
     }
     r["semi_diameter_mm"] = s.semi_diameter;
     if (s.conic != 0) r["conic"] = s.conic;
+    if (s.forbes) {
+      r["q_type"] = s.forbes->Name();
+      r["q_norm_mm"] = s.forbes->norm_radius();
+      r["q_terms_mm"] = s.forbes->terms();
+    }
     rows.push_back(r);
   }
   return rows;

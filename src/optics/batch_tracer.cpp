@@ -96,6 +96,13 @@ BatchLensTracer::BatchLensTracer(const LensSystem& lens_system)
     }
     f.a2 = float(s.a2);
     for (int k = 0; k < 7; ++k) f.a[k] = float(s.aspheric[k]);
+    if (s.forbes) {
+      const std::vector<double>& b = s.forbes->chebyshev();
+      f.q_count = int(b.size());
+      for (size_t k = 0; k < b.size(); ++k) f.q[k] = float(b[k]);
+      f.inv_rn2 = float(1 / (s.forbes->norm_radius() * s.forbes->norm_radius()));
+      f.qbfs = s.forbes->kind() == ForbesAsphere::Kind::kBestFitSphere;
+    }
     f.medium_after = -1;
     f.coating = -1;
     if (lens_system.Coated(int(i)) || s.mirror_metal) {
@@ -123,6 +130,11 @@ namespace {
 // Per-surface constants of the kernel, and the tables of the media on both sides.
 struct Step {
   float z, c, k1, semi2, obscuration2, reflectance, cx, mx, my, a2, a[7];
+  // A Q-type asphere's sum as Chebyshev coefficients (Surface::q), 1 / r_n^2, Qbfs or Qcon.
+  float q[ForbesAsphere::kMaxTerms];
+  int q_count;
+  float inv_rn2;
+  bool qbfs;
   // Per ray (contiguous, one value per ray of the batch): the media's indices on both sides
   // and the absorption coefficient of the medium just crossed (air: ones and zeros).
   const float *n_in, *n_out, *alpha_in;
@@ -166,6 +178,42 @@ void ApplyCoating(const float* __restrict table, RayBatch& b, bool mirror) {
   }
 }
 
+// Which terms a surface of revolution adds to its conic.
+enum class Asphere { kNone, kEven, kQType };
+
+// A surface of revolution's sag at radius r (r2 = r^2) and its slope dz/dr in single precision
+// (LensSurface::Sag, SagSlope): the conic, the r^2 term and either the even terms a4..a16 or a
+// Q-type departure (optics/forbes_asphere.h; a Qbfs surface's conic is 0, so the conic's root
+// is its sqrt(1 - c^2 r^2)).
+template <Asphere kAsphere>
+inline void AsphereSag(const Step& s, float r2, float r, float& sag, float& slope) {
+  const float root = std::sqrt(std::max(1 - s.k1 * s.c * s.c * r2, 1e-12f));
+  sag = s.c * r2 / (1 + root) + s.a2 * r2, slope = s.c * r / root + 2 * s.a2 * r;
+  if constexpr (kAsphere == Asphere::kEven) {
+    float rp = r2 * r2, rd = r2 * r;
+#pragma GCC unroll 7
+    for (int a = 0; a < 7; ++a) {
+      sag += s.a[a] * rp;
+      slope += float(4 + 2 * a) * s.a[a] * rd;
+      rp *= r2;
+      rd *= r2;
+    }
+  } else if constexpr (kAsphere == Asphere::kQType) {
+    const float x = r2 * s.inv_rn2, dx_dr = 2 * r * s.inv_rn2;
+    float q, dq_dt;
+    ChebyshevSum(s.q, s.q_count, 2 * x - 1, q, dq_dt);
+    const float dq = 2 * dq_dt;
+    if (s.qbfs) {
+      const float w = x * (1 - x);
+      sag += w * q / root;
+      slope += ((1 - 2 * x) * q + w * dq) * dx_dr / root + w * q * s.c * s.c * r / (root * root * root);
+    } else {
+      sag += x * x * q;
+      slope += (2 * x * q + x * x * dq) * dx_dr;
+    }
+  }
+}
+
 // A toroid's sag at (x, y) and its gradient (LensSurface::SagAt in single precision): the
 // profile z_y(|y|), then z = z_y + x^2 e / (1 + q), e = c_x / (1 - c_x z_y) (1 / the x-z
 // circle's radius), q = sqrt(1 - x^2 e^2); dz/dx = x e / q, dz/dy = z_y' / q. `ok` is cleared
@@ -197,9 +245,9 @@ inline void ToroidSag(const Step& s, float x, float y, float& z, float& gx, floa
 
 // kRefract: an interface between two media; kMirror: a mirror (reflects); neither: the ray
 // only meets the surface (a stop or a plane between equal media), which may clip it.
-// kToroid: a toroid (kPlane and kAspheric false), met by Newton's method from the vertex plane;
+// kToroid: a toroid (kPlane false, kAsphere kNone), met by Newton's method from the vertex plane;
 // a cylinder is the conic's kernel with one coordinate's terms masked out (Step::mx, my).
-template <bool kPlane, bool kAspheric, bool kToroid, bool kCylinder, bool kRefract, bool kMirror, bool kTransmission,
+template <bool kPlane, Asphere kAsphere, bool kToroid, bool kCylinder, bool kRefract, bool kMirror, bool kTransmission,
           bool kCoated>
 void StepAll(const Step& s, RayBatch& b) {
   const size_t n = b.Size();
@@ -255,22 +303,14 @@ void StepAll(const Step& s, RayBatch& b) {
       ok &= ok1 | ok2;
       t = (ok1 & ok2) ? std::min(t1, t2) : (ok1 ? t1 : t2);
     }
-    if constexpr (kAspheric) {
+    if constexpr (kAsphere != Asphere::kNone) {
       // Newton on z(t) - sag(r(t)) from the conic's intersection (a fixed count of steps).
 #pragma GCC unroll 6
       for (int it = 0; it < 6; ++it) {
         float px = x0 + t * dx, py = y0 + t * dy, pz = z0 + t * dz;
         float r2 = px * px + py * py, r = std::sqrt(r2);
-        float root = std::sqrt(std::max(1 - s.k1 * s.c * s.c * r2, 1e-12f));
-        float sag = s.c * r2 / (1 + root) + s.a2 * r2, slope = s.c * r / root + 2 * s.a2 * r;
-        float rp = r2 * r2, rd = r2 * r;
-#pragma GCC unroll 7
-        for (int a = 0; a < 7; ++a) {
-          sag += s.a[a] * rp;
-          slope += float(4 + 2 * a) * s.a[a] * rd;
-          rp *= r2;
-          rd *= r2;
-        }
+        float sag, slope;
+        AsphereSag<kAsphere>(s, r2, r, sag, slope);
         float drdt = (px * dx + py * dy) / std::max(r, 1e-30f);
         t -= (pz - sag) / (dz - slope * drdt);
       }
@@ -292,14 +332,12 @@ void StepAll(const Step& s, RayBatch& b) {
         nx = -s.c * s.mx * px, ny = -s.c * s.my * py, nz = 1 - s.k1 * s.c * pz;
       } else {
         float r = std::sqrt(r2);
-        float slope = s.c * r / std::sqrt(std::max(1 - s.k1 * s.c * s.c * r2, 1e-12f)) + 2 * s.a2 * r;
-        if constexpr (kAspheric) {
-          float rd = r2 * r;
-#pragma GCC unroll 7
-          for (int a = 0; a < 7; ++a) {
-            slope += float(4 + 2 * a) * s.a[a] * rd;
-            rd *= r2;
-          }
+        float slope;
+        if constexpr (kAsphere != Asphere::kNone) {
+          float sag;
+          AsphereSag<kAsphere>(s, r2, r, sag, slope);
+        } else {
+          slope = s.c * r / std::sqrt(std::max(1 - s.k1 * s.c * s.c * r2, 1e-12f)) + 2 * s.a2 * r;
         }
         float inv_r = 1 / std::max(r, 1e-30f);
         nx = -slope * px * inv_r, ny = -slope * py * inv_r;
@@ -334,19 +372,19 @@ void StepAll(const Step& s, RayBatch& b) {
   }
 }
 
-template <bool kPlane, bool kAspheric, bool kToroid, bool kCylinder, bool kRefract, bool kMirror>
+template <bool kPlane, Asphere kAsphere, bool kToroid, bool kCylinder, bool kRefract, bool kMirror>
 void StepAll(const Step& s, bool transmission, RayBatch& b) {
-  if (!transmission) StepAll<kPlane, kAspheric, kToroid, kCylinder, kRefract, kMirror, false, false>(s, b);
-  else if ((kRefract || kMirror) && s.coating) StepAll<kPlane, kAspheric, kToroid, kCylinder, kRefract, kMirror, true, true>(s, b);
-  else StepAll<kPlane, kAspheric, kToroid, kCylinder, kRefract, kMirror, true, false>(s, b);
+  if (!transmission) StepAll<kPlane, kAsphere, kToroid, kCylinder, kRefract, kMirror, false, false>(s, b);
+  else if ((kRefract || kMirror) && s.coating) StepAll<kPlane, kAsphere, kToroid, kCylinder, kRefract, kMirror, true, true>(s, b);
+  else StepAll<kPlane, kAsphere, kToroid, kCylinder, kRefract, kMirror, true, false>(s, b);
 }
 
 // The kernel for a surface's shape and what it does to the ray.
-template <bool kPlane, bool kAspheric, bool kToroid = false, bool kCylinder = false>
+template <bool kPlane, Asphere kAsphere, bool kToroid = false, bool kCylinder = false>
 void StepShape(const Step& s, bool refract, bool mirror, bool transmission, RayBatch& b) {
-  if (mirror) StepAll<kPlane, kAspheric, kToroid, kCylinder, false, true>(s, transmission, b);
-  else if (refract) StepAll<kPlane, kAspheric, kToroid, kCylinder, true, false>(s, transmission, b);
-  else StepAll<kPlane, kAspheric, kToroid, kCylinder, false, false>(s, transmission, b);
+  if (mirror) StepAll<kPlane, kAsphere, kToroid, kCylinder, false, true>(s, transmission, b);
+  else if (refract) StepAll<kPlane, kAsphere, kToroid, kCylinder, true, false>(s, transmission, b);
+  else StepAll<kPlane, kAsphere, kToroid, kCylinder, false, false>(s, transmission, b);
 }
 
 }  // namespace
@@ -419,19 +457,22 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
     // Air is medium 0 (index one, no absorption); the ray starts in air (no absorption before
     // the first surface).
     const bool absorb = k > 0;
-    Step st{sf.z, sf.c, sf.k1, sf.semi2, sf.obscuration2, sf.reflectance, sf.cx, sf.mx, sf.my, sf.a2, {},
+    Step st{sf.z, sf.c, sf.k1, sf.semi2, sf.obscuration2, sf.reflectance, sf.cx, sf.mx, sf.my, sf.a2, {}, {},
+            sf.q_count, sf.inv_rn2, sf.qbfs,
             rays.media_index.data() + (m_in + 1) * count,
             rays.media_index.data() + (m_out + 1) * count,
             rays.media_alpha.data() + (absorb && absorbing ? m_in + 1 : 0) * count,
             sf.coating < 0 ? nullptr : coating_tables_[2 * sf.coating + (from_film ? 1 : 0)].data()};
     std::copy(sf.a, sf.a + 7, st.a);
+    std::copy(sf.q, sf.q + sf.q_count, st.q);
     const bool refract = m_in != m_out && !sf.mirror;  // the stop too, where it parts two media
     if (sf.placed) ToSurfaceFrame(sf, rays);
-    if (sf.toroid) StepShape<false, false, true>(st, refract, sf.mirror, transmission, rays);
-    else if (sf.cylinder) StepShape<false, false, false, true>(st, refract, sf.mirror, transmission, rays);
-    else if (sf.plane) StepShape<true, false>(st, refract, sf.mirror, transmission, rays);
-    else if (sf.aspheric) StepShape<false, true>(st, refract, sf.mirror, transmission, rays);
-    else StepShape<false, false>(st, refract, sf.mirror, transmission, rays);
+    if (sf.toroid) StepShape<false, Asphere::kNone, true>(st, refract, sf.mirror, transmission, rays);
+    else if (sf.cylinder) StepShape<false, Asphere::kNone, false, true>(st, refract, sf.mirror, transmission, rays);
+    else if (sf.plane) StepShape<true, Asphere::kNone>(st, refract, sf.mirror, transmission, rays);
+    else if (sf.q_count > 0) StepShape<false, Asphere::kQType>(st, refract, sf.mirror, transmission, rays);
+    else if (sf.aspheric) StepShape<false, Asphere::kEven>(st, refract, sf.mirror, transmission, rays);
+    else StepShape<false, Asphere::kNone>(st, refract, sf.mirror, transmission, rays);
     if (coated && (refract || sf.mirror) && st.coating) ApplyCoating(st.coating, rays, sf.mirror);
     if (sf.is_stop) {
       if (rays.record_stop) {

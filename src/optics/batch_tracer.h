@@ -74,6 +74,12 @@ class BatchLensTracer {
     float origin[3] = {0, 0, 0}, axes[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     float reflectance;            // a mirror's
     float a2, a[7];
+    // A Q-type asphere (LensSurface::forbes): its sum's Chebyshev coefficients (q_count of
+    // them; 0: none), 1 / r_n^2, and whether its base is the best-fit sphere (else a conic).
+    float q[ForbesAsphere::kMaxTerms] = {};
+    int q_count = 0;
+    float inv_rn2 = 0;
+    bool qbfs = false;
     int medium_after;            // glass index (-1: air); its tables are at medium_after + 1
     int coating;                 // -1: bare (Fresnel's equations inline) or a mirror of constant reflectance; else coating_tables_[2 coating + toward object] (a metal mirror's reflectance: both the same)
   };

@@ -197,6 +197,10 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
     if (!(s.semi_diameter > 0)) throw MakeInputError(path, number, "semi-diameter must be positive");
     std::vector<std::string> keys;  // each option once
     double decenter[2] = {0, 0}, tilt[3] = {0, 0, 0};
+    // A Q-type asphere: qbfs= or qcon= (its terms), qnorm= (the normalisation radius).
+    std::optional<ForbesAsphere::Kind> q_kind;
+    std::vector<double> q_terms;
+    double q_norm = 0;
     for (size_t i = next + 3; i < f.size(); ++i) {
       size_t eq = f[i].find('=');
       if (eq == std::string::npos) throw MakeInputError(path, number, "option '{}' is not key=value", f[i]);
@@ -221,6 +225,22 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
                                         : "the surface must still face the light (less than 90 degrees)");
           (key == "decenter" ? decenter[k] : tilt[k]) = v;
         }
+      } else if (key == "qbfs" || key == "qcon") {  // a Q-type asphere's terms a0,a1,... (mm)
+        if (q_kind) throw MakeInputError(path, number, "qbfs= and qcon= together: a Q-type surface is one or the other");
+        q_kind = key == "qbfs" ? ForbesAsphere::Kind::kBestFitSphere : ForbesAsphere::Kind::kConic;
+        const std::vector<std::string> parts = SplitCommas(value);
+        if (value.empty() || parts.size() > size_t(ForbesAsphere::kMaxTerms))
+          throw MakeInputError(path, number, "{}={}: 1 to {} terms a0,a1,... in mm", key, Printable(value), ForbesAsphere::kMaxTerms);
+        for (const std::string& part : parts) {
+          q_terms.push_back(ParseFiniteNumber(part, path, number));
+          if (!(std::abs(q_terms.back()) <= kMaxLensLength))
+            throw MakeInputError(path, number, "{} term {} mm is beyond {} mm: not a lens", key, q_terms.back(), kMaxLensLength);
+        }
+      } else if (key == "qnorm") {
+        q_norm = ParseFiniteNumber(value, path, number);
+        if (!(q_norm > 0 && q_norm <= kMaxLensLength))
+          throw MakeInputError(path, number, "qnorm {} mm: the normalisation radius must be positive (and at most {} mm)", q_norm,
+                               kMaxLensLength);
       } else if (key == "k") {
         s.conic = ParseFiniteNumber(value, path, number);
       } else if (key == "rx") {  // a toroid: its x-z section's radius (inf: a cylinder curved in y)
@@ -262,9 +282,22 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
         s.aspheric[(*order - 4) / 2] = ParseFiniteNumber(value, path, number);
       } else {
         throw MakeInputError(path, number, "unknown option '{}' ({})", key,
-                             s.mirror ? "k, a4..a16, rx, decenter, tilt, obscuration, reflectance, stop"
-                                      : "k, a4..a16, rx, decenter, tilt, coating, obscuration");
+                             s.mirror ? "k, a4..a16, qbfs, qcon, qnorm, rx, decenter, tilt, obscuration, reflectance, stop"
+                                      : "k, a4..a16, qbfs, qcon, qnorm, rx, decenter, tilt, coating, obscuration");
       }
+    }
+    if (q_kind) {
+      if (s.HasAsphericTerms())
+        throw MakeInputError(path, number, "a Q-type surface takes no a4..a16 terms (its polynomials replace them)");
+      if (s.toroidal) throw MakeInputError(path, number, "a Q-type surface is a figure of revolution: no rx=");
+      if (*q_kind == ForbesAsphere::Kind::kBestFitSphere && s.conic != 0)
+        throw MakeInputError(path, number, "qbfs= departs from the best-fit sphere (the line's radius): no k= (qcon= "
+                             "departs from a conic)");
+      // Forbes's polynomials are orthogonal over the disc they are normalised to: by default
+      // the clear aperture.
+      s.forbes = std::make_shared<const ForbesAsphere>(*q_kind, q_norm > 0 ? q_norm : s.semi_diameter, std::move(q_terms));
+    } else if (q_norm > 0) {
+      throw MakeInputError(path, number, "qnorm= without qbfs= or qcon=: it normalises a Q-type surface's polynomials");
     }
     const SurfacePlacement placed = SurfacePlacement::DecenterTilt(decenter[0], decenter[1], tilt[0], tilt[1], tilt[2]);
     if (!placed.IsIdentity()) s.placement = placed;

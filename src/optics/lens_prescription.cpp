@@ -69,6 +69,11 @@ double LensSurface::Sag(double r) const {
     z += a * rp;
     rp *= r2;
   }
+  if (s.forbes) {
+    double dz, slope;
+    s.forbes->Departure(r, c, dz, slope);
+    z += dz;
+  }
   return z;
 }
 
@@ -87,6 +92,11 @@ double LensSurface::SagSlope(double r) const {
     dz += order * a * rp;
     rp *= r2;
     order += 2;
+  }
+  if (s.forbes) {
+    double z, slope;
+    s.forbes->Departure(r, c, z, slope);
+    dz += slope;
   }
   return dz;
 }
@@ -191,6 +201,10 @@ void CheckReachable(const LensSurface& s, const std::string& path, int line) {
     double limit = 1 / (std::abs(c) * std::sqrt(1 + s.conic));
     if (s.semi_diameter > limit)
       throw MakeInputError(path, line, "semi-diameter {} is larger than the surface can reach ({:.4g})", s.semi_diameter, limit);
+    // A Qbfs departure divides by sqrt(1 - c^2 r^2): infinite at the sphere's equator.
+    if (s.forbes && s.forbes->kind() == ForbesAsphere::Kind::kBestFitSphere && !(s.semi_diameter < limit))
+      throw MakeInputError(path, line, "semi-diameter {} reaches the best-fit sphere's equator ({:.4g}), where a Qbfs departure "
+                           "is infinite", s.semi_diameter, limit);
   }
   if (!s.toroidal || s.curvature_x == 0) return;
   // A toroid must be whole over its clear disc: the circle of x-z section at height y (radius
@@ -230,6 +244,7 @@ LensPrescription LensPrescription::Scaled(double factor) const {
     s.obscuration *= factor;
     s.a2 /= factor;
     s.curvature_x /= factor;
+    if (s.forbes) s.forbes = std::make_shared<const ForbesAsphere>(s.forbes->Scaled(factor));
     if (s.placement) s.placement->offset *= factor;
     double scale = factor * factor * factor;  // 2k - 1 = 3 for a4
     for (double& a : s.aspheric) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "optics/coating.h"
+#include "optics/forbes_asphere.h"
 #include "optics/glass.h"
 #include "optics/mirror_metal.h"
 #include "optics/surface_placement.h"
@@ -35,6 +36,9 @@ struct LensSurface {
   double conic = 0;           // k: 0 sphere, -1 paraboloid
   std::array<double, 7> aspheric{};  // even aspheric coefficients a4, a6, ..., a16
   double a2 = 0;              // r^2 aspheric term (Zemax EVENASPH PARM 1); adds 2 a2 to the paraxial curvature
+  // A Q-type asphere (optics/forbes_asphere.h): Forbes's polynomials added to the conic (Qcon)
+  // or to the sphere of this radius, conic 0 (Qbfs); null: none. Not with a4..a16 or a toroid.
+  std::shared_ptr<const ForbesAsphere> forbes;
   // A toroidal surface (a cylinder where one section is flat): the y-z profile that the radius,
   // conic and aspheric terms give, turned about an axis parallel to y that crosses the axis
   // 1 / curvature_x behind the vertex (Zemax TOROIDAL, its radius of rotation). Its x-z
@@ -53,16 +57,17 @@ struct LensSurface {
   // Sets the radius from a curvature c (1/mm): a plane where c is 0 or so small (a subnormal
   // number) that 1/c overflows.
   void SetCurvature(double c);
-  // Curvature at the vertex, including the r^2 aspheric term: what paraxial optics sees.
-  double ParaxialCurvature() const { return Curvature() + 2 * a2; }
+  // Curvature at the vertex, including the r^2 aspheric term (a Qbfs surface's too): what
+  // paraxial optics sees.
+  double ParaxialCurvature() const { return Curvature() + 2 * (a2 + (forbes ? forbes->VertexR2Term() : 0.0)); }
   bool HasAsphericTerms() const {
-    if (a2 != 0) return true;
+    if (a2 != 0 || forbes) return true;
     for (double a : aspheric)
       if (a != 0) return true;
     return false;
   }
   double IndexAfter(double lambda_nm) const { return medium ? medium->Index(lambda_nm) : 1.0; }
-  // Sag z(r) relative to the vertex (conic plus even aspheric terms), and dz/dr: the surface's
+  // Sag z(r) relative to the vertex (conic plus even aspheric or Q-type terms), and dz/dr: the surface's
   // own where it is rotationally symmetric, a toroid's y-z profile.
   double Sag(double r) const;
   double SagSlope(double r) const;

@@ -13,7 +13,8 @@
 
 namespace objektiv {
 
-namespace {
+// Named (not anonymous): PupilBounds::Builder holds these, which warns in a unity build.
+namespace pupil_bounds_detail {
 
 using PointSets = std::vector<const std::vector<Vec2d>*>;
 
@@ -39,7 +40,10 @@ struct CellEnd {
   }
 };
 
-}  // namespace
+}  // namespace pupil_bounds_detail
+using pupil_bounds_detail::CellEnd;
+using pupil_bounds_detail::PointSets;
+using pupil_bounds_detail::TurnedLens;
 
 // Builds the table: regions traced at nodes (radial node k at film_radius k / bins, azimuth
 // node m at psi = span m / max_columns), each bin's columns refined, then each cell's bound.
