@@ -38,6 +38,10 @@ void CheckPrescription(const LensPrescription& lens) {
       for (double a : s.forbes->terms()) Require(std::isfinite(a), "Q-type term not finite", i);
       Require(std::isfinite(s.ParaxialCurvature()), "Q-type paraxial curvature not finite", i);
     }
+    if (s.fresnel) {
+      Require(s.fresnel->pitch() > 0 && s.semi_diameter / s.fresnel->pitch() <= 100000, "Fresnel zones not bounded", i);
+      Require(std::isfinite(s.fresnel->slab_lo()) && std::isfinite(s.fresnel->slab_hi()), "Fresnel slab not finite", i);
+    }
     double n = s.IndexAfter(kLambdaD);
     Require(std::isfinite(n) && n >= 1, "index after the surface below 1 or not finite", i);
   }

@@ -49,10 +49,21 @@ Svg PlotLensLayout(const LensSystem& lens, const std::vector<double>& fields, do
   };
   // Elements: the profile of each surface followed by the next one's, where glass lies between.
   auto profile = [&](int i, double from, double to) {
-    std::vector<Vec2d> pts;
+    std::vector<double> heights;
     const int steps = 48;
-    for (int k = 0; k <= steps; ++k) {
-      const Vec2d zy = section(i, from + (to - from) * k / steps);
+    for (int k = 0; k <= steps; ++k) heights.push_back(from + (to - from) * k / steps);
+    // A Fresnel surface's risers: the profile on both sides of each zone's edge (a sawtooth).
+    if (const FresnelZones* zones = lens.surface(i).fresnel.get()) {
+      const double lo = std::min(from, to), hi = std::max(from, to), eps = 1e-6 * zones->pitch();
+      for (double r = zones->pitch(); r < std::max(-lo, hi); r += zones->pitch())
+        for (double y : {r - eps, r + eps, -r - eps, -r + eps})
+          if (y > lo && y < hi) heights.push_back(y);
+      std::sort(heights.begin(), heights.end());
+      if (from > to) std::reverse(heights.begin(), heights.end());
+    }
+    std::vector<Vec2d> pts;
+    for (double y : heights) {
+      const Vec2d zy = section(i, y);
       pts.push_back(map(zy.x, zy.y));
     }
     return pts;

@@ -96,6 +96,7 @@ BatchLensTracer::BatchLensTracer(const LensSystem& lens_system)
     }
     f.a2 = float(s.a2);
     for (int k = 0; k < 7; ++k) f.a[k] = float(s.aspheric[k]);
+    if (s.fresnel) f.zoned = std::make_shared<const LensSurface>(s);
     if (s.forbes) {
       const std::vector<double>& b = s.forbes->chebyshev();
       f.q_count = int(b.size());
@@ -135,6 +136,7 @@ struct Step {
   int q_count;
   float inv_rn2;
   bool qbfs;
+  const LensSurface* zoned;  // a Fresnel surface (Surface::zoned), else null
   // Per ray (contiguous, one value per ray of the batch): the media's indices on both sides
   // and the absorption coefficient of the medium just crossed (air: ones and zeros).
   const float *n_in, *n_out, *alpha_in;
@@ -178,8 +180,30 @@ void ApplyCoating(const float* __restrict table, RayBatch& b, bool mirror) {
   }
 }
 
-// Which terms a surface of revolution adds to its conic.
-enum class Asphere { kNone, kEven, kQType };
+// Which terms a surface of revolution adds to its conic; kZoned: a Fresnel surface (met by
+// FresnelZones::Intersect, one ray at a time in double precision).
+enum class Asphere { kNone, kEven, kQType, kZoned };
+
+// A Fresnel surface's crossing for one ray of the batch (o relative to the vertex): its t and
+// the facet's gradient; `ok` cleared where the ray misses or meets a riser.
+void ZonedCrossing(const LensSurface& surface, float x0, float y0, float z0, float dx, float dy, float dz, float& t,
+                   float& gx, float& gy, bool& ok) {
+  t = 0, gx = gy = 0;
+  if (!ok) return;
+  const Vec3d o(x0, y0, z0), d(dx, dy, dz);
+  const std::optional<FresnelZones::Hit> hit = surface.fresnel->Intersect(surface, o, d);
+  if (!hit || hit->riser) {
+    ok = false;
+    return;
+  }
+  const Vec3d p = o + d * hit->t;
+  double z, sx, sy;
+  if (!surface.SagAt(p.x, p.y, z, &sx, &sy)) {
+    ok = false;
+    return;
+  }
+  t = float(hit->t), gx = float(sx), gy = float(sy);
+}
 
 // A surface of revolution's sag at radius r (r2 = r^2) and its slope dz/dr in single precision
 // (LensSurface::Sag, SagSlope): the conic, the r^2 term and either the even terms a4..a16 or a
@@ -271,7 +295,9 @@ void StepAll(const Step& s, RayBatch& b) {
     bool ok = alive[j] != 0;
     float t;
     [[maybe_unused]] float tgx = 0, tgy = 0;  // a toroid's gradient at the crossing
-    if constexpr (kToroid) {
+    if constexpr (kAsphere == Asphere::kZoned) {
+      ZonedCrossing(*s.zoned, x0, y0, z0, dx, dy, dz, t, tgx, tgy, ok);
+    } else if constexpr (kToroid) {
       t = -z0 / dz;
       float z, gx, gy;
 #pragma GCC unroll 8
@@ -303,7 +329,7 @@ void StepAll(const Step& s, RayBatch& b) {
       ok &= ok1 | ok2;
       t = (ok1 & ok2) ? std::min(t1, t2) : (ok1 ? t1 : t2);
     }
-    if constexpr (kAsphere != Asphere::kNone) {
+    if constexpr (kAsphere == Asphere::kEven || kAsphere == Asphere::kQType) {
       // Newton on z(t) - sag(r(t)) from the conic's intersection (a fixed count of steps).
 #pragma GCC unroll 6
       for (int it = 0; it < 6; ++it) {
@@ -325,7 +351,7 @@ void StepAll(const Step& s, RayBatch& b) {
     if constexpr (kRefract || kMirror) {
       // Normal from the sag's slope (unit, toward +z), turned to face the incoming ray.
       float nx, ny, nz = 1;
-      if constexpr (kToroid) {
+      if constexpr (kToroid || kAsphere == Asphere::kZoned) {
         nx = -tgx, ny = -tgy;
       } else if constexpr (kCylinder) {
         // The implicit form's gradient: (-c mx x, -c my y, 1 - k1 c z).
@@ -458,7 +484,7 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
     // the first surface).
     const bool absorb = k > 0;
     Step st{sf.z, sf.c, sf.k1, sf.semi2, sf.obscuration2, sf.reflectance, sf.cx, sf.mx, sf.my, sf.a2, {}, {},
-            sf.q_count, sf.inv_rn2, sf.qbfs,
+            sf.q_count, sf.inv_rn2, sf.qbfs, sf.zoned.get(),
             rays.media_index.data() + (m_in + 1) * count,
             rays.media_index.data() + (m_out + 1) * count,
             rays.media_alpha.data() + (absorb && absorbing ? m_in + 1 : 0) * count,
@@ -467,7 +493,8 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
     std::copy(sf.q, sf.q + sf.q_count, st.q);
     const bool refract = m_in != m_out && !sf.mirror;  // the stop too, where it parts two media
     if (sf.placed) ToSurfaceFrame(sf, rays);
-    if (sf.toroid) StepShape<false, Asphere::kNone, true>(st, refract, sf.mirror, transmission, rays);
+    if (sf.zoned) StepShape<false, Asphere::kZoned>(st, refract, sf.mirror, transmission, rays);
+    else if (sf.toroid) StepShape<false, Asphere::kNone, true>(st, refract, sf.mirror, transmission, rays);
     else if (sf.cylinder) StepShape<false, Asphere::kNone, false, true>(st, refract, sf.mirror, transmission, rays);
     else if (sf.plane) StepShape<true, Asphere::kNone>(st, refract, sf.mirror, transmission, rays);
     else if (sf.q_count > 0) StepShape<false, Asphere::kQType>(st, refract, sf.mirror, transmission, rays);

@@ -201,6 +201,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
     std::optional<ForbesAsphere::Kind> q_kind;
     std::vector<double> q_terms;
     double q_norm = 0;
+    double zone_pitch = 0;  // zones=: a Fresnel surface's pitch
     for (size_t i = next + 3; i < f.size(); ++i) {
       size_t eq = f[i].find('=');
       if (eq == std::string::npos) throw MakeInputError(path, number, "option '{}' is not key=value", f[i]);
@@ -236,6 +237,12 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
           if (!(std::abs(q_terms.back()) <= kMaxLensLength))
             throw MakeInputError(path, number, "{} term {} mm is beyond {} mm: not a lens", key, q_terms.back(), kMaxLensLength);
         }
+      } else if (key == "zones") {  // a Fresnel surface: the profile cut into zones this wide (mm)
+        zone_pitch = ParseFiniteNumber(value, path, number);
+        if (!(zone_pitch > 0)) throw MakeInputError(path, number, "zones={}: the zones' radial width (mm) must be positive", Printable(value));
+        if (s.semi_diameter / zone_pitch > 100000)
+          throw MakeInputError(path, number, "zones={}: {:.0f} zones over the semi-diameter {}; at most 100000", Printable(value),
+                               std::ceil(s.semi_diameter / zone_pitch), s.semi_diameter);
       } else if (key == "qnorm") {
         q_norm = ParseFiniteNumber(value, path, number);
         if (!(q_norm > 0 && q_norm <= kMaxLensLength))
@@ -282,8 +289,8 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
         s.aspheric[(*order - 4) / 2] = ParseFiniteNumber(value, path, number);
       } else {
         throw MakeInputError(path, number, "unknown option '{}' ({})", key,
-                             s.mirror ? "k, a4..a16, qbfs, qcon, qnorm, rx, decenter, tilt, obscuration, reflectance, stop"
-                                      : "k, a4..a16, qbfs, qcon, qnorm, rx, decenter, tilt, coating, obscuration");
+                             s.mirror ? "k, a4..a16, qbfs, qcon, qnorm, zones, rx, decenter, tilt, obscuration, reflectance, stop"
+                                      : "k, a4..a16, qbfs, qcon, qnorm, zones, rx, decenter, tilt, coating, obscuration");
       }
     }
     if (q_kind) {
@@ -298,6 +305,14 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       s.forbes = std::make_shared<const ForbesAsphere>(*q_kind, q_norm > 0 ? q_norm : s.semi_diameter, std::move(q_terms));
     } else if (q_norm > 0) {
       throw MakeInputError(path, number, "qnorm= without qbfs= or qcon=: it normalises a Q-type surface's polynomials");
+    }
+    if (zone_pitch > 0) {
+      if (s.toroidal) throw MakeInputError(path, number, "a Fresnel surface (zones=) is cut from a figure of revolution: no rx=");
+      if (s.Curvature() == 0 && !s.HasAsphericTerms())
+        throw MakeInputError(path, number, "zones= on a plane: a Fresnel surface cuts a curved profile (give its radius or "
+                             "aspheric terms)");
+      CheckReachable(s, path, number);  // the profile must be whole before it is cut
+      s.fresnel = std::make_shared<const FresnelZones>(s, zone_pitch);
     }
     const SurfacePlacement placed = SurfacePlacement::DecenterTilt(decenter[0], decenter[1], tilt[0], tilt[1], tilt[2]);
     if (!placed.IsIdentity()) s.placement = placed;

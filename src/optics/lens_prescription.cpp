@@ -101,15 +101,40 @@ double LensSurface::SagSlope(double r) const {
   return dz;
 }
 
+void LensSurface::SagWithSlope(double r, double& z, double& slope) const {
+  const double c = Curvature(), r2 = r * r;
+  z = 0, slope = 0;
+  if (c != 0) {
+    const double arg = 1 - (1 + conic) * c * c * r2;
+    z = c * r2 / (1 + std::sqrt(std::max(arg, 0.0)));
+    slope = c * r / std::sqrt(std::max(arg, 1e-300));
+  }
+  z += a2 * r2, slope += 2 * a2 * r;
+  double rp = r2 * r2, rd = r2 * r;  // r^4, r^3
+  int order = 4;
+  for (double a : aspheric) {
+    z += a * rp, slope += order * a * rd;
+    rp *= r2, rd *= r2, order += 2;
+  }
+  if (forbes) {
+    double dz, ds;
+    forbes->Departure(r, c, dz, ds);
+    z += dz, slope += ds;
+  }
+}
+
 bool LensSurface::SagAt(double x, double y, double& z, double* gx, double* gy) const {
   const double c = Curvature();
   if (!toroidal) {
     const double r = std::sqrt(x * x + y * y);
     if (c != 0 && (1 + conic) * c * c * r * r > 1) return false;
-    z = Sag(r);
+    double slope = 0;
+    if (gx) SagWithSlope(r, z, slope);
+    else z = Sag(r);
+    if (fresnel) z -= fresnel->BaseHeight(*this, fresnel->Zone(r));
     if (gx) {
-      const double slope = r > 0 ? SagSlope(r) / r : 0;
-      *gx = slope * x, *gy = slope * y;
+      const double per_r = r > 0 ? slope / r : 0;
+      *gx = per_r * x, *gy = per_r * y;
     }
     return true;
   }
@@ -251,6 +276,8 @@ LensPrescription LensPrescription::Scaled(double factor) const {
       a /= scale;
       scale *= factor * factor;
     }
+    // The zones of the scaled profile (their slab follows it).
+    if (s.fresnel) s.fresnel = std::make_shared<const FresnelZones>(s, s.fresnel->pitch() * factor);
   }
   if (out.design_focal_length > 0) out.design_focal_length *= factor;
   if (out.image_circle > 0) out.image_circle *= factor;

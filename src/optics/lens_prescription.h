@@ -8,6 +8,7 @@
 
 #include "optics/coating.h"
 #include "optics/forbes_asphere.h"
+#include "optics/fresnel_zones.h"
 #include "optics/glass.h"
 #include "optics/mirror_metal.h"
 #include "optics/surface_placement.h"
@@ -39,6 +40,9 @@ struct LensSurface {
   // A Q-type asphere (optics/forbes_asphere.h): Forbes's polynomials added to the conic (Qcon)
   // or to the sphere of this radius, conic 0 (Qbfs); null: none. Not with a4..a16 or a toroid.
   std::shared_ptr<const ForbesAsphere> forbes;
+  // A Fresnel surface (optics/fresnel_zones.h): the profile above cut into zones of one pitch,
+  // each facet lowered to the vertex plane, risers between them; null: the profile itself.
+  std::shared_ptr<const FresnelZones> fresnel;
   // A toroidal surface (a cylinder where one section is flat): the y-z profile that the radius,
   // conic and aspheric terms give, turned about an axis parallel to y that crosses the axis
   // 1 / curvature_x behind the vertex (Zemax TOROIDAL, its radius of rotation). Its x-z
@@ -71,8 +75,10 @@ struct LensSurface {
   // own where it is rotationally symmetric, a toroid's y-z profile.
   double Sag(double r) const;
   double SagSlope(double r) const;
+  void SagWithSlope(double r, double& z, double& slope) const;  // both in one pass
   // Sag z(x, y) of any surface and, where asked, its gradient (dz/dx, dz/dy); false outside
-  // the surface (beyond where a conic turns over, or a toroid's profile reaches its axis).
+  // the surface (beyond where a conic turns over, or a toroid's profile reaches its axis). A
+  // Fresnel surface's is its facet's (the profile's slope, lowered to the vertex plane).
   bool SagAt(double x, double y, double& z, double* gx = nullptr, double* gy = nullptr) const;
   // Paraxial curvature of the x-z section (a toroid's curvature_x, else ParaxialCurvature()).
   double ParaxialCurvatureX() const { return toroidal ? curvature_x : ParaxialCurvature(); }

@@ -52,8 +52,15 @@ std::optional<double> IntersectToroid(const LensSurface& s, const Vec3d& o, cons
 }
 
 // Where a ray (o relative to the surface's vertex, in its frame) meets surface s: the
-// parameter t, or nothing.
-std::optional<double> Intersect(const LensSurface& s, const Vec3d& o, const Vec3d& d) {
+// parameter t, or nothing; `blocked` is set where it meets a Fresnel surface's riser.
+std::optional<double> Intersect(const LensSurface& s, const Vec3d& o, const Vec3d& d, bool& blocked) {
+  blocked = false;
+  if (s.fresnel) {
+    const std::optional<FresnelZones::Hit> hit = s.fresnel->Intersect(s, o, d);
+    if (!hit) return std::nullopt;
+    blocked = hit->riser;
+    return hit->t;
+  }
   if (s.toroidal) return IntersectToroid(s, o, d);
   double c = s.Curvature();
   bool aspheric = s.HasAsphericTerms();
@@ -113,9 +120,16 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
   const SurfacePlacement* placed = s.placement ? &*s.placement : nullptr;
   const Vec3d o = placed ? placed->ToLocal(ray.o - vertex - placed->offset) : ray.o - vertex;
   const Vec3d d = placed ? placed->ToLocal(ray.d) : ray.d;
-  std::optional<double> t = Intersect(s, o, d);
+  bool blocked;
+  std::optional<double> t = Intersect(s, o, d, blocked);
   if (!t || *t < -1e-9) {
     c.failure = TraceFailure::kMissedSurface;
+    return c;
+  }
+  if (blocked) {  // a Fresnel surface's riser
+    c.t = *t;
+    c.p = ray.o + ray.d * *t;
+    c.failure = TraceFailure::kClipped;
     return c;
   }
   c.t = *t;
@@ -138,7 +152,7 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
   // implicit form c (x^2 + y^2) + (1 + k) c z^2 - 2 z = 0 at the point (no square root of
   // the sag's slope), for an asphere from the slope.
   const double curvature = s.Curvature();
-  if (s.HasAsphericTerms() || s.toroidal) {
+  if (s.HasAsphericTerms() || s.toroidal || s.fresnel) {
     c.normal = SurfaceNormal(s, p);
   } else {
     const Vec3d g(-curvature * p.x, -curvature * p.y, 1 - (1 + s.conic) * curvature * p.z);
