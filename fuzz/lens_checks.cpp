@@ -38,6 +38,8 @@ void CheckPrescription(const LensPrescription& lens) {
       for (double a : s.forbes->terms()) Require(std::isfinite(a), "Q-type term not finite", i);
       Require(std::isfinite(s.ParaxialCurvature()), "Q-type paraxial curvature not finite", i);
     }
+    if (s.form_error)
+      Require(s.form_error->peak_to_valley() > 0 && s.form_error->peak_to_valley() <= 1, "form error not in (0, 1 mm]", i);
     if (s.fresnel) {
       Require(s.fresnel->pitch() > 0 && s.semi_diameter / s.fresnel->pitch() <= 100000, "Fresnel zones not bounded", i);
       Require(std::isfinite(s.fresnel->slab_lo()) && std::isfinite(s.fresnel->slab_hi()), "Fresnel slab not finite", i);

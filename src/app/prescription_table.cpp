@@ -58,6 +58,8 @@ std::string PrescriptionTable(const LensPrescription& lens) {
     if (s.forbes) extra += fmt::format(" {} ({} terms, norm {:g})", s.forbes->Name(), s.forbes->terms().size(), s.forbes->norm_radius());
     else if (s.HasAsphericTerms()) extra += " aspheric";
     if (s.fresnel) extra += fmt::format(" Fresnel (zones {:g} mm)", s.fresnel->pitch());
+    if (s.form_error)
+      extra += fmt::format(" form error {:g} um PV (seed {})", s.form_error->peak_to_valley() * 1000, s.form_error->seed());
     if (s.toroidal) extra += s.curvature_x == 0 ? " rx=inf (cylinder)" : fmt::format(" rx={:.4f}", 1 / s.curvature_x);
     if (s.placement) extra += PlacementLabel(*s.placement);
     out += fmt::format("  {:>3}  {:>11}  {:>10.4f}  {:<{}} {:>8} {:>6}  {:>10.4f}{}\n", i + 1, radius, s.thickness,
@@ -97,6 +99,10 @@ nlohmann::ordered_json PrescriptionJson(const LensPrescription& lens) {
     r["semi_diameter_mm"] = s.semi_diameter;
     if (s.conic != 0) r["conic"] = s.conic;
     if (s.fresnel) r["fresnel_pitch_mm"] = s.fresnel->pitch();
+    if (s.form_error) {
+      r["form_error_pv_um"] = s.form_error->peak_to_valley() * 1000;
+      r["form_seed"] = s.form_error->seed();
+    }
     if (s.forbes) {
       r["q_type"] = s.forbes->Name();
       r["q_norm_mm"] = s.forbes->norm_radius();

@@ -80,7 +80,9 @@ std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int
     if (!spec.lens.RotationallySymmetric())
       throw InputError(fmt::format("lens_model {}: the paraxial models are rotationally symmetric; {} is not ({}): "
                                    "use lens_model real", model, spec.lens.name,
-                                   spec.lens.HasToroids() ? "anamorphic, toroidal surfaces" : "decentred or tilted surfaces"));
+                                   spec.lens.HasToroids()      ? "anamorphic, toroidal surfaces"
+                                   : spec.lens.HasFormErrors() ? "surfaces with form errors"
+                                                               : "decentred or tilted surfaces"));
     for (const LensSurface& s : spec.lens.surfaces)
       if (s.obscuration > 0)
         throw InputError(fmt::format("lens_model {}: the paraxial models have no central obstruction, which {} has: "

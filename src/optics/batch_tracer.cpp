@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "optics/lens_tracer.h"
+
 namespace objektiv {
 
 void RayBatch::Resize(size_t n) {
@@ -96,7 +98,7 @@ BatchLensTracer::BatchLensTracer(const LensSystem& lens_system)
     }
     f.a2 = float(s.a2);
     for (int k = 0; k < 7; ++k) f.a[k] = float(s.aspheric[k]);
-    if (s.fresnel) f.zoned = std::make_shared<const LensSurface>(s);
+    if (s.fresnel || s.form_error) f.scalar = std::make_shared<const LensSurface>(s);
     if (s.forbes) {
       const std::vector<double>& b = s.forbes->chebyshev();
       f.q_count = int(b.size());
@@ -136,7 +138,7 @@ struct Step {
   int q_count;
   float inv_rn2;
   bool qbfs;
-  const LensSurface* zoned;  // a Fresnel surface (Surface::zoned), else null
+  const LensSurface* scalar;  // a surface traced one ray at a time (Surface::scalar), else null
   // Per ray (contiguous, one value per ray of the batch): the media's indices on both sides
   // and the absorption coefficient of the medium just crossed (air: ones and zeros).
   const float *n_in, *n_out, *alpha_in;
@@ -180,29 +182,26 @@ void ApplyCoating(const float* __restrict table, RayBatch& b, bool mirror) {
   }
 }
 
-// Which terms a surface of revolution adds to its conic; kZoned: a Fresnel surface (met by
-// FresnelZones::Intersect, one ray at a time in double precision).
-enum class Asphere { kNone, kEven, kQType, kZoned };
+// Which terms a surface of revolution adds to its conic; kScalar: a surface no kernel traces
+// (a Fresnel surface, a form error), met one ray at a time by the exact tracer's intersection.
+enum class Asphere { kNone, kEven, kQType, kScalar };
 
-// A Fresnel surface's crossing for one ray of the batch (o relative to the vertex): its t and
-// the facet's gradient; `ok` cleared where the ray misses or meets a riser.
-void ZonedCrossing(const LensSurface& surface, float x0, float y0, float z0, float dx, float dy, float dz, float& t,
-                   float& gx, float& gy, bool& ok) {
+// Such a surface's crossing for one ray of the batch (o relative to the vertex): its t and the
+// surface's gradient there; `ok` cleared where the ray misses it or meets a Fresnel riser.
+void ScalarCrossing(const LensSurface& surface, float x0, float y0, float z0, float dx, float dy, float dz, float& t,
+                    float& gx, float& gy, bool& ok) {
   t = 0, gx = gy = 0;
   if (!ok) return;
   const Vec3d o(x0, y0, z0), d(dx, dy, dz);
-  const std::optional<FresnelZones::Hit> hit = surface.fresnel->Intersect(surface, o, d);
-  if (!hit || hit->riser) {
-    ok = false;
-    return;
-  }
-  const Vec3d p = o + d * hit->t;
+  bool blocked = false;
+  const std::optional<double> hit = IntersectSurface(surface, o, d, blocked);
+  const Vec3d p = o + d * hit.value_or(0.0);
   double z, sx, sy;
-  if (!surface.SagAt(p.x, p.y, z, &sx, &sy)) {
+  if (!hit || blocked || !surface.SagAt(p.x, p.y, z, &sx, &sy)) {
     ok = false;
     return;
   }
-  t = float(hit->t), gx = float(sx), gy = float(sy);
+  t = float(*hit), gx = float(sx), gy = float(sy);
 }
 
 // A surface of revolution's sag at radius r (r2 = r^2) and its slope dz/dr in single precision
@@ -295,8 +294,8 @@ void StepAll(const Step& s, RayBatch& b) {
     bool ok = alive[j] != 0;
     float t;
     [[maybe_unused]] float tgx = 0, tgy = 0;  // a toroid's gradient at the crossing
-    if constexpr (kAsphere == Asphere::kZoned) {
-      ZonedCrossing(*s.zoned, x0, y0, z0, dx, dy, dz, t, tgx, tgy, ok);
+    if constexpr (kAsphere == Asphere::kScalar) {
+      ScalarCrossing(*s.scalar, x0, y0, z0, dx, dy, dz, t, tgx, tgy, ok);
     } else if constexpr (kToroid) {
       t = -z0 / dz;
       float z, gx, gy;
@@ -351,7 +350,7 @@ void StepAll(const Step& s, RayBatch& b) {
     if constexpr (kRefract || kMirror) {
       // Normal from the sag's slope (unit, toward +z), turned to face the incoming ray.
       float nx, ny, nz = 1;
-      if constexpr (kToroid || kAsphere == Asphere::kZoned) {
+      if constexpr (kToroid || kAsphere == Asphere::kScalar) {
         nx = -tgx, ny = -tgy;
       } else if constexpr (kCylinder) {
         // The implicit form's gradient: (-c mx x, -c my y, 1 - k1 c z).
@@ -484,7 +483,7 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
     // the first surface).
     const bool absorb = k > 0;
     Step st{sf.z, sf.c, sf.k1, sf.semi2, sf.obscuration2, sf.reflectance, sf.cx, sf.mx, sf.my, sf.a2, {}, {},
-            sf.q_count, sf.inv_rn2, sf.qbfs, sf.zoned.get(),
+            sf.q_count, sf.inv_rn2, sf.qbfs, sf.scalar.get(),
             rays.media_index.data() + (m_in + 1) * count,
             rays.media_index.data() + (m_out + 1) * count,
             rays.media_alpha.data() + (absorb && absorbing ? m_in + 1 : 0) * count,
@@ -493,7 +492,7 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
     std::copy(sf.q, sf.q + sf.q_count, st.q);
     const bool refract = m_in != m_out && !sf.mirror;  // the stop too, where it parts two media
     if (sf.placed) ToSurfaceFrame(sf, rays);
-    if (sf.zoned) StepShape<false, Asphere::kZoned>(st, refract, sf.mirror, transmission, rays);
+    if (sf.scalar) StepShape<false, Asphere::kScalar>(st, refract, sf.mirror, transmission, rays);
     else if (sf.toroid) StepShape<false, Asphere::kNone, true>(st, refract, sf.mirror, transmission, rays);
     else if (sf.cylinder) StepShape<false, Asphere::kNone, false, true>(st, refract, sf.mirror, transmission, rays);
     else if (sf.plane) StepShape<true, Asphere::kNone>(st, refract, sf.mirror, transmission, rays);

@@ -81,8 +81,9 @@ class BatchLensTracer {
     int q_count = 0;
     float inv_rn2 = 0;
     bool qbfs = false;
-    // A Fresnel surface (LensSurface::fresnel): traced one ray at a time through this copy.
-    std::shared_ptr<const LensSurface> zoned;
+    // A surface no kernel traces (a Fresnel surface, a form error): traced one ray at a time
+    // through this copy (IntersectSurface).
+    std::shared_ptr<const LensSurface> scalar;
     int medium_after;            // glass index (-1: air); its tables are at medium_after + 1
     int coating;                 // -1: bare (Fresnel's equations inline) or a mirror of constant reflectance; else coating_tables_[2 coating + toward object] (a metal mirror's reflectance: both the same)
   };

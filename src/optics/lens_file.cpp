@@ -202,6 +202,8 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
     std::vector<double> q_terms;
     double q_norm = 0;
     double zone_pitch = 0;  // zones=: a Fresnel surface's pitch
+    double form_pv_um = 0;  // form_error_um=, form_seed=: the figure's irregularity
+    std::optional<uint64_t> form_seed;
     for (size_t i = next + 3; i < f.size(); ++i) {
       size_t eq = f[i].find('=');
       if (eq == std::string::npos) throw MakeInputError(path, number, "option '{}' is not key=value", f[i]);
@@ -243,6 +245,15 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
         if (s.semi_diameter / zone_pitch > 100000)
           throw MakeInputError(path, number, "zones={}: {:.0f} zones over the semi-diameter {}; at most 100000", Printable(value),
                                std::ceil(s.semi_diameter / zone_pitch), s.semi_diameter);
+      } else if (key == "form_error_um") {  // peak-to-valley of a smooth random figure error
+        form_pv_um = ParseFiniteNumber(value, path, number);
+        if (!(form_pv_um > 0 && form_pv_um <= 1000))
+          throw MakeInputError(path, number, "form_error_um={}: a peak-to-valley in micrometres, above 0 and at most 1000",
+                               Printable(value));
+      } else if (key == "form_seed") {
+        const std::optional<int> seed = ParseIntegerIn(value, 0, 1000000000);
+        if (!seed) throw MakeInputError(path, number, "form_seed={}: an integer from 0 to 1000000000", Printable(value));
+        form_seed = uint64_t(*seed);
       } else if (key == "qnorm") {
         q_norm = ParseFiniteNumber(value, path, number);
         if (!(q_norm > 0 && q_norm <= kMaxLensLength))
@@ -289,8 +300,10 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
         s.aspheric[(*order - 4) / 2] = ParseFiniteNumber(value, path, number);
       } else {
         throw MakeInputError(path, number, "unknown option '{}' ({})", key,
-                             s.mirror ? "k, a4..a16, qbfs, qcon, qnorm, zones, rx, decenter, tilt, obscuration, reflectance, stop"
-                                      : "k, a4..a16, qbfs, qcon, qnorm, zones, rx, decenter, tilt, coating, obscuration");
+                             s.mirror ? "k, a4..a16, qbfs, qcon, qnorm, zones, form_error_um, form_seed, rx, decenter, tilt, "
+                                        "obscuration, reflectance, stop"
+                                      : "k, a4..a16, qbfs, qcon, qnorm, zones, form_error_um, form_seed, rx, decenter, tilt, "
+                                        "coating, obscuration");
       }
     }
     if (q_kind) {
@@ -313,6 +326,14 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
                              "aspheric terms)");
       CheckReachable(s, path, number);  // the profile must be whole before it is cut
       s.fresnel = std::make_shared<const FresnelZones>(s, zone_pitch);
+    }
+    if (form_pv_um > 0) {
+      if (s.fresnel) throw MakeInputError(path, number, "form_error_um= on a Fresnel surface (zones=) is not modelled");
+      // The seed defaults to the row's number: each surface its own shape.
+      s.form_error = std::make_shared<const FormError>(form_pv_um * 1e-3, form_seed.value_or(lens.surfaces.size() + 1),
+                                                       s.semi_diameter);
+    } else if (form_seed) {
+      throw MakeInputError(path, number, "form_seed= without form_error_um=: it chooses a form error's shape");
     }
     const SurfacePlacement placed = SurfacePlacement::DecenterTilt(decenter[0], decenter[1], tilt[0], tilt[1], tilt[2]);
     if (!placed.IsIdentity()) s.placement = placed;

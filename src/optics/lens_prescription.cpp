@@ -124,6 +124,16 @@ void LensSurface::SagWithSlope(double r, double& z, double& slope) const {
 }
 
 bool LensSurface::SagAt(double x, double y, double& z, double* gx, double* gy) const {
+  if (!NominalSagAt(x, y, z, gx, gy)) return false;
+  if (form_error) {
+    double ex, ey;
+    z += form_error->Height(x, y, gx ? &ex : nullptr, gx ? &ey : nullptr);
+    if (gx) *gx += ex, *gy += ey;
+  }
+  return true;
+}
+
+bool LensSurface::NominalSagAt(double x, double y, double& z, double* gx, double* gy) const {
   const double c = Curvature();
   if (!toroidal) {
     const double r = std::sqrt(x * x + y * y);
@@ -216,6 +226,10 @@ bool LensPrescription::HasToroids() const {
   return std::any_of(surfaces.begin(), surfaces.end(), [](const LensSurface& s) { return s.toroidal; });
 }
 
+bool LensPrescription::HasFormErrors() const {
+  return std::any_of(surfaces.begin(), surfaces.end(), [](const LensSurface& s) { return bool(s.form_error); });
+}
+
 bool LensPrescription::Centred() const {
   return std::none_of(surfaces.begin(), surfaces.end(), [](const LensSurface& s) { return s.placement.has_value(); });
 }
@@ -276,6 +290,7 @@ LensPrescription LensPrescription::Scaled(double factor) const {
       a /= scale;
       scale *= factor * factor;
     }
+    if (s.form_error) s.form_error = std::make_shared<const FormError>(s.form_error->Scaled(factor));
     // The zones of the scaled profile (their slab follows it).
     if (s.fresnel) s.fresnel = std::make_shared<const FresnelZones>(s, s.fresnel->pitch() * factor);
   }

@@ -8,6 +8,7 @@
 
 #include "optics/coating.h"
 #include "optics/forbes_asphere.h"
+#include "optics/form_error.h"
 #include "optics/fresnel_zones.h"
 #include "optics/glass.h"
 #include "optics/mirror_metal.h"
@@ -43,6 +44,9 @@ struct LensSurface {
   // A Fresnel surface (optics/fresnel_zones.h): the profile above cut into zones of one pitch,
   // each facet lowered to the vertex plane, risers between them; null: the profile itself.
   std::shared_ptr<const FresnelZones> fresnel;
+  // The figure's departure from all the above (optics/form_error.h): a smooth random shape of
+  // a given peak-to-valley; null: a perfect surface.
+  std::shared_ptr<const FormError> form_error;
   // A toroidal surface (a cylinder where one section is flat): the y-z profile that the radius,
   // conic and aspheric terms give, turned about an axis parallel to y that crosses the axis
   // 1 / curvature_x behind the vertex (Zemax TOROIDAL, its radius of rotation). Its x-z
@@ -78,8 +82,11 @@ struct LensSurface {
   void SagWithSlope(double r, double& z, double& slope) const;  // both in one pass
   // Sag z(x, y) of any surface and, where asked, its gradient (dz/dx, dz/dy); false outside
   // the surface (beyond where a conic turns over, or a toroid's profile reaches its axis). A
-  // Fresnel surface's is its facet's (the profile's slope, lowered to the vertex plane).
+  // Fresnel surface's is its facet's (the profile's slope, lowered to the vertex plane); a
+  // form error is added.
   bool SagAt(double x, double y, double& z, double* gx = nullptr, double* gy = nullptr) const;
+  // The same without the form error: the surface as prescribed.
+  bool NominalSagAt(double x, double y, double& z, double* gx = nullptr, double* gy = nullptr) const;
   // Paraxial curvature of the x-z section (a toroid's curvature_x, else ParaxialCurvature()).
   double ParaxialCurvatureX() const { return toroidal ? curvature_x : ParaxialCurvature(); }
   // The vertex curvature of the surface's section by the lens's y-z plane, what paraxial
@@ -118,10 +125,11 @@ struct LensPrescription {
   double TotalTrack() const;
   int MirrorCount() const;
   // Whether every surface is a figure of revolution about the axis (no toroid, none decentred
-  // or tilted): the radial pupil bounds, the thin- and thick-lens models and the radial
+  // or tilted, no form error): the radial pupil bounds, the thin- and thick-lens models and the radial
   // analyses rely on it.
-  bool RotationallySymmetric() const { return Centred() && !HasToroids(); }
+  bool RotationallySymmetric() const { return Centred() && !HasToroids() && !HasFormErrors(); }
   bool HasToroids() const;
+  bool HasFormErrors() const;
   bool Centred() const;  // no surface decentred or tilted
   // +1 where light leaves surface i toward the film (+z), -1 toward the object (after an odd
   // number of mirrors up to and including i).

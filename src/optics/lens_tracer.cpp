@@ -32,11 +32,10 @@ Vec3d SurfaceNormal(const LensSurface& s, const Vec3d& p) {
 
 namespace {
 
-// Where the ray (o relative to the vertex) meets a toroid: Newton on f(t) = z(t) - sag(x(t),
-// y(t)) from the vertex plane; a step that leaves the surface's domain is halved.
-std::optional<double> IntersectToroid(const LensSurface& s, const Vec3d& o, const Vec3d& d) {
-  if (d.z == 0) return std::nullopt;
-  double t = -o.z / d.z;
+// Where the ray (o relative to the vertex) meets a surface without rotational symmetry (a
+// toroid, a form error): Newton on f(t) = z(t) - sag(x(t), y(t)) from t (the vertex plane's
+// crossing, or the nominal surface's); a step that leaves the surface's domain is halved.
+std::optional<double> RefineOnSurface(const LensSurface& s, const Vec3d& o, const Vec3d& d, double t) {
   for (int it = 0; it < 60; ++it) {
     const Vec3d p = o + d * t;
     double z, gx, gy;
@@ -51,9 +50,10 @@ std::optional<double> IntersectToroid(const LensSurface& s, const Vec3d& o, cons
   return std::nullopt;
 }
 
-// Where a ray (o relative to the surface's vertex, in its frame) meets surface s: the
-// parameter t, or nothing; `blocked` is set where it meets a Fresnel surface's riser.
-std::optional<double> Intersect(const LensSurface& s, const Vec3d& o, const Vec3d& d, bool& blocked) {
+// Where a ray (o relative to the surface's vertex, in its frame) meets surface s as prescribed
+// (a toroid with its form error): the parameter t, or nothing; `blocked` is set where it meets
+// a Fresnel surface's riser.
+std::optional<double> IntersectNominal(const LensSurface& s, const Vec3d& o, const Vec3d& d, bool& blocked) {
   blocked = false;
   if (s.fresnel) {
     const std::optional<FresnelZones::Hit> hit = s.fresnel->Intersect(s, o, d);
@@ -61,7 +61,7 @@ std::optional<double> Intersect(const LensSurface& s, const Vec3d& o, const Vec3
     blocked = hit->riser;
     return hit->t;
   }
-  if (s.toroidal) return IntersectToroid(s, o, d);
+  if (s.toroidal) return d.z == 0 ? std::nullopt : RefineOnSurface(s, o, d, -o.z / d.z);
   double c = s.Curvature();
   bool aspheric = s.HasAsphericTerms();
   double t;
@@ -111,6 +111,13 @@ std::optional<double> Intersect(const LensSurface& s, const Vec3d& o, const Vec3
 
 }  // namespace
 
+std::optional<double> IntersectSurface(const LensSurface& s, const Vec3d& o, const Vec3d& d, bool& blocked) {
+  const std::optional<double> t = IntersectNominal(s, o, d, blocked);
+  // A form error: Newton from the prescribed surface's crossing (a toroid's already has it).
+  if (t && !blocked && s.form_error && !s.toroidal) return RefineOnSurface(s, o, d, *t);
+  return t;
+}
+
 SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, double lambda_nm, bool toward_film) {
   SurfaceCrossing c;
   const LensSurface& s = lens.surface(i);
@@ -121,7 +128,7 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
   const Vec3d o = placed ? placed->ToLocal(ray.o - vertex - placed->offset) : ray.o - vertex;
   const Vec3d d = placed ? placed->ToLocal(ray.d) : ray.d;
   bool blocked;
-  std::optional<double> t = Intersect(s, o, d, blocked);
+  std::optional<double> t = IntersectSurface(s, o, d, blocked);
   if (!t || *t < -1e-9) {
     c.failure = TraceFailure::kMissedSurface;
     return c;
@@ -152,7 +159,7 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
   // implicit form c (x^2 + y^2) + (1 + k) c z^2 - 2 z = 0 at the point (no square root of
   // the sag's slope), for an asphere from the slope.
   const double curvature = s.Curvature();
-  if (s.HasAsphericTerms() || s.toroidal || s.fresnel) {
+  if (s.HasAsphericTerms() || s.toroidal || s.fresnel || s.form_error) {
     c.normal = SurfaceNormal(s, p);
   } else {
     const Vec3d g(-curvature * p.x, -curvature * p.y, 1 - (1 + s.conic) * curvature * p.z);

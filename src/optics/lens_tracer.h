@@ -65,6 +65,11 @@ TraceResult TraceSequence(const LensSystem& lens, const LensRay& ray, double lam
 // The unit normal of surface s at p (relative to its vertex or not: it depends on x, y only),
 // pointing toward +z (the film).
 Vec3d SurfaceNormal(const LensSurface& s, const Vec3d& p);
+// Where the ray o + t d (o relative to the vertex, in the surface's frame) first meets surface
+// s, t >= about 0: nothing if it misses; `blocked` set where it meets a Fresnel surface's riser.
+// Every kind of surface, its form error included (the batch tracer's way for the surfaces its
+// kernels do not trace).
+std::optional<double> IntersectSurface(const LensSurface& s, const Vec3d& o, const Vec3d& d, bool& blocked);
 
 // One step of any path: where `ray` meets surface i travelling toward the film (or the
 // object), whether it gets through the opening there, and what the interface does; the

@@ -21,8 +21,8 @@ class PupilGrid::Builder {
     window_ = search.window, tolerance_ = search.tolerance;
     round_ = lens.stop_shape().symmetry().order == 0;
     // Centred toroids are symmetric under x -> -x and y -> -y; so is a round stop. A decentred or
-    // tilted surface is not.
-    g_.quadrant_ = round_ && lens.prescription().Centred();
+    // tilted surface is not, nor a form error.
+    g_.quadrant_ = round_ && lens.prescription().Centred() && !lens.prescription().HasFormErrors();
     g_.cells_ = g_.quadrant_ ? 8 : 16;
     g_.x0_ = g_.quadrant_ ? 0 : -film_radius;
     g_.size_ = g_.quadrant_ ? film_radius : 2 * film_radius;
