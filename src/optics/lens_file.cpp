@@ -12,6 +12,7 @@
 #include "base/log.h"
 #include "base/text_file.h"
 #include "optics/coating_library.h"
+#include "optics/element_tolerances.h"
 #include "optics/glass_catalog.h"
 #include "optics/lens_glasses.h"
 #include "optics/pbrt_lens.h"
@@ -113,6 +114,8 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
   std::shared_ptr<const Coating> default_coating;
   std::vector<size_t> explicitly_coated;  // surfaces with their own coating=
   int default_line = 0, object_medium_line = 0, focus_gap_line = 0;
+  ElementTolerances tolerances;  // tolerance_decenter:, tolerance_tilt:, tolerance_seed:
+  int tolerance_line = 0, tolerance_seed_line = 0;
   std::vector<int> coating_lines;  // the lines of explicitly_coated
   std::vector<int> surface_lines;  // per surface
   while (std::getline(lines, line)) {
@@ -146,7 +149,21 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
         default_coating = coatings.Find(value, path, number);
         default_line = number;
       }
-      else throw MakeInputError(path, number, "unknown key '{}' (name, source, focal_length, fnumber, image_circle, default_coating, object_medium, focus_gap)", key);
+      else if (key == "tolerance_decenter" || key == "tolerance_tilt") {  // an as-built copy (optics/element_tolerances.h)
+        const double v = ParseFiniteNumber(value, path, number);
+        if (!(v >= 0 && v <= 10))
+          throw MakeInputError(path, number, "{} {}: from 0 to 10 ({})", key, Printable(value),
+                               key == "tolerance_decenter" ? "mm" : "degrees");
+        (key == "tolerance_decenter" ? tolerances.decenter_mm : tolerances.tilt_deg) = v;
+        tolerance_line = number;
+      }
+      else if (key == "tolerance_seed") {
+        const std::optional<int> seed = ParseIntegerIn(value, 0, 1000000000);
+        if (!seed) throw MakeInputError(path, number, "tolerance_seed {}: an integer from 0 to 1000000000", Printable(value));
+        tolerances.seed = uint64_t(*seed);
+        tolerance_seed_line = number;
+      }
+      else throw MakeInputError(path, number, "unknown key '{}' (name, source, focal_length, fnumber, image_circle, default_coating, object_medium, focus_gap, tolerance_decenter, tolerance_tilt, tolerance_seed)", key);
       continue;
     }
     if (f[0] == "coating") {
@@ -389,6 +406,16 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
     throw MakeInputError(path, own != explicitly_coated.end() ? coating_lines[size_t(own - explicitly_coated.begin())]
                                                               : default_line,
                          "surface {}: {}", mismatch->first + 1, mismatch->second);
+  }
+  if (tolerances.Any()) {
+    if (lens.MirrorCount() > 0 || lens.HasToroids())
+      throw MakeInputError(path, tolerance_line, "element tolerances are not modelled for a lens with {}",
+                           lens.MirrorCount() > 0 ? "mirrors" : "toroids (a tilt would turn their sections)");
+    if (LensElements(lens).empty()) throw MakeInputError(path, tolerance_line, "element tolerances: the lens has no element in air");
+    lens = WithToleranceSample(lens, tolerances);
+  } else if (tolerance_seed_line) {
+    throw MakeInputError(path, tolerance_seed_line,
+                         "tolerance_seed: without a positive tolerance_decenter or tolerance_tilt it moves nothing");
   }
   coatings.WarnUnused(path);
   lens_glasses.WarnUnused();

@@ -211,12 +211,7 @@ LensPrescription MovedAsAWhole(const LensPrescription& lens, const SurfacePlacem
   const Vec3d pivot(0, 0, pivot_z);
   double z = 0;  // each vertex's place on the axis
   for (LensSurface& surface : out.surfaces) {
-    const SurfacePlacement p = surface.placement.value_or(SurfacePlacement{});
-    const Vec3d vertex(0, 0, z);
-    SurfacePlacement moved;
-    moved.offset = pivot + motion.offset + motion.FromLocal(vertex + p.offset - pivot) - vertex;
-    moved.ex = motion.FromLocal(p.ex), moved.ey = motion.FromLocal(p.ey), moved.ez = motion.FromLocal(p.ez);
-    surface.placement = moved;
+    surface.placement = surface.placement.value_or(SurfacePlacement{}).MovedBy(motion, pivot, Vec3d(0, 0, z));
     z += surface.thickness;
   }
   return out;

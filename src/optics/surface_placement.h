@@ -39,6 +39,14 @@ struct SurfacePlacement {
     const double k = M_PI / 180;
     return p.Turned(0, tilt_x_deg * k).Turned(1, tilt_y_deg * k).Turned(2, tilt_z_deg * k);
   }
+  // This placement (of a surface whose vertex lies at `vertex` on the axis) after the rigid
+  // motion `motion` (its turn, then its offset) about the point `pivot` of lens space.
+  SurfacePlacement MovedBy(const SurfacePlacement& motion, const Vec3d& pivot, const Vec3d& vertex) const {
+    SurfacePlacement moved;
+    moved.offset = pivot + motion.offset + motion.FromLocal(vertex + offset - pivot) - vertex;
+    moved.ex = motion.FromLocal(ex), moved.ey = motion.FromLocal(ey), moved.ez = motion.FromLocal(ez);
+    return moved;
+  }
   bool IsIdentity() const {
     return offset.x == 0 && offset.y == 0 && offset.z == 0 && ex.x == 1 && ey.y == 1 && ez.z == 1 && ex.y == 0 &&
            ex.z == 0 && ey.x == 0 && ey.z == 0 && ez.x == 0 && ez.y == 0;
