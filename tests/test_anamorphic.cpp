@@ -442,7 +442,7 @@ TEST(Anamorphic, FocusGapIsChecked) {
   EXPECT_EQ(ParseError("focus_gap: 2\n" + adapter), "accepted");
   EXPECT_NE(ParseError("focus_gap: 3\n" + adapter).find("test.lens:1: focus_gap 3"), std::string::npos);
   EXPECT_NE(ParseError("focus_gap: x\n" + adapter).find("test.lens:1: focus_gap 'x'"), std::string::npos);
-  EXPECT_NE(ParseError("focus_gap: 1\nsurface 50 3 n=1.5 20\nsurface inf 50 air 20\nstop 10 air 8\n").find("no toroidal"),
+  EXPECT_NE(ParseError("focus_gap: 1\nsurface 50 5 n=1.5 20\nsurface inf 50 air 20\nstop 10 air 8\n").find("no toroidal"),
             std::string::npos);
 }
 

@@ -137,6 +137,8 @@ TEST(NativeLens, BadFilesNameTheLine) {
   const std::string stop = "stop 2 air 5\n";
   std::vector<Bad> cases = {
       {"surface 50 5 N-NOPE 10\n" + stop + "surface -50 40 air 10\n", 1, "glass N-NOPE is in no catalog"},
+      // Two surfaces that cross within their clear apertures (a sag deeper than the thickness).
+      {stop + "surface 10 1 N-BK7 9\nsurface inf 20 air 9\n", 3, "crosses the one before it"},
       {"surface 50 5 N-BK7 10\nsurface -50 40 air 10\n", 0, "no stop"},
       {stop + stop + "surface 50 5 N-BK7 10\nsurface -50 40 air 10\n", 2, "second stop"},
       {stop + "surface 8 5 N-BK7 10\nsurface -50 40 air 10\n", 2, "larger than the surface can reach"},

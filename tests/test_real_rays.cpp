@@ -76,8 +76,9 @@ TEST(RealRays, SpotsShrinkWhenStoppingDownAndAreTinyForAnIdealSurface) {
 }
 
 TEST(RealRays, AxialColourOfAThinSingletIsFOverV) {
-  // Thin N-BK7 biconvex lens: the F and C foci are f / Vd apart (to first order).
-  LensPrescription l = ParseNativeLens("stop 0 air 5\nsurface 100 0.001 N-BK7 10\nsurface -100 200 air 10\n", "s.lens", GlassCatalog::Default());
+  // Thin N-BK7 biconvex lens: the F and C foci are f / Vd apart (to first order). Its faces do
+  // not cross within their 0.3 mm (the sags there: 0.00045 mm each).
+  LensPrescription l = ParseNativeLens("stop 0 air 0.3\nsurface 100 0.001 N-BK7 0.3\nsurface -100 200 air 0.3\n", "s.lens", GlassCatalog::Default());
   ParaxialData d = ComputeParaxial(l, 587.5618);
   double lca = ComputeParaxial(l, 656.2725).bfl - ComputeParaxial(l, 486.1327).bfl;
   EXPECT_NEAR(lca, d.efl / 64.17, 0.01 * d.efl / 64.17);
@@ -115,7 +116,8 @@ namespace {
 
 // A thin biconvex N-BK7 lens with a small stop in contact (f ~ 193 mm).
 LensSystem ThinLensAtStop() {
-  LensPrescription l = ParseNativeLens("stop 0 air 2\nsurface 200 0.01 N-BK7 30\nsurface -200 190 air 30\n", "thin.lens", GlassCatalog::Default());
+  // Semi-diameters just above the stop's (the faces do not cross there: sags of 0.012 mm each).
+  LensPrescription l = ParseNativeLens("stop 0 air 2\nsurface 200 0.03 N-BK7 2.2\nsurface -200 190 air 2.2\n", "thin.lens", GlassCatalog::Default());
   LensSystem t(l);
   t.SetBackFocus(ComputeParaxial(l).bfl);
   return t;
@@ -169,6 +171,18 @@ TEST(RealRays, RealBackFocusAndFieldOfView) {
   LensSystem sphere(ParseNativeLens("stop 0 air 10\nsurface inf 8 n=1.5 12\nsurface -50 100 air 12\n", "s.lens", GlassCatalog::Default()));
   ParaxialData p = ComputeParaxial(sphere.prescription());
   EXPECT_LT(RealBackFocus(sphere, 587.6), p.bfl - 0.1);
+  // A fast singlet whose best focus lies more than 5% of the EFL before the paraxial one (the
+  // search's first window): the minimum of a scan of the spot's RMS radius.
+  LensSystem fast(ParseNativeLens("stop 0.5 air 18\nsurface 26 12 n=1.5 19\nsurface inf 40 air 19\n", "f.lens", GlassCatalog::Default()));
+  const double found = RealBackFocus(fast, 587.6);
+  double scan = 0, least = INFINITY;
+  for (double b = 30; b <= 46; b += 0.005) {
+    LensSystem t = fast;
+    t.SetBackFocus(b);
+    if (const double rms = SpotDiagram(t, 0, 587.6, 41).rms_radius; rms < least) least = rms, scan = b;
+  }
+  EXPECT_LT(scan, ComputeParaxial(fast.prescription()).bfl - 0.05 * 52);
+  EXPECT_NEAR(found, scan, 0.01);
   LensSystem hyperbola(ParseNativeLens("stop 0 air 10\nsurface inf 8 n=1.5 12\nsurface -50 100 air 12 k=-2.25\n", "h.lens", GlassCatalog::Default()));
   EXPECT_NEAR(RealBackFocus(hyperbola, 587.6), ComputeParaxial(hyperbola.prescription()).bfl, 1e-4);
   // Field of view of the double Gauss on full frame: close to 2 atan(21.63 / 50.36) = 46.5

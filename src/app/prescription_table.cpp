@@ -55,7 +55,9 @@ std::string PrescriptionTable(const LensPrescription& lens) {
     if (s.mirror && !s.mirror_metal && s.mirror_reflectance != 1) extra += fmt::format(" reflectance={:g}", s.mirror_reflectance);
     if (s.obscuration > 0) extra += fmt::format(" obscuration={:g}", s.obscuration);
     if (s.conic != 0) extra += fmt::format(" k={:g}", s.conic);
-    if (s.forbes) extra += fmt::format(" {} ({} terms, norm {:g})", s.forbes->Name(), s.forbes->terms().size(), s.forbes->norm_radius());
+    if (s.forbes)
+      extra += fmt::format(" {} ({} term{}, norm {:g})", s.forbes->Name(), s.forbes->terms().size(),
+                           s.forbes->terms().size() == 1 ? "" : "s", s.forbes->norm_radius());
     else if (s.HasAsphericTerms()) extra += " aspheric";
     if (s.fresnel) extra += fmt::format(" Fresnel (zones {:g} mm)", s.fresnel->pitch());
     if (s.form_error)

@@ -27,7 +27,10 @@ Svg PlotLensLayout(const LensSystem& lens, const std::vector<double>& fields, do
   double y_extent = 1.3 * max_semi;
   for (double f : fields)
     if (std::optional<double> h = RealImageHeight(lens, f, lambda_nm)) y_extent = std::max(y_extent, 1.1 * std::abs(*h));
-  const double z_start = -0.25 * std::max(lens.FilmZ(), 4 * max_semi), z_end = lens.FilmZ();
+  // From a little before the front-most vertex (a Cassegrain's secondary lies before the first).
+  double front = 0;
+  for (int i = 0; i < n; ++i) front = std::min(front, lens.VertexZ(i));
+  const double z_start = front - 0.25 * std::max(lens.FilmZ() - front, 4 * max_semi), z_end = lens.FilmZ();
   const double W = 960, H = 540, margin = 40;
   double scale = std::min((W - 2 * margin) / (z_end - z_start), (H - 2 * margin - 40) / (2 * y_extent));
   auto map = [&](double z, double y) { return Vec2d(margin + (z - z_start) * scale, H / 2 + 10 - y * scale); };

@@ -9,20 +9,16 @@
 namespace objektiv {
 
 FresnelZones::FresnelZones(const LensSurface& profile, double pitch) : pitch_(pitch) {
-  // Each facet sampled finely (its height is monotonic for a conic, nearly so for aspheres);
-  // the slab grown by a little more than the samples could miss.
-  const double c = profile.Curvature(), reach = profile.semi_diameter + pitch;
-  const int zones = int(std::ceil(reach / pitch));
-  for (int k = 0; k <= zones; ++k) {
-    if (c != 0 && (1 + profile.conic) * c * c * k * pitch * k * pitch > 1) break;
-    base_.push_back(profile.Sag(k * pitch));
-  }
+  // Each facet sampled finely over the clear aperture (its height is monotonic for a conic,
+  // nearly so for aspheres; beyond the semi-diameter rays are clipped), the slab grown by a
+  // little more than the samples could miss. A pitch wider than the aperture: one zone.
+  const double semi = profile.semi_diameter;
+  const int zones = int(std::ceil(semi / pitch));
+  for (int k = 0; k <= zones; ++k) base_.push_back(profile.Sag(k * pitch));  // k < zones: inside the aperture
   for (int k = 0; k < zones; ++k) {
-    const double base = profile.Sag(k * pitch);
+    const double base = base_[size_t(k)], from = k * pitch, to = std::min((k + 1) * pitch, semi);
     for (int j = 1; j <= 32; ++j) {
-      const double r = (k + j / 32.0) * pitch;
-      if (c != 0 && (1 + profile.conic) * c * c * r * r > 1) break;  // beyond the conic's reach
-      const double h = profile.Sag(r) - base;
+      const double h = profile.Sag(from + (to - from) * j / 32.0) - base;
       lo_ = std::min(lo_, h), hi_ = std::max(hi_, h);
     }
   }

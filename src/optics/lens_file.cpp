@@ -107,6 +107,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
   LensPrescription lens;
   lens.name = fs::path(path).stem().string();
   lens.source = path;
+  lens.file = path;
   std::istringstream lines(text);
   std::string line;
   int number = 0, stop_line = 0, last_line = 0;
@@ -260,8 +261,11 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
         zone_pitch = ParseFiniteNumber(value, path, number);
         if (!(zone_pitch > 0)) throw MakeInputError(path, number, "zones={}: the zones' radial width (mm) must be positive", Printable(value));
         if (s.semi_diameter / zone_pitch > 100000)
-          throw MakeInputError(path, number, "zones={}: {:.0f} zones over the semi-diameter {}; at most 100000", Printable(value),
+          throw MakeInputError(path, number, "zones={}: {:.3g} zones over the semi-diameter {}; at most 100000", Printable(value),
                                std::ceil(s.semi_diameter / zone_pitch), s.semi_diameter);
+        if (zone_pitch >= s.semi_diameter)
+          spdlog::warn("{}:{}: zones={} is as wide as the semi-diameter {} or wider: one zone, the profile itself", path, number,
+                       Printable(value), s.semi_diameter);
       } else if (key == "form_error_um") {  // peak-to-valley of a smooth random figure error
         form_pv_um = ParseFiniteNumber(value, path, number);
         if (!(form_pv_um > 0 && form_pv_um <= 1000))
@@ -365,6 +369,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
   if (!stop_line) throw MakeInputError(path, 0, "no stop line (or a mirror with stop=yes)");
   if (lens.surfaces.back().medium) throw MakeInputError(path, last_line, "the last surface must leave the lens into air");
   if (auto mismatch = FirstDirectionMismatch(lens)) throw MakeInputError(path, surface_lines[mismatch->first], "{}", mismatch->second);
+  if (auto crossed = FirstCrossedGap(lens)) throw MakeInputError(path, surface_lines[crossed->first], "{}", crossed->second);
   if (focus_gap_line) {
     if (lens.focus_gap + 1 >= int(lens.surfaces.size()))
       throw MakeInputError(path, focus_gap_line, "focus_gap {}: the gap after row {} lies inside the lens only for rows 1 to {}",

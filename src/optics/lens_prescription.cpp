@@ -49,6 +49,27 @@ std::optional<std::pair<size_t, std::string>> FirstDirectionMismatch(const LensP
   return std::nullopt;
 }
 
+std::optional<std::pair<size_t, std::string>> FirstCrossedGap(const LensPrescription& lens) {
+  for (size_t i = 0; i + 1 < lens.surfaces.size(); ++i) {
+    const LensSurface &a = lens.surfaces[i], &b = lens.surfaces[i + 1];
+    if (a.placement || b.placement) continue;
+    const double reach = std::min(a.semi_diameter, b.semi_diameter), direction = lens.DirectionAfter(i);
+    for (int k = 0; k <= 64; ++k) {
+      const double r = reach * k / 64;
+      for (int axis = 0; axis < 2; ++axis) {  // along x and y (a toroid's two sections)
+        double za, zb;
+        if (!a.SagAt(axis ? 0 : r, axis ? r : 0, za) || !b.SagAt(axis ? 0 : r, axis ? r : 0, zb)) continue;
+        const double gap = direction * (a.thickness + zb - za);
+        if (gap < -1e-6 * (1 + std::abs(a.thickness)))
+          return {{i + 1, fmt::format("this surface crosses the one before it: {:.4g} mm from the axis it lies {:.4g} mm "
+                                      "behind it along the light (the thickness {} is too small for the surfaces' sags there)",
+                                      r, -gap, a.thickness)}};
+      }
+    }
+  }
+  return std::nullopt;
+}
+
 double LensPrescription::TotalTrack() const {
   double t = 0;
   for (size_t i = 0; i + 1 < surfaces.size(); ++i) t += surfaces[i].thickness;

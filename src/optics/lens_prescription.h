@@ -98,6 +98,7 @@ struct LensSurface {
 
 struct LensPrescription {
   std::string name, source;
+  std::string file;  // the file it was read from (empty: made in code), for messages
   double design_focal_length = 0, design_fnumber = 0, image_circle = 0;  // metadata (0: not given)
   std::vector<LensSurface> surfaces;
   // The medium in front of the first surface, where the scene is: null is air; water for an
@@ -111,6 +112,8 @@ struct LensPrescription {
   std::vector<std::shared_ptr<const Coating>> defined_coatings;
 
   int StopIndex() const;  // -1 if none
+  // Its name, and the file it came from where that says more: "NAME (PATH)".
+  std::string Described() const { return file.empty() || file == name ? name : name + " (" + file + ")"; }
   // The medium light crosses before surface i (from the object side): the object medium
   // before the first.
   const std::shared_ptr<const Glass>& MediumBefore(size_t i) const {
@@ -168,6 +171,12 @@ LensPrescription MovedAsAWhole(const LensPrescription& lens, const SurfacePlacem
 // be); the index of the surface to blame (the last one for the count) and why. Nothing where
 // the lens folds consistently (for the readers, which name the line).
 std::optional<std::pair<size_t, std::string>> FirstDirectionMismatch(const LensPrescription& lens);
+// The first surface that crosses the one before it within their common clear aperture (the
+// gap between them, along the direction light travels, negative somewhere: a thickness too
+// small for the radii, a sag too deep), and where; the index of the second surface. Decentred
+// or tilted pairs are not checked. Nothing where every gap is open (for the readers, which
+// name the line).
+std::optional<std::pair<size_t, std::string>> FirstCrossedGap(const LensPrescription& lens);
 // The first surface whose coating cannot lie there (optics/coating.h: CoatingMismatch), and
 // why; nothing where every coating fits (for the readers, which name its line, and Recoat).
 std::optional<std::pair<size_t, std::string>> FirstCoatingMismatch(const LensPrescription& lens);

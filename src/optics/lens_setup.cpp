@@ -32,7 +32,7 @@ void SetStop(LensSystem& lens, const StopRequest& stop) {
       const double wide_open = RealFNumber(lens);
       if (!(wide_open < INFINITY))
         throw InputError(fmt::format("no light gets through {} on the axis: its rims, mirrors or obstruction block every "
-                                     "ray (check their radii and semi-diameters)", rx.name));
+                                     "ray (check their radii, semi-diameters and aspheric terms)", rx.Described()));
       if (stop.fnumber < wide_open / 1.02)
         throw InputError(fmt::format("f/{} is faster than {} opens (f/{:.3g})", stop.fnumber, rx.name, wide_open));
       spdlog::info("lens {}: f/{} taken as wide open (f/{:.3g})", rx.name, stop.fnumber, wide_open);
@@ -56,7 +56,7 @@ void CheckLightGetsThrough(const LensSystem& lens, const StopRequest& stop, doub
                                               "mirror lens's aperture is fixed; its filters or the exposure set the light)",
                                               *limit)
                                 : ": its rims, mirrors or obstruction block every ray";
-  throw InputError(fmt::format("{}: no light gets through {}{}", asked, rx.name, why));
+  throw InputError(fmt::format("{}: no light gets through {}{}", asked, rx.Described(), why));
 }
 
 // The plane in focus as a distance from the film. Given from the entrance pupil, it depends

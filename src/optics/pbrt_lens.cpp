@@ -20,9 +20,11 @@ LensPrescription ParsePbrtLens(const std::string& text, const std::string& path)
   LensPrescription lens;
   lens.name = std::filesystem::path(path).stem().string();
   lens.source = path;
+  lens.file = path;
   std::istringstream lines(text);
   std::string line;
   int number = 0, stop_line = 0;
+  std::vector<int> rows;  // each surface's line
   // Media are shared between rows with the same index.
   std::map<double, std::shared_ptr<const Glass>> media;
   bool described = false;
@@ -77,10 +79,12 @@ LensPrescription ParsePbrtLens(const std::string& text, const std::string& path)
       s.medium = m;
     }
     lens.surfaces.push_back(std::move(s));
+    rows.push_back(number);
   }
   if (lens.surfaces.empty()) throw MakeInputError(path, 0, "no lens surfaces");
   if (!stop_line) throw MakeInputError(path, 0, "no aperture stop (a row with radius 0)");
   if (lens.surfaces.back().medium) throw MakeInputError(path, number, "the last surface must leave the lens into air");
+  if (auto crossed = FirstCrossedGap(lens)) throw MakeInputError(path, rows[crossed->first], "{}", crossed->second);
   return lens;
 }
 

@@ -288,20 +288,32 @@ double RealBackFocus(const LensSystem& lens, double lambda_nm) {
     t.SetBackFocus(back_focus);
     return SpotDiagram(t, 0, lambda_nm, 41).rms_radius;
   };
-  // Golden-section search within a few focal depths of the paraxial focus.
-  double a = p.bfl - 0.05 * std::abs(p.efl), b = p.bfl + 0.05 * std::abs(p.efl);
+  // Golden-section search within 5% of the EFL about the paraxial focus; where the minimum
+  // lands at an end of that window (strong spherical aberration moves the best focus far), the
+  // window grows on that side and the search runs again.
   const double g = 0.5 * (std::sqrt(5.0) - 1);
-  double c = b - g * (b - a), d = a + g * (b - a), fc = rms(c), fd = rms(d);
-  for (int it = 0; it < 80 && b - a > 1e-7 * std::abs(p.efl); ++it) {
-    if (fc < fd) {
-      b = d, d = c, fd = fc;
-      c = b - g * (b - a), fc = rms(c);
-    } else {
-      a = c, c = d, fc = fd;
-      d = a + g * (b - a), fd = rms(d);
+  auto golden = [&](double a, double b) {
+    double c = b - g * (b - a), d = a + g * (b - a), fc = rms(c), fd = rms(d);
+    for (int it = 0; it < 80 && b - a > 1e-7 * std::abs(p.efl); ++it) {
+      if (fc < fd) {
+        b = d, d = c, fd = fc;
+        c = b - g * (b - a), fc = rms(c);
+      } else {
+        a = c, c = d, fc = fd;
+        d = a + g * (b - a), fd = rms(d);
+      }
     }
+    return 0.5 * (a + b);
+  };
+  double lo = p.bfl - 0.05 * std::abs(p.efl), hi = p.bfl + 0.05 * std::abs(p.efl), best = golden(lo, hi);
+  for (int grow = 0; grow < 8; ++grow) {
+    const double span = hi - lo, edge = 0.01 * span;
+    if (best - lo > edge && hi - best > edge) break;
+    if (best - lo <= edge) lo -= span;
+    else hi += span;
+    best = golden(lo, hi);
   }
-  return 0.5 * (a + b);
+  return best;
 }
 
 std::optional<double> LongitudinalAberration(const LensSystem& lens, double height, double lambda_nm) {

@@ -247,6 +247,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
   LensPrescription lens;
   lens.name = name;
   lens.source = path;
+  lens.file = path;
   bool have_stop = false;
   // Surfaces 1 .. n-2 are the lens; the last thickness before the image is the back focus.
   // The object surface's glass is the medium the scene lies in (water for an underwater port).
@@ -417,6 +418,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
   lens_glasses.WarnUnused();
   if (lens.surfaces.back().medium) throw MakeInputError(path, surfs[surfs.size() - 2].line, "the last surface must leave the lens into air");
   if (auto mismatch = FirstDirectionMismatch(lens)) throw MakeInputError(path, surface_lines[mismatch->first], "{}", mismatch->second);
+  if (auto crossed = FirstCrossedGap(lens)) throw MakeInputError(path, surface_lines[crossed->first], "{}", crossed->second);
   return lens;
 }
 
