@@ -144,6 +144,19 @@ TEST(Placement, CameraTakesTheCrookedLensAndTheParaxialModelsRefuseIt) {
   }
 }
 
+TEST(Placement, CameraRefusesALensThatLetsNoLightThrough) {
+  // The back face 30 mm off the axis: every ray misses its clear aperture (it rendered black).
+  LensCameraSpec spec;
+  spec.lens = ParseNativeLens("stop 0.5 air 10\nsurface 30 5 n=1.5 11\nsurface inf 50 air 11 decenter=0,30\n", "miss.lens",
+                              GlassCatalog::Default());
+  try {
+    MakeLensCamera(Transform(), 64, 32, spec);
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no light reaches the film"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Placement, ReaderChecksDecenterAndTilt) {
   auto error = [](const std::string& text) {
     try {

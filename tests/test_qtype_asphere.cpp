@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 
 #include "base/error.h"
 #include "base/rng.h"
@@ -203,6 +204,22 @@ TEST(QType, TheShippedAsphereHasNoSphericalAberration) {
   ASSERT_TRUE(s);
   EXPECT_LT(*s, -3);
   EXPECT_NEAR(ComputeParaxial(asphere.prescription(), kLambdad).efl, 50, 1e-3);  // Qcon keeps the curvature
+}
+
+TEST(QType, ALensThatPassesNoLightIsNamedWithItsFile) {
+  // A Q-type singlet whose central obstruction is wider than the beam the stop lets in: the
+  // camera's error names the file the lens came from.
+  const std::string path = ::testing::TempDir() + "/no-light.lens";
+  {
+    std::ofstream f(path);
+    f << "stop 0.5 air 5\nsurface 30 5 n=1.5 11 qbfs=0.1 obscuration=8\nsurface inf 50 air 11\n";
+  }
+  try {
+    SetUpLens(LoadLens(path, GlassCatalog::Default()), {}, {});
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no light gets through no-light (" + path + ")"), std::string::npos) << e.what();
+  }
 }
 
 TEST(QType, NativeReaderChecksTheTerms) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "base/error.h"
 #include "optics/dispersion.h"
 #include "optics/front_element.h"
 #include "optics/lens_tracer.h"
@@ -65,6 +66,17 @@ RealisticCamera::RealisticCamera(const Transform& to_world, int width, int heigh
       per_wavelength_transmittance_(!dispersive_ && settings.transmission && TransmittanceVariesWithWavelength(lens)) {
   const ParaxialData& p = lens.paraxial();
   SetOriginZ(lens.VertexZ(0) + p.entrance_pupil_position);
+  // A lens that lets light reach no point of the film (an element decentred off the beam) would
+  // render black in silence: a 9 x 9 grid over the film centred on the axis is asked (a film
+  // shifted off the image is the user's choice: it renders black, with no pass rate).
+  bool light = false;
+  for (int i = 0; i <= 8 && !light; ++i)
+    for (int j = 0; j <= 8 && !light; ++j)
+      light = bounds_.BoundAt(Vec2d(settings.sensor_width * (i / 8.0 - 0.5), settings.sensor_height * (j / 8.0 - 0.5))) != nullptr;
+  if (!light)
+    throw InputError(fmt::format("no light reaches the film through {} as it is placed: its rims, mirrors or "
+                                 "obstruction block every ray (check its decentres, tilts and semi-diameters)",
+                                 lens.prescription().Described()));
 }
 
 double RealisticCamera::WorkingFNumber() const {
