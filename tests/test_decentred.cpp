@@ -69,7 +69,7 @@ TEST(Placement, ATiltedPlateShiftsARayAsItsClosedFormSays) {
   // thickness t = 10 cos 20 at incidence 20 degrees. A ray along z leaves parallel to itself,
   // shifted sideways by t sin(i) (1 - cos(i) / sqrt(n^2 - sin^2(i))), in x.
   const double n = 1.5, i = 20 * M_PI / 180, t = 10 * std::cos(i);
-  const LensSystem lens(Parse("stop 5 air 20\n"
+  const LensSystem lens(Parse("stop 6 air 20\n"  // the tilted face's rim reaches 15 sin 20 = 5.1 mm forward
                               "surface inf 10 n=1.5 15 tilt=0,20\n"
                               "surface inf 20 air 15 tilt=0,20\n"));
   const TraceResult r = TraceFromObject(lens, {{0.5, -0.7, -5}, {0, 0, 1}}, 550);

@@ -138,7 +138,17 @@ TEST(NativeLens, BadFilesNameTheLine) {
   std::vector<Bad> cases = {
       {"surface 50 5 N-NOPE 10\n" + stop + "surface -50 40 air 10\n", 1, "glass N-NOPE is in no catalog"},
       // Two surfaces that cross within their clear apertures (a sag deeper than the thickness).
-      {stop + "surface 10 1 N-BK7 9\nsurface inf 20 air 9\n", 3, "crosses the one before it"},
+      {stop + "surface 10 1 N-BK7 9\nsurface inf 20 air 9\n", 3, "crosses surface 2"},
+      // A tilted element whose rim reaches back through the plane before it.
+      {"surface inf 0.2 N-BK7 12\nsurface inf 5 air 12\n" + stop + "surface inf 0.2 N-BK7 12 tilt=6\nsurface inf 20 air 12\n",
+       5, "crosses surface 4"},
+      // Two menisci that interpenetrate around a small stop between them.
+      {"surface 15 1.5 N-BK7 10\nsurface 20 0.5 air 10\nstop 0.5 air 2\nsurface -20 1.5 N-BK7 10\nsurface -15 40 air 10\n", 4,
+       "crosses surface 1"},
+      // Metadata given twice; a hexadecimal number.
+      {"focal_length: 50\nfocal_length: 60\n" + stop + "surface 50 5 N-BK7 10\nsurface -50 40 air 10\n", 2,
+       "focal_length is given twice (first on line 1)"},
+      {stop + "surface 0x32 5 N-BK7 10\nsurface -50 40 air 10\n", 2, "'0x32' is not a finite number"},
       {"surface 50 5 N-BK7 10\nsurface -50 40 air 10\n", 0, "no stop"},
       {stop + stop + "surface 50 5 N-BK7 10\nsurface -50 40 air 10\n", 2, "second stop"},
       {stop + "surface 8 5 N-BK7 10\nsurface -50 40 air 10\n", 2, "larger than the surface can reach"},
@@ -167,7 +177,7 @@ TEST(NativeLens, BadFilesNameTheLine) {
 // Found by fuzzing: "c=0.0" or a subnormal curvature gave a surface of infinite radius that
 // was not flat.
 TEST(NativeLens, AnyZeroCurvatureIsAPlane) {
-  for (const char* c : {"c=0", "c=0.0", "c=-0", "c=.0e3", "c=0x1p-1074"}) {
+  for (const char* c : {"c=0", "c=0.0", "c=-0", "c=.0e3", "c=4.9406564584124654e-324"}) {
     LensPrescription l = ParseNativeLens(fmt::format("stop 1 air 4\nsurface {} 5 n=1.5 10\nsurface -50 40 air 10\n", c), "c.lens", GlassCatalog::Default());
     EXPECT_TRUE(l.surfaces[1].flat) << c;
     EXPECT_EQ(l.surfaces[1].radius, 0) << c;

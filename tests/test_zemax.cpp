@@ -82,7 +82,7 @@ TEST(Zemax, EvenAsphereCoefficientsBecomeTheSag) {
 // Found by fuzzing: a curvature so small that its radius overflows (a subnormal number) gave
 // a surface of infinite radius that was not flat.
 TEST(Zemax, CurvatureTooSmallForARadiusIsAPlane) {
-  for (const char* curv : {"0", "-0", "0x1p-1074"}) {
+  for (const char* curv : {"0", "-0", "4.9406564584124654e-324"}) {
     std::string z = fmt::format(
         "UNIT MM\nSURF 0\n DISZ INFINITY\nSURF 1\n STOP\n DISZ 1\n DIAM 4\nSURF 2\n CURV {}\n GLAS N-BK7\n"
         " DISZ 5\n DIAM 10\nSURF 3\n CURV -0.02\n DISZ 40\n DIAM 10\nSURF 4\n DISZ 0\n DIAM 10\n",

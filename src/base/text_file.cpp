@@ -61,12 +61,17 @@ std::string DecodeToAscii(const std::string& raw) {
 std::optional<double> ParseFiniteNumber(const std::string& s) {
   const char* begin = s.c_str();
   while (std::isspace(static_cast<unsigned char>(*begin))) ++begin;
+  // Decimal only: strtod would also take hexadecimal (0x2A.F8), which no lens or scene file means.
+  const char* digits = begin + (*begin == '+' || *begin == '-');
+  if (digits[0] == '0' && (digits[1] == 'x' || digits[1] == 'X')) return std::nullopt;
   char* end = nullptr;
   errno = 0;
   double v = std::strtod(begin, &end);
   if (end == begin) return std::nullopt;
   while (std::isspace(static_cast<unsigned char>(*end))) ++end;
-  if (*end != '\0' || errno == ERANGE || !std::isfinite(v)) return std::nullopt;
+  // An underflow (1e-320) is the tiny number it is; an overflow is no finite number.
+  const bool overflow = errno == ERANGE && std::abs(v) > 1;
+  if (*end != '\0' || overflow || !std::isfinite(v)) return std::nullopt;
   return v;
 }
 

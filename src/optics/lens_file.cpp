@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "base/error.h"
@@ -114,7 +115,8 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
   FileCoatings coatings;
   std::shared_ptr<const Coating> default_coating;
   std::vector<size_t> explicitly_coated;  // surfaces with their own coating=
-  int default_line = 0, object_medium_line = 0, focus_gap_line = 0;
+  int default_line = 0, focus_gap_line = 0;
+  std::map<std::string, int> metadata_lines;  // each metadata key's line
   ElementTolerances tolerances;  // tolerance_decenter:, tolerance_tilt:, tolerance_seed:
   int tolerance_line = 0, tolerance_seed_line = 0;
   std::vector<int> coating_lines;  // the lines of explicitly_coated
@@ -128,25 +130,25 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       if (!lens.surfaces.empty()) throw MakeInputError(path, number, "metadata must come before the surfaces");
       std::string key = f[0].substr(0, f[0].size() - 1), value;
       for (size_t i = 1; i < f.size(); ++i) value += (i > 1 ? " " : "") + f[i];
+      // Each key once (the last one would win in silence).
+      if (const auto seen = metadata_lines.find(key); seen != metadata_lines.end())
+        throw MakeInputError(path, number, "{} is given twice (first on line {})", Printable(key), seen->second);
+      metadata_lines[key] = number;
       if (key == "name") lens.name = value;
       else if (key == "source") lens.source = value;
       else if (key == "focal_length") lens.design_focal_length = ParseFiniteNumber(value, path, number);
       else if (key == "fnumber") lens.design_fnumber = ParseFiniteNumber(value, path, number);
       else if (key == "image_circle") lens.image_circle = ParseFiniteNumber(value, path, number);
       else if (key == "object_medium") {  // the scene's side: air, water (n=1.333), oil ...
-        if (object_medium_line) throw MakeInputError(path, number, "object_medium is given twice (first on line {})", object_medium_line);
         lens.object_medium = ParseMedium(value, lens_glasses, path, number);
-        object_medium_line = number;
       }
       else if (key == "focus_gap") {  // an anamorphic's own focusing: the gap after this row
-        if (focus_gap_line) throw MakeInputError(path, number, "focus_gap is given twice (first on line {})", focus_gap_line);
         const std::optional<int> row = ParseIntegerIn(value, 1, 1000);
         if (!row) throw MakeInputError(path, number, "focus_gap '{}': the row (1, 2, ...) after which the gap changes", Printable(value));
         lens.focus_gap = *row - 1;
         focus_gap_line = number;
       }
       else if (key == "default_coating") {
-        if (default_line) throw MakeInputError(path, number, "default_coating is given twice (first on line {})", default_line);
         default_coating = coatings.Find(value, path, number);
         default_line = number;
       }
@@ -369,7 +371,6 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
   if (!stop_line) throw MakeInputError(path, 0, "no stop line (or a mirror with stop=yes)");
   if (lens.surfaces.back().medium) throw MakeInputError(path, last_line, "the last surface must leave the lens into air");
   if (auto mismatch = FirstDirectionMismatch(lens)) throw MakeInputError(path, surface_lines[mismatch->first], "{}", mismatch->second);
-  if (auto crossed = FirstCrossedGap(lens)) throw MakeInputError(path, surface_lines[crossed->first], "{}", crossed->second);
   if (focus_gap_line) {
     if (lens.focus_gap + 1 >= int(lens.surfaces.size()))
       throw MakeInputError(path, focus_gap_line, "focus_gap {}: the gap after row {} lies inside the lens only for rows 1 to {}",
@@ -412,12 +413,16 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
                                                               : default_line,
                          "surface {}: {}", mismatch->first + 1, mismatch->second);
   }
+  if (auto crossed = FirstCrossedGap(lens)) throw MakeInputError(path, surface_lines[crossed->first], "{}", crossed->second);
   if (tolerances.Any()) {
     if (lens.MirrorCount() > 0 || lens.HasToroids())
       throw MakeInputError(path, tolerance_line, "element tolerances are not modelled for a lens with {}",
                            lens.MirrorCount() > 0 ? "mirrors" : "toroids (a tilt would turn their sections)");
     if (LensElements(lens).empty()) throw MakeInputError(path, tolerance_line, "element tolerances: the lens has no element in air");
     lens = WithToleranceSample(lens, tolerances);
+    if (auto crossed = FirstCrossedGap(lens))
+      throw MakeInputError(path, surface_lines[crossed->first], "{} (as tolerance_seed {} placed the elements)", crossed->second,
+                           tolerances.seed);
   } else if (tolerance_seed_line) {
     throw MakeInputError(path, tolerance_seed_line,
                          "tolerance_seed: without a positive tolerance_decenter or tolerance_tilt it moves nothing");

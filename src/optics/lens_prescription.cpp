@@ -49,22 +49,65 @@ std::optional<std::pair<size_t, std::string>> FirstDirectionMismatch(const LensP
   return std::nullopt;
 }
 
+namespace {
+
+// The lens-space z of surface s (its vertex nominally at vertex_z) over the lens-space point
+// (X, Y), where that lies within its clear aperture: a placed surface's own point under (X, Y)
+// found by Newton's method on its frame's x, y (a tilt below 90 degrees keeps it unique).
+std::optional<double> SurfaceZOver(const LensSurface& s, double vertex_z, double X, double Y) {
+  double z;
+  if (!s.placement) {
+    if (X * X + Y * Y > s.semi_diameter * s.semi_diameter || !s.SagAt(X, Y, z)) return std::nullopt;
+    return vertex_z + z;
+  }
+  const SurfacePlacement& p = *s.placement;
+  const Vec3d origin = Vec3d(0, 0, vertex_z) + p.offset;
+  const Vec3d start = p.ToLocal(Vec3d(X, Y, 0) - origin);
+  double lx = start.x, ly = start.y;
+  for (int it = 0; it < 30; ++it) {
+    double gx, gy;
+    if (!s.SagAt(lx, ly, z, &gx, &gy)) return std::nullopt;
+    const Vec3d q = origin + p.ex * lx + p.ey * ly + p.ez * z;
+    const double ex = X - q.x, ey = Y - q.y;
+    if (std::abs(ex) + std::abs(ey) < 1e-12 * (1 + std::abs(X) + std::abs(Y))) break;
+    // d(q.x, q.y) / d(lx, ly), the sag's slope included.
+    const double a = p.ex.x + p.ez.x * gx, b = p.ey.x + p.ez.x * gy, c = p.ex.y + p.ez.y * gx, d = p.ey.y + p.ez.y * gy;
+    const double det = a * d - b * c;
+    if (det == 0) return std::nullopt;
+    lx += (d * ex - b * ey) / det, ly += (a * ey - c * ex) / det;
+  }
+  if (lx * lx + ly * ly > s.semi_diameter * s.semi_diameter || !s.SagAt(lx, ly, z)) return std::nullopt;
+  return (origin + p.ex * lx + p.ey * ly + p.ez * z).z;
+}
+
+}  // namespace
+
 std::optional<std::pair<size_t, std::string>> FirstCrossedGap(const LensPrescription& lens) {
-  for (size_t i = 0; i + 1 < lens.surfaces.size(); ++i) {
-    const LensSurface &a = lens.surfaces[i], &b = lens.surfaces[i + 1];
-    if (a.placement || b.placement) continue;
-    const double reach = std::min(a.semi_diameter, b.semi_diameter), direction = lens.DirectionAfter(i);
-    for (int k = 0; k <= 64; ++k) {
-      const double r = reach * k / 64;
-      for (int axis = 0; axis < 2; ++axis) {  // along x and y (a toroid's two sections)
-        double za, zb;
-        if (!a.SagAt(axis ? 0 : r, axis ? r : 0, za) || !b.SagAt(axis ? 0 : r, axis ? r : 0, zb)) continue;
-        const double gap = direction * (a.thickness + zb - za);
-        if (gap < -1e-6 * (1 + std::abs(a.thickness)))
-          return {{i + 1, fmt::format("this surface crosses the one before it: {:.4g} mm from the axis it lies {:.4g} mm "
-                                      "behind it along the light (the thickness {} is too small for the surfaces' sags there)",
-                                      r, -gap, a.thickness)}};
-      }
+  const size_t n = lens.surfaces.size();
+  std::vector<double> vertex_z(n, 0.0);
+  for (size_t i = 1; i < n; ++i) vertex_z[i] = vertex_z[i - 1] + lens.surfaces[i - 1].thickness;
+  // Every later surface the light meets before it turns at a mirror must lie beyond surface i
+  // along the light, wherever both have glass (sampled on rings over surface i's aperture).
+  for (size_t i = 0; i + 1 < n; ++i) {
+    const LensSurface& a = lens.surfaces[i];
+    const double direction = lens.DirectionAfter(i);
+    const Vec3d centre = a.placement ? a.placement->offset : Vec3d(0, 0, 0);
+    for (size_t j = i + 1; j < n; ++j) {
+      double worst = 0, worst_r = 0;
+      for (int ring = 0; ring <= 32; ++ring)
+        for (int k = 0; k < (ring ? 24 : 1); ++k) {
+          const double r = a.semi_diameter * ring / 32, phi = 2 * M_PI * k / 24;
+          const double X = centre.x + r * std::cos(phi), Y = centre.y + r * std::sin(phi);
+          const std::optional<double> za = SurfaceZOver(a, vertex_z[i], X, Y), zb = SurfaceZOver(lens.surfaces[j], vertex_z[j], X, Y);
+          if (!za || !zb) continue;
+          if (const double gap = direction * (*zb - *za); gap < worst) worst = gap, worst_r = std::hypot(X, Y);
+        }
+      if (worst < -1e-6 * (1 + std::abs(vertex_z[j] - vertex_z[i])))
+        return {{j, fmt::format("this surface crosses surface {} (row {}): {:.4g} mm from the axis it lies {:.4g} mm before "
+                                "it, against the direction the light travels (a thickness too small for the sags, "
+                                "decentres or tilts there)",
+                                i + 1, i + 1, worst_r, -worst)}};
+      if (lens.surfaces[j].mirror) break;  // the light turns: later surfaces lie the other way
     }
   }
   return std::nullopt;

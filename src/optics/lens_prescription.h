@@ -171,11 +171,12 @@ LensPrescription MovedAsAWhole(const LensPrescription& lens, const SurfacePlacem
 // be); the index of the surface to blame (the last one for the count) and why. Nothing where
 // the lens folds consistently (for the readers, which name the line).
 std::optional<std::pair<size_t, std::string>> FirstDirectionMismatch(const LensPrescription& lens);
-// The first surface that crosses the one before it within their common clear aperture (the
-// gap between them, along the direction light travels, negative somewhere: a thickness too
-// small for the radii, a sag too deep), and where; the index of the second surface. Decentred
-// or tilted pairs are not checked. Nothing where every gap is open (for the readers, which
-// name the line).
+// The first surface that crosses an earlier one within both their clear apertures (it lies
+// before it somewhere, along the direction light travels: a thickness too small for the sags,
+// a decentre or tilt too large), checking each surface against every later one up to the next
+// mirror (a small stop between two menisci does not hide them); decentred and tilted surfaces
+// where they are placed. The index of the later surface and why; nothing where none crosses
+// (for the readers, which name the line).
 std::optional<std::pair<size_t, std::string>> FirstCrossedGap(const LensPrescription& lens);
 // The first surface whose coating cannot lie there (optics/coating.h: CoatingMismatch), and
 // why; nothing where every coating fits (for the readers, which name its line, and Recoat).

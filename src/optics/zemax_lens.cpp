@@ -380,13 +380,21 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
         // light turns).
         s.is_stop = true;
       } else {
-        // A curved (or aspheric) stop surface: the iris in a plane at its vertex.
+        // A curved (or aspheric) stop surface: the iris in a plane at its vertex, or, where its
+        // rim lies before the vertex (a face concave to the object), in the rim's plane: the
+        // surface then lies behind the iris over its whole aperture, and the iris clips where
+        // the surface's rim does.
         LensSurface iris;
         iris.is_stop = true;
         iris.flat = true;
         iris.semi_diameter = s.semi_diameter;
         iris.medium = lens.MediumBefore(lens.surfaces.size());
         place(iris);
+        double rim = 0;
+        if (!iris.placement && !s.placement && s.SagAt(0, s.semi_diameter, rim) && rim < 0) {
+          if (!lens.surfaces.empty()) lens.surfaces.back().thickness += rim;
+          last_z += rim;  // the next place() gives the iris the thickness -rim to the surface
+        }
         lens.surfaces.push_back(iris);
         coat_lines.push_back(0);
         surface_lines.push_back(z.line);
