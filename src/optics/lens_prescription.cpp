@@ -86,17 +86,18 @@ std::optional<std::pair<size_t, std::string>> FirstCrossedGap(const LensPrescrip
   const size_t n = lens.surfaces.size();
   std::vector<double> vertex_z(n, 0.0);
   for (size_t i = 1; i < n; ++i) vertex_z[i] = vertex_z[i - 1] + lens.surfaces[i - 1].thickness;
-  // Every later surface the light meets before it turns at a mirror must lie beyond surface i
-  // along the light, wherever both have glass (sampled on rings over surface i's aperture).
+  // The next surfaces the light meets before it turns at a mirror (six rows ahead at most: a
+  // stop or a thin element between two others) must lie beyond surface i along the light,
+  // wherever both have glass (sampled on rings over surface i's aperture).
   for (size_t i = 0; i + 1 < n; ++i) {
     const LensSurface& a = lens.surfaces[i];
     const double direction = lens.DirectionAfter(i);
     const Vec3d centre = a.placement ? a.placement->offset : Vec3d(0, 0, 0);
-    for (size_t j = i + 1; j < n; ++j) {
+    for (size_t j = i + 1; j < std::min(n, i + 7); ++j) {
       double worst = 0, worst_r = 0;
-      for (int ring = 0; ring <= 32; ++ring)
-        for (int k = 0; k < (ring ? 24 : 1); ++k) {
-          const double r = a.semi_diameter * ring / 32, phi = 2 * M_PI * k / 24;
+      for (int ring = 0; ring <= 24; ++ring)
+        for (int k = 0; k < (ring ? 16 : 1); ++k) {
+          const double r = a.semi_diameter * ring / 24, phi = 2 * M_PI * k / 16;
           const double X = centre.x + r * std::cos(phi), Y = centre.y + r * std::sin(phi);
           const std::optional<double> za = SurfaceZOver(a, vertex_z[i], X, Y), zb = SurfaceZOver(lens.surfaces[j], vertex_z[j], X, Y);
           if (!za || !zb) continue;

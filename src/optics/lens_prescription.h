@@ -173,7 +173,7 @@ LensPrescription MovedAsAWhole(const LensPrescription& lens, const SurfacePlacem
 std::optional<std::pair<size_t, std::string>> FirstDirectionMismatch(const LensPrescription& lens);
 // The first surface that crosses an earlier one within both their clear apertures (it lies
 // before it somewhere, along the direction light travels: a thickness too small for the sags,
-// a decentre or tilt too large), checking each surface against every later one up to the next
+// a decentre or tilt too large), checking each surface against the next six up to the next
 // mirror (a small stop between two menisci does not hide them); decentred and tilted surfaces
 // where they are placed. The index of the later surface and why; nothing where none crosses
 // (for the readers, which name the line).
