@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "base/rng.h"
 #include "optics/batch_tracer.h"
 #include "optics/lens_tracer.h"
@@ -49,6 +51,16 @@ inline BatchAgreement CompareTracers(const LensSystem& lens, int count, double a
         a.worst_transmittance, std::abs(batch.transmittance[k] - exact.surface_transmittance * exact.internal_transmittance));
   }
   return a;
+}
+
+// What each surface kind's test expects of the comparison: transmittances within 1e-4, more
+// than `min_through` rays through both, at most `rim_slack` going either way (rays that graze a
+// rim or an edge in single precision) and positions within `worst_mm` on the plane.
+inline void ExpectAgreement(const BatchAgreement& a, int min_through, int rim_slack, double worst_mm) {
+  EXPECT_LE(a.worst_transmittance, 1e-4);
+  EXPECT_GT(a.through, min_through);
+  EXPECT_GE(a.agree, a.rays - rim_slack);
+  EXPECT_LT(a.worst_mm, worst_mm);
 }
 
 }  // namespace objektiv::test

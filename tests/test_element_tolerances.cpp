@@ -6,21 +6,15 @@
 #include <cmath>
 
 #include "base/error.h"
+#include "lens_text.h"
 #include "optics/element_tolerances.h"
 #include "optics/lens_file.h"
 
 namespace objektiv {
 namespace {
 
-LensPrescription Parse(const std::string& text) { return ParseNativeLens(text, "test.lens", GlassCatalog::Default()); }
-std::string ParseError(const std::string& text) {
-  try {
-    Parse(text);
-  } catch (const InputError& e) {
-    return std::string(e.what());
-  }
-  return std::string("accepted");
-}
+LensPrescription Parse(const std::string& text) { return test::ParseLensText(text); }
+std::string ParseError(const std::string& text) { return test::LensTextError(text); }
 
 const char* kTessar = R"(surface  42.970    9.8        n=1.691    19.2
 surface  -115.33   2.1        n=1.5487   19.2

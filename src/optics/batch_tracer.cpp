@@ -243,18 +243,9 @@ inline void AsphereSag(const Step& s, float r2, float r, float& sag, float& slop
 // outside the surface (where the square roots' arguments were clamped).
 inline void ToroidSag(const Step& s, float x, float y, float& z, float& gx, float& gy, bool& ok) {
   const float y2 = y * y, ay = std::abs(y);
-  const float arg = 1 - s.k1 * s.c * s.c * y2;
-  ok &= arg > 0;
-  const float root = std::sqrt(std::max(arg, 1e-12f));
-  float zy = s.c * y2 / (1 + root) + s.a2 * y2, slope = s.c * ay / root + 2 * s.a2 * ay;
-  float yp = y2 * y2, yd = y2 * ay;
-#pragma GCC unroll 7
-  for (int a = 0; a < 7; ++a) {
-    zy += s.a[a] * yp;
-    slope += float(4 + 2 * a) * s.a[a] * yd;
-    yp *= y2;
-    yd *= y2;
-  }
+  ok &= 1 - s.k1 * s.c * s.c * y2 > 0;
+  float zy, slope;  // the profile, a conic with even terms, at |y|
+  AsphereSag<Asphere::kEven>(s, y2, ay, zy, slope);
   const float u = 1 - s.cx * zy;
   ok &= u > 0;
   const float e = s.cx / std::max(u, 1e-12f);

@@ -24,8 +24,7 @@ LensPrescription WithToleranceSample(const LensPrescription& lens, const Element
   LensPrescription out = lens;
   PCG32 rng(0x746f6c6572616e63ull, tolerances.seed);  // "toleranc"
   auto uniform = [&] { return rng.Uniform32() * 0x1p-32; };
-  std::vector<double> vertex_z(lens.surfaces.size(), 0.0);
-  for (size_t i = 1; i < lens.surfaces.size(); ++i) vertex_z[i] = vertex_z[i - 1] + lens.surfaces[i - 1].thickness;
+  const std::vector<double> vertex_z = lens.VertexZs();
   for (const auto& [first, last] : LensElements(lens)) {
     // Four draws per element whatever the tolerances, so that one seed moves each element the
     // same way when only one tolerance changes.

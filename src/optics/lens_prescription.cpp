@@ -84,8 +84,7 @@ std::optional<double> SurfaceZOver(const LensSurface& s, double vertex_z, double
 
 std::optional<std::pair<size_t, std::string>> FirstCrossedGap(const LensPrescription& lens) {
   const size_t n = lens.surfaces.size();
-  std::vector<double> vertex_z(n, 0.0);
-  for (size_t i = 1; i < n; ++i) vertex_z[i] = vertex_z[i - 1] + lens.surfaces[i - 1].thickness;
+  const std::vector<double> vertex_z = lens.VertexZs();
   // The next surfaces the light meets before it turns at a mirror (six rows ahead at most: a
   // stop or a thin element between two others) must lie beyond surface i along the light,
   // wherever both have glass (sampled on rings over surface i's aperture).
@@ -114,6 +113,12 @@ std::optional<std::pair<size_t, std::string>> FirstCrossedGap(const LensPrescrip
   return std::nullopt;
 }
 
+std::vector<double> LensPrescription::VertexZs() const {
+  std::vector<double> z(surfaces.size(), 0.0);
+  for (size_t i = 1; i < surfaces.size(); ++i) z[i] = z[i - 1] + surfaces[i - 1].thickness;
+  return z;
+}
+
 double LensPrescription::TotalTrack() const {
   double t = 0;
   for (size_t i = 0; i + 1 < surfaces.size(); ++i) t += surfaces[i].thickness;
@@ -121,49 +126,15 @@ double LensPrescription::TotalTrack() const {
 }
 
 double LensSurface::Sag(double r) const {
-  const LensSurface& s = *this;
-  double c = s.Curvature(), r2 = r * r;
-  double z = 0;
-  if (c != 0) {
-    double arg = 1 - (1 + s.conic) * c * c * r2;
-    z = c * r2 / (1 + std::sqrt(std::max(arg, 0.0)));
-  }
-  z += s.a2 * r2;
-  double rp = r2 * r2;  // r^4
-  for (double a : s.aspheric) {
-    z += a * rp;
-    rp *= r2;
-  }
-  if (s.forbes) {
-    double dz, slope;
-    s.forbes->Departure(r, c, dz, slope);
-    z += dz;
-  }
+  double z, slope;
+  SagWithSlope(r, z, slope);
   return z;
 }
 
 double LensSurface::SagSlope(double r) const {
-  const LensSurface& s = *this;
-  double c = s.Curvature(), r2 = r * r;
-  double dz = 0;
-  if (c != 0) {
-    double arg = 1 - (1 + s.conic) * c * c * r2;
-    dz = c * r / std::sqrt(std::max(arg, 1e-300));
-  }
-  dz += 2 * s.a2 * r;
-  double rp = r2 * r;  // r^3
-  int order = 4;
-  for (double a : s.aspheric) {
-    dz += order * a * rp;
-    rp *= r2;
-    order += 2;
-  }
-  if (s.forbes) {
-    double z, slope;
-    s.forbes->Departure(r, c, z, slope);
-    dz += slope;
-  }
-  return dz;
+  double z, slope;
+  SagWithSlope(r, z, slope);
+  return slope;
 }
 
 void LensSurface::SagWithSlope(double r, double& z, double& slope) const {
@@ -203,9 +174,8 @@ bool LensSurface::NominalSagAt(double x, double y, double& z, double* gx, double
   if (!toroidal) {
     const double r = std::sqrt(x * x + y * y);
     if (c != 0 && (1 + conic) * c * c * r * r > 1) return false;
-    double slope = 0;
-    if (gx) SagWithSlope(r, z, slope);
-    else z = Sag(r);
+    double slope;
+    SagWithSlope(r, z, slope);
     if (fresnel) z -= fresnel->BaseHeight(*this, fresnel->Zone(r));
     if (gx) {
       const double per_r = r > 0 ? slope / r : 0;
@@ -274,11 +244,9 @@ std::string ToroidTurnMismatch(const LensSurface& s) {
 LensPrescription MovedAsAWhole(const LensPrescription& lens, const SurfacePlacement& motion, double pivot_z) {
   LensPrescription out = lens;
   const Vec3d pivot(0, 0, pivot_z);
-  double z = 0;  // each vertex's place on the axis
-  for (LensSurface& surface : out.surfaces) {
-    surface.placement = surface.placement.value_or(SurfacePlacement{}).MovedBy(motion, pivot, Vec3d(0, 0, z));
-    z += surface.thickness;
-  }
+  const std::vector<double> vertex_z = lens.VertexZs();
+  for (size_t i = 0; i < out.surfaces.size(); ++i)
+    out.surfaces[i].placement = out.surfaces[i].placement.value_or(SurfacePlacement{}).MovedBy(motion, pivot, Vec3d(0, 0, vertex_z[i]));
   return out;
 }
 

@@ -126,6 +126,8 @@ struct LensPrescription {
   // First vertex to the last along z (without the distance to the film): the sum of the
   // thicknesses, negative ones (after a mirror) included.
   double TotalTrack() const;
+  // Each surface's vertex z along the axis from the first (the sums of the thicknesses before it).
+  std::vector<double> VertexZs() const;
   int MirrorCount() const;
   // Whether every surface is a figure of revolution about the axis (no toroid, none decentred
   // or tilted, no form error): the radial pupil bounds, the thin- and thick-lens models and the radial

@@ -96,9 +96,11 @@ std::optional<double> IntersectNominal(const LensSurface& s, const Vec3d& o, con
       Vec3d p = o + d * t;
       double r = std::sqrt(p.x * p.x + p.y * p.y);
       if (c != 0 && (1 + s.conic) * c * c * r * r > 1) return std::nullopt;
-      double f = p.z - s.Sag(r);
+      double sag, slope;  // one pass for both
+      s.SagWithSlope(r, sag, slope);
+      double f = p.z - sag;
       double drdt = r > 0 ? (p.x * d.x + p.y * d.y) / r : 0;
-      double df = d.z - s.SagSlope(r) * drdt;
+      double df = d.z - slope * drdt;
       if (df == 0) return std::nullopt;
       double step = f / df;
       t -= step;
