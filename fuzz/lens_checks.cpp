@@ -44,6 +44,10 @@ void CheckPrescription(const LensPrescription& lens) {
       Require(s.fresnel->pitch() > 0 && s.semi_diameter / s.fresnel->pitch() <= 100000, "Fresnel zones not bounded", i);
       Require(std::isfinite(s.fresnel->slab_lo()) && std::isfinite(s.fresnel->slab_hi()), "Fresnel slab not finite", i);
     }
+    if (s.gradient) {
+      for (double c : s.gradient->coefficients()) Require(std::isfinite(c), "gradient term not finite", i);
+      Require(s.medium != nullptr, "gradient-index medium without its glass", i);
+    }
     double n = s.IndexAfter(kLambdaD);
     Require(std::isfinite(n) && n >= 1, "index after the surface below 1 or not finite", i);
   }

@@ -14,7 +14,7 @@
 # (docs/images/lens-underwater.png), `readme-images.sh anamorphic` the anamorphic lens's
 # bokeh (docs/images/lens-anamorphic-bokeh.png), `readme-images.sh tilt` the tilt lens's pair
 # (docs/images/lens-tilt-shift.png), `readme-images.sh asphere` the singlet, its Q-type
-# asphere and the Fresnel lens (docs/images/lens-asphere.png).
+# asphere, its axial GRIN version and the Fresnel lens (docs/images/lens-asphere.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/objektiv
@@ -120,12 +120,15 @@ tilt() {
   oiiotool "$tmp/tilt-0.png" "$tmp/tilt-9.png" --mosaic:pad=6 2x1 -o "$out/lens-tilt-shift.png"
 }
 
-# The spherical singlet, the same singlet with a Q-type aspheric front and the Fresnel lens.
+# The spherical singlet, the same singlet with a Q-type aspheric front, in an axial GRIN glass,
+# and the Fresnel lens.
 asphere() {
   render scenes/lens/asphere-singlet.xml -D spp=256 -o "$tmp/singlet.exr"
   render scenes/lens/asphere-singlet.xml -D spp=256 -D lens=asphere.50mm -o "$tmp/asphere.exr"
+  render scenes/lens/asphere-singlet.xml -D spp=256 -D lens=grin.50mm -o "$tmp/grin.exr"
   render scenes/lens/asphere-singlet.xml -D spp=256 -D lens=fresnel.50mm -o "$tmp/fresnel.exr"
-  oiiotool "$tmp/singlet.png" "$tmp/asphere.png" "$tmp/fresnel.png" --mosaic:pad=6 3x1 -o "$out/lens-asphere.png"
+  oiiotool "$tmp/singlet.png" "$tmp/asphere.png" "$tmp/grin.png" "$tmp/fresnel.png" --mosaic:pad=6 2x2 \
+    -o "$out/lens-asphere.png"
 }
 
 # The Cornell box through the Tessar in air and behind a flat port under water.

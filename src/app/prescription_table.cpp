@@ -63,6 +63,7 @@ std::string PrescriptionTable(const LensPrescription& lens) {
     if (s.form_error)
       extra += fmt::format(" form error {:g} um PV (seed {})", s.form_error->peak_to_valley() * 1000, s.form_error->seed());
     if (s.toroidal) extra += s.curvature_x == 0 ? " rx=inf (cylinder)" : fmt::format(" rx={:.4f}", 1 / s.curvature_x);
+    if (s.gradient) extra += fmt::format(" gradient index after: {} ({})", s.gradient->KindName(), s.gradient->Terms());
     if (s.placement) extra += PlacementLabel(*s.placement);
     out += fmt::format("  {:>3}  {:>11}  {:>10.4f}  {:<{}} {:>8} {:>6}  {:>10.4f}{}\n", i + 1, radius, s.thickness,
                        MediumLabel(s), width, nd, vd, s.semi_diameter, extra);
@@ -104,6 +105,16 @@ nlohmann::ordered_json PrescriptionJson(const LensPrescription& lens) {
     if (s.form_error) {
       r["form_error_pv_um"] = s.form_error->peak_to_valley() * 1000;
       r["form_seed"] = s.form_error->seed();
+    }
+    if (s.gradient) {  // the medium after: its profile and terms in the lens file's order
+      const std::array<double, 6>& c = s.gradient->coefficients();
+      r["gradient"] = s.gradient->KindName();
+      r["gradient_terms"] = s.gradient->kind() == GradientIndex::Kind::kPolynomial
+                                ? nlohmann::ordered_json{{"nr2", c[0]}, {"nr4", c[1]}, {"nr6", c[2]},
+                                                         {"nz1", c[3]}, {"nz2", c[4]}, {"nz3", c[5]}}
+                            : s.gradient->kind() == GradientIndex::Kind::kSpherical
+                                ? nlohmann::ordered_json{{"centre_mm", c[0]}, {"s1", c[1]}, {"s2", c[2]}}
+                                : nlohmann::ordered_json{{"g", c[0]}, {"h4", c[1]}, {"h6", c[2]}};
     }
     if (s.forbes) {
       r["q_type"] = s.forbes->Name();

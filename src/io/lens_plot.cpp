@@ -124,8 +124,8 @@ Svg PlotLensLayout(const LensSystem& lens, const std::vector<double>& fields, do
       // Begin the drawn ray at the left edge of the plot.
       double back = (chief->o.z - z_start) / dir.z;
       r.o = r.o - dir * back;
-      std::vector<Vec3d> path;
-      TraceResult t = TraceFromObject(lens, r, lambda_nm, &path);
+      std::vector<Vec3d> path;  // curved through a gradient-index medium
+      TraceResult t = TraceFromObject(lens, r, lambda_nm, nullptr, nullptr, &path);
       std::vector<Vec2d> pts = {map(r.o.z, r.o.y)};
       for (const Vec3d& q : path) pts.push_back(map(q.z, q.y));
       if (t.ray && t.ray->d.z > 0) {

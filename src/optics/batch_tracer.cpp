@@ -114,8 +114,10 @@ BatchLensTracer::BatchLensTracer(const LensSystem& lens_system)
       coating_tables_.push_back(TabulateReflectance(lens_system, int(i), false));
     }
     f.medium_after = medium_tables(s.medium.get());
+    f.gradient_step = s.gradient || (i > 0 && lens.surfaces[i - 1].gradient);
     surfaces_.push_back(f);
   }
+  if (lens.HasGradients()) exact_ = std::make_shared<const LensSystem>(lens_system);
   for (const std::vector<float>& tab : index_tables_)
     constant_index_.push_back(std::all_of(tab.begin(), tab.end(), [&](float v) { return v == tab[0]; }));
 }
@@ -123,6 +125,44 @@ BatchLensTracer::BatchLensTracer(const LensSystem& lens_system)
 void BatchLensTracer::IgnoreRims() {
   for (Surface& s : surfaces_)
     if (!s.is_stop) s.semi2 = INFINITY;
+  if (exact_) {  // the same for the exact tracer's surfaces: rims far beyond any ray
+    LensPrescription rimless = exact_->prescription();
+    for (LensSurface& s : rimless.surfaces)
+      if (!s.is_stop) s.semi_diameter = kMaxLensLength;
+    LensSystem lens(std::move(rimless));
+    lens.SetStopSemiDiameter(exact_->StopSemiDiameter());
+    lens.SetStopShape(exact_->stop_shape());
+    lens.SetBackFocus(exact_->BackFocus());
+    exact_ = std::make_shared<const LensSystem>(std::move(lens));
+  }
+}
+
+void BatchLensTracer::GradientStep(int i, bool from_film, bool transmission, bool absorb, RayBatch& rays) const {
+  const LensSystem& lens = *exact_;
+  const bool is_stop = surfaces_[size_t(i)].is_stop && rays.record_stop;
+  if (is_stop) rays.stop_x.resize(rays.Size()), rays.stop_y.resize(rays.Size());
+  for (size_t j = 0; j < rays.Size(); ++j) {
+    if (!rays.alive[j]) continue;
+    const LensRay ray{Vec3d(rays.ox[j], rays.oy[j], rays.oz[j]), Normalize(Vec3d(rays.dx[j], rays.dy[j], rays.dz[j]))};
+    const double lambda = rays.lambda[j];
+    const SurfaceCrossing c = CrossSurface(lens, i, ray, lambda, !from_film, kGradientRenderTolerance);
+    std::optional<LensRay> out = LensRay{c.p, c.d};
+    if (c.failure == TraceFailure::kNone && c.interface) out = Refracted(c, c.d);
+    if (c.failure != TraceFailure::kNone || !out) {
+      rays.alive[j] = 0;
+      continue;
+    }
+    double w = 1;
+    if (absorb) w *= SegmentTransmittance(lens, i, from_film ? i + 1 : i - 1, lambda, c.t);
+    if (transmission && c.interface) w *= 1 - c.reflectance;
+    rays.transmittance[j] *= float(w);
+    if (is_stop) {
+      const Vec3d local = lens.InSurfaceFrame(i, c.p);
+      rays.stop_x[j] = float(local.x), rays.stop_y[j] = float(local.y);
+    }
+    rays.ox[j] = float(out->o.x), rays.oy[j] = float(out->o.y), rays.oz[j] = float(out->o.z);
+    rays.dx[j] = float(out->d.x), rays.dy[j] = float(out->d.y), rays.dz[j] = float(out->d.z);
+  }
 }
 
 void BatchLensTracer::TraceFromFilm(RayBatch& rays, bool transmission) const { Trace(rays, true, transmission); }
@@ -481,6 +521,10 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
             sf.coating < 0 ? nullptr : coating_tables_[2 * sf.coating + (from_film ? 1 : 0)].data()};
     std::copy(sf.a, sf.a + 7, st.a);
     std::copy(sf.q, sf.q + sf.q_count, st.q);
+    if (sf.gradient_step) {
+      GradientStep(i, from_film, transmission, absorb && transmission, rays);
+      continue;
+    }
     const bool refract = m_in != m_out && !sf.mirror;  // the stop too, where it parts two media
     if (sf.placed) ToSurfaceFrame(sf, rays);
     if (sf.scalar) StepShape<false, Asphere::kScalar>(st, refract, sf.mirror, transmission, rays);

@@ -84,10 +84,14 @@ class BatchLensTracer {
     // A surface no kernel traces (a Fresnel surface, a form error): traced one ray at a time
     // through this copy (IntersectSurface).
     std::shared_ptr<const LensSurface> scalar;
+    // Next to a gradient-index medium (on either side): each ray traced by the exact tracer
+    // (GradientStep).
+    bool gradient_step = false;
     int medium_after;            // glass index (-1: air); its tables are at medium_after + 1
     int coating;                 // -1: bare (Fresnel's equations inline) or a mirror of constant reflectance; else coating_tables_[2 coating + toward object] (a metal mirror's reflectance: both the same)
   };
   void Trace(RayBatch& rays, bool from_film, bool transmission) const;
+  void GradientStep(int i, bool from_film, bool transmission, bool absorb, RayBatch& rays) const;
   static void ToSurfaceFrame(const Surface& s, RayBatch& rays);
   static void FromSurfaceFrame(const Surface& s, RayBatch& rays);
 
@@ -104,6 +108,8 @@ class BatchLensTracer {
   // The opening, where not round (the circle is tested inline), and the stop's radius.
   StopShape stop_shape_;
   float stop_semi_;
+  // The lens as set up, where a gradient-index medium needs the exact tracer (null: none).
+  std::shared_ptr<const LensSystem> exact_;
 };
 
 }  // namespace objektiv

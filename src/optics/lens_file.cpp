@@ -15,6 +15,7 @@
 #include "optics/coating_library.h"
 #include "optics/element_tolerances.h"
 #include "optics/glass_catalog.h"
+#include "optics/gradient_checks.h"
 #include "optics/lens_glasses.h"
 #include "optics/pbrt_lens.h"
 #include "optics/zemax_lens.h"
@@ -224,6 +225,9 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
     double zone_pitch = 0;  // zones=: a Fresnel surface's pitch
     double form_pv_um = 0;  // form_error_um=, form_seed=: the figure's irregularity
     std::optional<uint64_t> form_seed;
+    // A gradient-index medium after the surface: grin_r= and grin_z= (polynomial), grin_sphere=
+    // or selfoc=, each a list of terms.
+    std::map<std::string, std::vector<double>> grin;
     for (size_t i = next + 3; i < f.size(); ++i) {
       size_t eq = f[i].find('=');
       if (eq == std::string::npos) throw MakeInputError(path, number, "option '{}' is not key=value", f[i]);
@@ -268,6 +272,19 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
         if (zone_pitch >= s.semi_diameter)
           spdlog::warn("{}:{}: zones={} is as wide as the semi-diameter {} or wider: one zone, the profile itself", path, number,
                        Printable(value), s.semi_diameter);
+      } else if (key == "grin_r" || key == "grin_z" || key == "grin_sphere" || key == "selfoc") {
+        if (s.mirror) throw MakeInputError(path, number, "{}= on a mirror: a gradient-index medium follows a refracting surface", key);
+        const std::vector<std::string> parts = SplitCommas(value);
+        const size_t least = key == "grin_sphere" ? 2 : 1;
+        if (parts.size() < least || parts.size() > 3)
+          throw MakeInputError(path, number, "{}={}: {}", key, Printable(value),
+                               key == "grin_r"      ? "NR2[,NR4[,NR6]], per mm^2, mm^4, mm^6"
+                               : key == "grin_z"    ? "NZ1[,NZ2[,NZ3]], per mm, mm^2, mm^3"
+                               : key == "grin_sphere" ? "R,S1[,S2]: the shells' centre (mm from the vertex), per mm, per mm^2"
+                                                      : "G[,H4[,H6]]: g per mm, h4 and h6 without units");
+        std::vector<double>& terms = grin[key];
+        for (const std::string& part : parts) terms.push_back(ParseFiniteNumber(part, path, number));
+        terms.resize(3, 0.0);
       } else if (key == "form_error_um") {  // peak-to-valley of a smooth random figure error
         form_pv_um = ParseFiniteNumber(value, path, number);
         if (!(form_pv_um > 0 && form_pv_um <= 1000))
@@ -326,7 +343,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
                              s.mirror ? "k, a4..a16, qbfs, qcon, qnorm, zones, form_error_um, form_seed, rx, decenter, tilt, "
                                         "obscuration, reflectance, stop"
                                       : "k, a4..a16, qbfs, qcon, qnorm, zones, form_error_um, form_seed, rx, decenter, tilt, "
-                                        "coating, obscuration");
+                                        "coating, obscuration, grin_r, grin_z, grin_sphere, selfoc");
       }
     }
     if (q_kind) {
@@ -357,6 +374,28 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
                                                        s.semi_diameter);
     } else if (form_seed) {
       throw MakeInputError(path, number, "form_seed= without form_error_um=: it chooses a form error's shape");
+    }
+    if (!grin.empty()) {
+      if (!s.medium) throw MakeInputError(path, number, "a gradient-index medium needs its glass (the medium column names air)");
+      if (grin.size() > 1 && !(grin.size() == 2 && grin.count("grin_r") && grin.count("grin_z")))
+        throw MakeInputError(path, number, "one gradient profile a surface: grin_r= with grin_z= (polynomial), grin_sphere= "
+                             "or selfoc=");
+      if (grin.count("selfoc")) {
+        const std::vector<double>& t = grin["selfoc"];
+        if (!(t[0] > 0 && t[0] <= 100)) throw MakeInputError(path, number, "selfoc g {} per mm: above 0 and at most 100", t[0]);
+        s.gradient = std::make_shared<const GradientIndex>(GradientIndex::Selfoc(t[0], t[1], t[2]));
+      } else if (grin.count("grin_sphere")) {
+        const std::vector<double>& t = grin["grin_sphere"];
+        if (t[0] == 0 || !(std::abs(t[0]) <= kMaxLensLength))
+          throw MakeInputError(path, number, "grin_sphere centre {} mm: nonzero (the shells' centre on the axis) and within {} mm",
+                               t[0], kMaxLensLength);
+        s.gradient = std::make_shared<const GradientIndex>(GradientIndex::Spherical(t[0], t[1], t[2]));
+      } else {
+        std::array<double, 3> r{}, z{};
+        if (grin.count("grin_r")) std::copy_n(grin["grin_r"].begin(), 3, r.begin());
+        if (grin.count("grin_z")) std::copy_n(grin["grin_z"].begin(), 3, z.begin());
+        s.gradient = std::make_shared<const GradientIndex>(GradientIndex::Polynomial(r, z));
+      }
     }
     const SurfacePlacement placed = SurfacePlacement::DecenterTilt(decenter[0], decenter[1], tilt[0], tilt[1], tilt[2]);
     if (!placed.IsIdentity()) s.placement = placed;
@@ -414,6 +453,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
                          "surface {}: {}", mismatch->first + 1, mismatch->second);
   }
   if (auto crossed = FirstCrossedGap(lens)) throw MakeInputError(path, surface_lines[crossed->first], "{}", crossed->second);
+  if (auto grin = FirstGradientMismatch(lens)) throw MakeInputError(path, surface_lines[grin->first], "{}", grin->second);
   if (tolerances.Any()) {
     if (lens.MirrorCount() > 0 || lens.HasToroids())
       throw MakeInputError(path, tolerance_line, "element tolerances are not modelled for a lens with {}",

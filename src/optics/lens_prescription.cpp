@@ -254,6 +254,10 @@ bool LensPrescription::HasToroids() const {
   return std::any_of(surfaces.begin(), surfaces.end(), [](const LensSurface& s) { return s.toroidal; });
 }
 
+bool LensPrescription::HasGradients() const {
+  return std::any_of(surfaces.begin(), surfaces.end(), [](const LensSurface& s) { return bool(s.gradient); });
+}
+
 bool LensPrescription::HasFormErrors() const {
   return std::any_of(surfaces.begin(), surfaces.end(), [](const LensSurface& s) { return bool(s.form_error); });
 }
@@ -319,6 +323,7 @@ LensPrescription LensPrescription::Scaled(double factor) const {
       scale *= factor * factor;
     }
     if (s.form_error) s.form_error = std::make_shared<const FormError>(s.form_error->Scaled(factor));
+    if (s.gradient) s.gradient = std::make_shared<const GradientIndex>(s.gradient->Scaled(factor));
     // The zones of the scaled profile (their slab follows it).
     if (s.fresnel) s.fresnel = std::make_shared<const FresnelZones>(s, s.fresnel->pitch() * factor);
   }

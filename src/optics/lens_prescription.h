@@ -11,6 +11,7 @@
 #include "optics/form_error.h"
 #include "optics/fresnel_zones.h"
 #include "optics/glass.h"
+#include "optics/gradient_index.h"
 #include "optics/mirror_metal.h"
 #include "optics/surface_placement.h"
 
@@ -60,6 +61,10 @@ struct LensSurface {
   std::shared_ptr<const Coating> coating;
   // Medium after this surface (towards the film); null means air.
   std::shared_ptr<const Glass> medium;
+  // A gradient-index medium after this surface (optics/gradient_index.h), laid out in this
+  // surface's frame; `medium` is its glass (its index on the axis at the vertex, its dispersion
+  // and absorption); null: homogeneous.
+  std::shared_ptr<const GradientIndex> gradient;
 
   double Curvature() const { return (flat || radius == 0) ? 0.0 : 1.0 / radius; }
   // Sets the radius from a curvature c (1/mm): a plane where c is 0 or so small (a subnormal
@@ -135,6 +140,7 @@ struct LensPrescription {
   bool RotationallySymmetric() const { return Centred() && !HasToroids() && !HasFormErrors(); }
   bool HasToroids() const;
   bool HasFormErrors() const;
+  bool HasGradients() const;  // a gradient-index medium anywhere
   bool Centred() const;  // no surface decentred or tilted
   // +1 where light leaves surface i toward the film (+z), -1 toward the object (after an odd
   // number of mirrors up to and including i).

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "base/fresnel_dielectric.h"
+#include "optics/gradient_propagation.h"
 
 namespace objektiv {
 
@@ -120,30 +121,42 @@ std::optional<double> IntersectSurface(const LensSurface& s, const Vec3d& o, con
   return t;
 }
 
-SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, double lambda_nm, bool toward_film) {
+SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, double lambda_nm, bool toward_film,
+                             double gradient_tolerance, std::vector<Vec3d>* curve) {
   SurfaceCrossing c;
   const LensSurface& s = lens.surface(i);
   // The ray in the surface's frame (its vertex at the origin): a rigid motion, so the ray's
   // parameter t is the same in both.
   const Vec3d vertex(0, 0, lens.VertexZ(i));
   const SurfacePlacement* placed = s.placement ? &*s.placement : nullptr;
-  const Vec3d o = placed ? placed->ToLocal(ray.o - vertex - placed->offset) : ray.o - vertex;
-  const Vec3d d = placed ? placed->ToLocal(ray.d) : ray.d;
-  bool blocked;
-  std::optional<double> t = IntersectSurface(s, o, d, blocked);
-  if (!t || *t < -1e-9) {
-    c.failure = TraceFailure::kMissedSurface;
-    return c;
-  }
-  if (blocked) {  // a Fresnel surface's riser
+  // The medium the ray travels in: a gradient bends it on the way.
+  const int gap = toward_film ? i - 1 : i;
+  Vec3d p;  // the point in the surface's frame
+  if (gap >= 0 && lens.surface(gap).gradient) {
+    const GradientArrival a = PropagateThroughGradient(lens, gap, toward_film, ray, lambda_nm, gradient_tolerance, curve);
+    c.failure = a.failure;
+    c.p = a.p, c.d = a.d, c.t = a.length;
+    if (a.failure != TraceFailure::kNone) return c;
+    p = lens.InSurfaceFrame(i, c.p);
+  } else {
+    const Vec3d o = placed ? placed->ToLocal(ray.o - vertex - placed->offset) : ray.o - vertex;
+    const Vec3d d = placed ? placed->ToLocal(ray.d) : ray.d;
+    bool blocked;
+    std::optional<double> t = IntersectSurface(s, o, d, blocked);
+    if (!t || *t < -1e-9) {
+      c.failure = TraceFailure::kMissedSurface;
+      return c;
+    }
     c.t = *t;
     c.p = ray.o + ray.d * *t;
-    c.failure = TraceFailure::kClipped;
-    return c;
+    c.d = ray.d;
+    if (curve) curve->push_back(c.p);
+    if (blocked) {  // a Fresnel surface's riser
+      c.failure = TraceFailure::kClipped;
+      return c;
+    }
+    p = o + d * *t;
   }
-  c.t = *t;
-  c.p = ray.o + ray.d * *t;
-  const Vec3d p = o + d * *t;  // in the surface's frame
   const double r = std::sqrt(p.x * p.x + p.y * p.y);
   if ((s.is_stop ? !lens.InsideStop(p.x, p.y) : r > s.semi_diameter) || r < s.obscuration) {
     c.failure = TraceFailure::kClipped;
@@ -151,8 +164,10 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
   }
   // Indices on the incoming and outgoing sides (a stop inside glass has the same on both;
   // between different media it refracts as the flat interface it is).
-  const double n_object_side = lens.prescription().IndexBefore(size_t(i), lambda_nm);
-  const double n_film_side = s.IndexAfter(lambda_nm);
+  // Where a gradient-index medium lies on either side, its index at the point.
+  const double n_object_side = i > 0 && lens.surface(i - 1).gradient ? IndexInGap(lens, i - 1, c.p, lambda_nm)
+                                                                     : lens.prescription().IndexBefore(size_t(i), lambda_nm);
+  const double n_film_side = s.gradient ? IndexInGap(lens, i, c.p, lambda_nm) : s.IndexAfter(lambda_nm);
   const double n1 = toward_film ? n_object_side : n_film_side, n2 = toward_film ? n_film_side : n_object_side;
   c.mirror = s.mirror;
   c.interface = n1 != n2 && !s.mirror;
@@ -168,8 +183,8 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
     c.normal = g / Length(g);
   }
   if (placed) c.normal = placed->FromLocal(c.normal);
-  if (Dot(c.normal, ray.d) > 0) c.normal = -c.normal;
-  c.cos_i = -Dot(c.normal, ray.d);
+  if (Dot(c.normal, c.d) > 0) c.normal = -c.normal;
+  c.cos_i = -Dot(c.normal, c.d);
   if (c.mirror) {
     c.reflectance = lens.MirrorReflectance(i, lambda_nm, c.cos_i);
     return c;
@@ -203,14 +218,14 @@ namespace {
 // reflection), so the segment between them lies in one medium.
 template <typename Visit>
 TraceResult TraceVisits(const LensSystem& lens, const LensRay& in, double lambda_nm, int count, Visit visit,
-                        std::vector<Vec3d>* path, std::vector<SurfaceEvent>* events) {
+                        std::vector<Vec3d>* path, std::vector<SurfaceEvent>* events, std::vector<Vec3d>* curve = nullptr) {
   LensRay ray = in;
   TraceResult result;
   int previous = -1;
   for (int k = 0; k < count; ++k) {
     const SurfaceVisit v = visit(k);
     const int i = v.surface;
-    const SurfaceCrossing c = CrossSurface(lens, i, ray, lambda_nm, v.toward_film);
+    const SurfaceCrossing c = CrossSurface(lens, i, ray, lambda_nm, v.toward_film, kGradientTolerance, curve);
     if (c.failure == TraceFailure::kMissedSurface) {
       result.failure = c.failure;
       result.surface = i;
@@ -232,7 +247,7 @@ TraceResult TraceVisits(const LensSystem& lens, const LensRay& in, double lambda
         return result;
       }
       result.surface_transmittance *= c.reflectance;
-      ray = Reflected(c, ray.d);
+      ray = Reflected(c, c.d);
       continue;
     }
     if (!c.interface) {
@@ -241,17 +256,17 @@ TraceResult TraceVisits(const LensSystem& lens, const LensRay& in, double lambda
         result.surface = i;
         return result;
       }
-      ray.o = c.p;
+      ray = LensRay{c.p, c.d};
       continue;
     }
     if (events) events->push_back({i, c.reflectance, c.cos_i});
     if (v.reflect) {
       result.surface_transmittance *= c.reflectance;
-      ray = Reflected(c, ray.d);
+      ray = Reflected(c, c.d);
       continue;
     }
     result.surface_transmittance *= 1 - c.reflectance;
-    std::optional<LensRay> out = Refracted(c, ray.d);
+    std::optional<LensRay> out = Refracted(c, c.d);
     if (!out) {
       result.failure = TraceFailure::kTotalInternalReflection;
       result.surface = i;
@@ -264,18 +279,18 @@ TraceResult TraceVisits(const LensSystem& lens, const LensRay& in, double lambda
 }
 
 TraceResult Trace(const LensSystem& lens, const LensRay& in, double lambda_nm, bool from_film,
-                  std::vector<Vec3d>* path, std::vector<SurfaceEvent>* events) {
+                  std::vector<Vec3d>* path, std::vector<SurfaceEvent>* events, std::vector<Vec3d>* curve = nullptr) {
   const int n = lens.SurfaceCount();
   return TraceVisits(
       lens, in, lambda_nm, n, [&](int k) { return SurfaceVisit{from_film ? n - 1 - k : k, false, !from_film}; }, path,
-      events);
+      events, curve);
 }
 
 }  // namespace
 
 TraceResult TraceFromObject(const LensSystem& lens, const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path,
-                            std::vector<SurfaceEvent>* events) {
-  return Trace(lens, ray, lambda_nm, false, path, events);
+                            std::vector<SurfaceEvent>* events, std::vector<Vec3d>* curve) {
+  return Trace(lens, ray, lambda_nm, false, path, events, curve);
 }
 TraceResult TraceFromFilm(const LensSystem& lens, const LensRay& ray, double lambda_nm, std::vector<Vec3d>* path,
                           std::vector<SurfaceEvent>* events) {

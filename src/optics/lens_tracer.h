@@ -40,10 +40,12 @@ struct SurfaceEvent {
 double FresnelReflectance(double n1, double n2, double cos_i);
 
 // From the object side through every surface toward the film. `path`, if given, receives
-// the point where the ray meets each surface it reaches (for plots); `events` the
-// reflectance at each refracting surface crossed.
+// the point where the ray meets each surface it reaches; `events` the reflectance at each
+// refracting surface crossed; `curve` the whole path to draw: the same points and, through a
+// gradient-index medium, the point after every step of the integration between them.
 TraceResult TraceFromObject(const LensSystem& lens, const LensRay& ray, double lambda_nm,
-                            std::vector<Vec3d>* path = nullptr, std::vector<SurfaceEvent>* events = nullptr);
+                            std::vector<Vec3d>* path = nullptr, std::vector<SurfaceEvent>* events = nullptr,
+                            std::vector<Vec3d>* curve = nullptr);
 // From the film through every surface toward the object.
 TraceResult TraceFromFilm(const LensSystem& lens, const LensRay& ray, double lambda_nm,
                           std::vector<Vec3d>* path = nullptr, std::vector<SurfaceEvent>* events = nullptr);
@@ -72,12 +74,13 @@ Vec3d SurfaceNormal(const LensSurface& s, const Vec3d& p);
 std::optional<double> IntersectSurface(const LensSurface& s, const Vec3d& o, const Vec3d& d, bool& blocked);
 
 // One step of any path: where `ray` meets surface i travelling toward the film (or the
-// object), whether it gets through the opening there, and what the interface does; the
+// object; along a curve through a gradient-index medium, optics/gradient_propagation.h), whether it gets through the opening there, and what the interface does; the
 // caller chooses to reflect or refract (Reflected, Refracted). The exact tracer's own step.
 struct SurfaceCrossing {
   TraceFailure failure = TraceFailure::kNone;  // kMissedSurface, or kClipped (p is set)
   Vec3d p;                 // the point on the surface
-  double t = 0;            // the distance travelled to it
+  Vec3d d;                 // the direction the ray arrives in (its own, but through a gradient-index medium)
+  double t = 0;            // the distance travelled to it (the curved path's length through a gradient)
   bool interface = false;  // whether the index changes there (else the ray goes straight on)
   // A mirror: the ray is reflected (Reflected), with `reflectance` the mirror's, and goes on
   // to the next surface in order (not an interface: no refraction, no ghost reflection).
@@ -86,9 +89,16 @@ struct SurfaceCrossing {
   double cos_i = 1, eta = 1;  // eta: incoming index over outgoing
   double reflectance = 0;     // unpolarised (LensSystem::SurfaceReflectance), the mirror's, 0 where neither
 };
-SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, double lambda_nm, bool toward_film);
-// The ray leaving an interface crossing in direction d reflected, or refracted (nothing beyond
-// the critical angle).
+// Local error allowed per step of the integration through a gradient-index medium, mm (and in
+// n dr/ds, index units): the exact tracer's, and the renderer's (its single-precision tracer
+// agrees with the exact one to 1e-4 mm at the film).
+inline constexpr double kGradientTolerance = 1e-10, kGradientRenderTolerance = 1e-6;
+// `curve`, if given, receives the points along the way through a gradient-index medium (the
+// crossing's point last), or the crossing's point alone.
+SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, double lambda_nm, bool toward_film,
+                             double gradient_tolerance = kGradientTolerance, std::vector<Vec3d>* curve = nullptr);
+// The ray leaving an interface crossing in direction d (SurfaceCrossing::d) reflected, or
+// refracted (nothing beyond the critical angle).
 LensRay Reflected(const SurfaceCrossing& c, const Vec3d& d);
 std::optional<LensRay> Refracted(const SurfaceCrossing& c, const Vec3d& d);
 // The glass's internal transmittance over `length` mm between neighbouring surfaces `from`

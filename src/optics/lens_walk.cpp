@@ -36,14 +36,14 @@ LensWalk WalkFromObject(const LensSystem& lens, const LensRay& in, double lambda
     }
     if (c.mirror) {  // reflects all it does not absorb; the walk goes on in the same order
       if (!options.lossless) weight *= c.reflectance;
-      ray = Reflected(c, ray.d);
+      ray = Reflected(c, c.d);
       i += toward_film ? 1 : -1;
       continue;
     }
     bool reflect = false;
     std::optional<LensRay> refracted;
     if (c.interface) {
-      refracted = Refracted(c, ray.d);
+      refracted = Refracted(c, c.d);
       if (!refracted) {
         reflect = true;  // beyond the critical angle: all of it
       } else if (!options.lossless) {
@@ -54,10 +54,10 @@ LensWalk WalkFromObject(const LensSystem& lens, const LensRay& in, double lambda
     }
     if (reflect) {
       if (++walk.reflections > options.max_reflections) return walk;
-      ray = Reflected(c, ray.d);
+      ray = Reflected(c, c.d);
       toward_film = !toward_film;
     } else {
-      ray = refracted ? *refracted : LensRay{c.p, ray.d};
+      ray = refracted ? *refracted : LensRay{c.p, c.d};
     }
     i += toward_film ? 1 : -1;
   }
