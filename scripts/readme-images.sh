@@ -14,7 +14,8 @@
 # (docs/images/lens-underwater.png), `readme-images.sh anamorphic` the anamorphic lens's
 # bokeh (docs/images/lens-anamorphic-bokeh.png), `readme-images.sh tilt` the tilt lens's pair
 # (docs/images/lens-tilt-shift.png), `readme-images.sh asphere` the singlet, its Q-type
-# asphere, its axial GRIN version and the Fresnel lens (docs/images/lens-asphere.png).
+# asphere, its axial GRIN version and the Fresnel lens (docs/images/lens-asphere.png), `readme-images.sh
+# dust` dust on a cover glass at f/2.8 and f/22 (docs/images/lens-dust.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/objektiv
@@ -131,6 +132,13 @@ asphere() {
     -o "$out/lens-asphere.png"
 }
 
+# Dust on the cover glass before the film: invisible wide open, dark spots at f/22.
+dust() {
+  render scenes/lens/sensor-dust.xml -D spp=256 -o "$tmp/dust-open.exr"
+  render scenes/lens/sensor-dust.xml -D spp=256 -D fnumber=22 -D exposure=411 -o "$tmp/dust-f22.exr"
+  oiiotool "$tmp/dust-open.png" "$tmp/dust-f22.png" --mosaic:pad=6 2x1 -o "$out/lens-dust.png"
+}
+
 # The Cornell box through the Tessar in air and behind a flat port under water.
 underwater() {
   render scenes/cornell-box/cornell-box-underwater.xml -D spp=256 -D res=400 -D lens=tessar.brendel.100mm \
@@ -140,7 +148,7 @@ underwater() {
 }
 
 case "${1:-}" in
-  flare | caustics | bump | stereo | classic | media | sampling | filter | mirror | underwater | anamorphic | tilt | asphere)
+  flare | caustics | bump | stereo | classic | media | sampling | filter | mirror | underwater | anamorphic | tilt | asphere | dust)
     "$1"
     echo "wrote $out/$1-*.png"
     exit 0
@@ -156,6 +164,7 @@ underwater
 anamorphic
 tilt
 asphere
+dust
 
 render scenes/lens/distortion-chart.xml -D spp=64 -o "$tmp/dist-wide.exr"
 render scenes/lens/distortion-chart.xml -D spp=64 -D lens=telephoto.250mm -D distance=11.4 -o "$tmp/dist-tele.exr"

@@ -115,6 +115,7 @@ BatchLensTracer::BatchLensTracer(const LensSystem& lens_system)
     }
     f.medium_after = medium_tables(s.medium.get());
     f.gradient_step = s.gradient || (i > 0 && lens.surfaces[i - 1].gradient);
+    f.dirt = s.dirt;
     surfaces_.push_back(f);
   }
   if (lens.HasGradients()) exact_ = std::make_shared<const LensSystem>(lens_system);
@@ -152,7 +153,7 @@ void BatchLensTracer::GradientStep(int i, bool from_film, bool transmission, boo
       rays.alive[j] = 0;
       continue;
     }
-    double w = 1;
+    double w = c.clean;
     if (absorb) w *= SegmentTransmittance(lens, i, from_film ? i + 1 : i - 1, lambda, c.t);
     if (transmission && c.interface) w *= 1 - c.reflectance;
     rays.transmittance[j] *= float(w);
@@ -535,6 +536,9 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
     else if (sf.aspheric) StepShape<false, Asphere::kEven>(st, refract, sf.mirror, transmission, rays);
     else StepShape<false, Asphere::kNone>(st, refract, sf.mirror, transmission, rays);
     if (coated && (refract || sf.mirror) && st.coating) ApplyCoating(st.coating, rays, sf.mirror);
+    if (sf.dirt && transmission)  // what dust and scratches let through where each ray met the surface (its frame)
+      for (size_t j = 0; j < count; ++j)
+        if (rays.alive[j]) rays.transmittance[j] *= float(sf.dirt->Transmittance(rays.ox[j], rays.oy[j]));
     if (sf.is_stop) {
       if (rays.record_stop) {
         rays.stop_x.assign(rays.ox.begin(), rays.ox.end());

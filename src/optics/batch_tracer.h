@@ -87,6 +87,7 @@ class BatchLensTracer {
     // Next to a gradient-index medium (on either side): each ray traced by the exact tracer
     // (GradientStep).
     bool gradient_step = false;
+    std::shared_ptr<const SurfaceDirt> dirt;  // dust and scratches (null: clean)
     int medium_after;            // glass index (-1: air); its tables are at medium_after + 1
     int coating;                 // -1: bare (Fresnel's equations inline) or a mirror of constant reflectance; else coating_tables_[2 coating + toward object] (a metal mirror's reflectance: both the same)
   };

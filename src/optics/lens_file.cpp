@@ -228,6 +228,9 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
     // A gradient-index medium after the surface: grin_r= and grin_z= (polynomial), grin_sphere=
     // or selfoc=, each a list of terms.
     std::map<std::string, std::vector<double>> grin;
+    double dust = 0;  // dust=, scratches=, dirt_seed=: what absorbs light on the surface
+    int scratches = 0;
+    std::optional<uint64_t> dirt_seed;
     for (size_t i = next + 3; i < f.size(); ++i) {
       size_t eq = f[i].find('=');
       if (eq == std::string::npos) throw MakeInputError(path, number, "option '{}' is not key=value", f[i]);
@@ -285,6 +288,19 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
         std::vector<double>& terms = grin[key];
         for (const std::string& part : parts) terms.push_back(ParseFiniteNumber(part, path, number));
         terms.resize(3, 0.0);
+      } else if (key == "dust") {  // the share of the aperture's area its particles cover
+        dust = ParseFiniteNumber(value, path, number);
+        if (!(dust > 0 && dust <= SurfaceDirt::kMaxCoverage))
+          throw MakeInputError(path, number, "dust={}: the share of the clear aperture covered, above 0 and at most {}",
+                               Printable(value), SurfaceDirt::kMaxCoverage);
+      } else if (key == "scratches") {
+        const std::optional<int> n = ParseIntegerIn(value, 1, SurfaceDirt::kMaxScratches);
+        if (!n) throw MakeInputError(path, number, "scratches={}: a count from 1 to {}", Printable(value), SurfaceDirt::kMaxScratches);
+        scratches = *n;
+      } else if (key == "dirt_seed") {
+        const std::optional<int> seed = ParseIntegerIn(value, 0, 1000000000);
+        if (!seed) throw MakeInputError(path, number, "dirt_seed={}: an integer from 0 to 1000000000", Printable(value));
+        dirt_seed = uint64_t(*seed);
       } else if (key == "form_error_um") {  // peak-to-valley of a smooth random figure error
         form_pv_um = ParseFiniteNumber(value, path, number);
         if (!(form_pv_um > 0 && form_pv_um <= 1000))
@@ -341,9 +357,9 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       } else {
         throw MakeInputError(path, number, "unknown option '{}' ({})", key,
                              s.mirror ? "k, a4..a16, qbfs, qcon, qnorm, zones, form_error_um, form_seed, rx, decenter, tilt, "
-                                        "obscuration, reflectance, stop"
+                                        "obscuration, dust, scratches, dirt_seed, reflectance, stop"
                                       : "k, a4..a16, qbfs, qcon, qnorm, zones, form_error_um, form_seed, rx, decenter, tilt, "
-                                        "coating, obscuration, grin_r, grin_z, grin_sphere, selfoc");
+                                        "coating, obscuration, dust, scratches, dirt_seed, grin_r, grin_z, grin_sphere, selfoc");
       }
     }
     if (q_kind) {
@@ -374,6 +390,16 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
                                                        s.semi_diameter);
     } else if (form_seed) {
       throw MakeInputError(path, number, "form_seed= without form_error_um=: it chooses a form error's shape");
+    }
+    if (dust > 0 || scratches > 0) {
+      // The seed defaults to the row's number: each surface its own pattern.
+      const double particles = SurfaceDirt::ParticleCount(dust, s.semi_diameter);
+      if (particles > SurfaceDirt::kMaxParticles)
+        throw MakeInputError(path, number, "dust={} over a semi-diameter of {} mm is {:.3g} particles; at most {}", dust,
+                             s.semi_diameter, particles, SurfaceDirt::kMaxParticles);
+      s.dirt = std::make_shared<const SurfaceDirt>(dust, scratches, dirt_seed.value_or(lens.surfaces.size() + 1), s.semi_diameter);
+    } else if (dirt_seed) {
+      throw MakeInputError(path, number, "dirt_seed= without dust= or scratches=: it chooses their pattern");
     }
     if (!grin.empty()) {
       if (!s.medium) throw MakeInputError(path, number, "a gradient-index medium needs its glass (the medium column names air)");

@@ -324,6 +324,7 @@ LensPrescription LensPrescription::Scaled(double factor) const {
     }
     if (s.form_error) s.form_error = std::make_shared<const FormError>(s.form_error->Scaled(factor));
     if (s.gradient) s.gradient = std::make_shared<const GradientIndex>(s.gradient->Scaled(factor));
+    if (s.dirt) s.dirt = std::make_shared<const SurfaceDirt>(s.dirt->Scaled(factor));
     // The zones of the scaled profile (their slab follows it).
     if (s.fresnel) s.fresnel = std::make_shared<const FresnelZones>(s, s.fresnel->pitch() * factor);
   }

@@ -13,6 +13,7 @@
 #include "optics/glass.h"
 #include "optics/gradient_index.h"
 #include "optics/mirror_metal.h"
+#include "optics/surface_dirt.h"
 #include "optics/surface_placement.h"
 
 namespace objektiv {
@@ -54,6 +55,8 @@ struct LensSurface {
   // section is a circle of curvature curvature_x; 0: flat in x (a cylinder curved in y only).
   bool toroidal = false;
   double curvature_x = 0;
+  // Dust and scratches (optics/surface_dirt.h): what absorbs the light meeting the surface; null: clean.
+  std::shared_ptr<const SurfaceDirt> dirt;
   // Decentred or tilted (optics/surface_placement.h); none: centred on the axis.
   std::optional<SurfacePlacement> placement;
   // Anti-reflection coating (optics/coating.h); null: bare. It lies on the surface's glass: on

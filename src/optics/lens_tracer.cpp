@@ -162,6 +162,7 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
     c.failure = TraceFailure::kClipped;
     return c;
   }
+  if (s.dirt) c.clean = s.dirt->Transmittance(p.x, p.y);
   // Indices on the incoming and outgoing sides (a stop inside glass has the same on both;
   // between different media it refracts as the flat interface it is).
   // Where a gradient-index medium lies on either side, its index at the point.
@@ -240,6 +241,7 @@ TraceResult TraceVisits(const LensSystem& lens, const LensRay& in, double lambda
     // Absorption along the segment just travelled, inside the medium between the surfaces.
     if (previous >= 0) result.internal_transmittance *= SegmentTransmittance(lens, previous, i, lambda_nm, c.t);
     previous = i;
+    result.surface_transmittance *= c.clean;
     if (c.mirror) {  // always reflects; the path goes on to the next surface in order
       if (v.reflect) {  // a ghost cannot pass through a mirror
         result.failure = TraceFailure::kMissedSurface;

@@ -23,8 +23,8 @@ struct TraceResult {
   int surface = -1;            // where it failed
   // Fraction of the light that gets through: the product of the surfaces' transmittances
   // (1 - R, unpolarised: Fresnel's where bare, the coating's where coated) at every refracting
-  // surface and of the glasses' internal transmittances along the path (Beer-Lambert, from
-  // the catalogs' IT data).
+  // surface, of what dust and scratches let through (0 or 1) at every surface, and of the
+  // glasses' internal transmittances along the path (Beer-Lambert, from the catalogs' IT data).
   double surface_transmittance = 1, internal_transmittance = 1;
 };
 
@@ -88,6 +88,7 @@ struct SurfaceCrossing {
   Vec3d normal;            // unit, facing the incoming ray (where an interface or a mirror)
   double cos_i = 1, eta = 1;  // eta: incoming index over outgoing
   double reflectance = 0;     // unpolarised (LensSystem::SurfaceReflectance), the mirror's, 0 where neither
+  double clean = 1;           // what the surface's dust and scratches let through at p (optics/surface_dirt.h)
 };
 // Local error allowed per step of the integration through a gradient-index medium, mm (and in
 // n dr/ds, index units): the exact tracer's, and the renderer's (its single-precision tracer

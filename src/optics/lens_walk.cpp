@@ -30,6 +30,8 @@ LensWalk WalkFromObject(const LensSystem& lens, const LensRay& in, double lambda
     if (c.failure != TraceFailure::kNone) return walk;
     if (previous >= 0 && !options.lossless) weight *= SegmentTransmittance(lens, previous, i, lambda_nm, c.t);
     previous = i;
+    weight *= c.clean;  // dust and scratches (lossless or not: they block)
+    if (!(weight > 0)) return walk;
     if (i == stop && options.stop_transmittance) {
       weight *= options.stop_transmittance(c.p.x / stop_radius, c.p.y / stop_radius);
       if (!(weight > 0)) return walk;
