@@ -15,7 +15,8 @@
 # bokeh (docs/images/lens-anamorphic-bokeh.png), `readme-images.sh tilt` the tilt lens's pair
 # (docs/images/lens-tilt-shift.png), `readme-images.sh asphere` the singlet, its Q-type
 # asphere, its axial GRIN version and the Fresnel lens (docs/images/lens-asphere.png), `readme-images.sh
-# dust` dust on a cover glass at f/2.8 and f/22 (docs/images/lens-dust.png).
+# dust` dust on a cover glass at f/2.8 and f/22 (docs/images/lens-dust.png), `readme-images.sh hood`
+# a hood that fits the wide-angle and one too long (docs/images/lens-hood.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/objektiv
@@ -139,6 +140,13 @@ dust() {
   oiiotool "$tmp/dust-open.png" "$tmp/dust-f22.png" --mosaic:pad=6 2x1 -o "$out/lens-dust.png"
 }
 
+# A hood that clears the wide-angle's frame and one too long.
+hood() {
+  render scenes/lens/hood-vignetting.xml -D spp=64 -o "$tmp/hood-short.exr"
+  render scenes/lens/hood-vignetting.xml -D spp=64 -D hood_length=20 -o "$tmp/hood-long.exr"
+  oiiotool "$tmp/hood-short.png" "$tmp/hood-long.png" --mosaic:pad=6 2x1 -o "$out/lens-hood.png"
+}
+
 # The Cornell box through the Tessar in air and behind a flat port under water.
 underwater() {
   render scenes/cornell-box/cornell-box-underwater.xml -D spp=256 -D res=400 -D lens=tessar.brendel.100mm \
@@ -148,7 +156,7 @@ underwater() {
 }
 
 case "${1:-}" in
-  flare | caustics | bump | stereo | classic | media | sampling | filter | mirror | underwater | anamorphic | tilt | asphere | dust)
+  flare | caustics | bump | stereo | classic | media | sampling | filter | mirror | underwater | anamorphic | tilt | asphere | dust | hood)
     "$1"
     echo "wrote $out/$1-*.png"
     exit 0
@@ -165,6 +173,7 @@ anamorphic
 tilt
 asphere
 dust
+hood
 
 render scenes/lens/distortion-chart.xml -D spp=64 -o "$tmp/dist-wide.exr"
 render scenes/lens/distortion-chart.xml -D spp=64 -D lens=telephoto.250mm -D distance=11.4 -o "$tmp/dist-tele.exr"

@@ -119,6 +119,19 @@ TEST(Parser, RealisticSensorErrorsNameFileAndLine) {
       {scene("<string name=\"lens\" value=\"dgauss.50mm\"/>\n<point name=\"focus_point\" x=\"0\" y=\"0\" z=\"-1\"/>"), 2,
        "behind the camera"},
       {scene("<float name=\"fnumber\" value=\"4\"/>"), 2, "needs the property 'lens'"},
+      {scene("<string name=\"lens\" value=\"dgauss.50mm\"/>\n<float name=\"hood_diameter\" value=\"60\"/>"), 4,
+       "hood_diameter without hood_length"},
+      {scene("<string name=\"lens\" value=\"dgauss.50mm\"/>\n<float name=\"hood_length\" value=\"30\"/>"), 4,
+       "hood_diameter (round) or hood_width and hood_height"},
+      {scene("<string name=\"lens\" value=\"dgauss.50mm\"/>\n<float name=\"hood_length\" value=\"30\"/>\n"
+             "<float name=\"hood_width\" value=\"60\"/>"),
+       5, "takes both hood_width and hood_height"},
+      {scene("<string name=\"lens\" value=\"dgauss.50mm\"/>\n<float name=\"hood_length\" value=\"30\"/>\n"
+             "<float name=\"hood_diameter\" value=\"20\"/>"),
+       5, "narrower than the front element (25.2 mm across)"},
+      {scene("<string name=\"lens\" value=\"dgauss.50mm\"/>\n<float name=\"hood_length\" value=\"-3\"/>\n"
+             "<float name=\"hood_diameter\" value=\"60\"/>"),
+       4, "hood_length"},
   };
   ExpectErrors(cases);
 }

@@ -51,6 +51,11 @@ std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int
   auto start = std::chrono::steady_clock::now();
   LensSetup setup =
       SetUpLens(spec.lens, {spec.fnumber, spec.stop_diameter, StopOpening(spec)}, Focus(spec, to_world), spec.tilt);
+  if (spec.hood) {
+    if (std::string why = spec.hood->Mismatch(setup.lens.surface(0).semi_diameter); !why.empty()) throw InputError(why);
+    setup.lens.SetHood(spec.hood);
+    setup.report += fmt::format("; hood {}", spec.hood->Describe());
+  }
   const LensSystem& lens = setup.lens;
   spdlog::info("{}", setup.report);
   std::unique_ptr<Camera> camera;

@@ -22,6 +22,7 @@ struct LensCameraSpec {
   double focus_distance = INFINITY;  // metres from the film
   std::optional<Vec3f> focus_point;  // world space: focus on the plane through it instead
   std::optional<SurfacePlacement> tilt;  // a tilt-shift lens's tilt (optics/lens_setup.h: SetUpLens)
+  std::optional<LensHood> hood;          // a lens hood on the front (optics/lens_hood.h); real lens only
   LensCameraSettings settings;
   // A stereo eye's offset along the camera's x axis and the convergence distance from the
   // entrance pupil (mm; 0: parallel): the sensor is shifted sideways (as a shift lens) by the

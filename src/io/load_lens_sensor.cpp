@@ -179,6 +179,31 @@ LensEffects ReadLensEffects(const Properties& p, LensModel model) {
   return e;
 }
 
+// A lens hood (optics/lens_hood.h): hood_length with hood_diameter (round) or hood_width and
+// hood_height (rectangular, along the film's sides), mm.
+std::optional<LensHood> Hood(const Properties& p, LensModel model) {
+  const bool round = p.Has("hood_diameter"), box = p.Has("hood_width") || p.Has("hood_height");
+  if (!p.Has("hood_length")) {
+    for (const char* name : {"hood_diameter", "hood_width", "hood_height"})
+      if (p.Has(name)) throw ErrorAt(p.LocOf(name), "{} without hood_length (mm from the front vertex to the mouth)", name);
+    return std::nullopt;
+  }
+  if (round == box)
+    throw ErrorAt(p.LocOf("hood_length"), "a hood's mouth is hood_diameter (round) or hood_width and hood_height (rectangular)");
+  if (box && !(p.Has("hood_width") && p.Has("hood_height")))
+    throw ErrorAt(p.LocOf(p.Has("hood_width") ? "hood_width" : "hood_height"), "a rectangular hood takes both hood_width and hood_height");
+  if (model != LensModel::kReal) {
+    spdlog::warn("{}:{}: the hood needs lens_model 'real' (it lies in front of the lens's first element): ignored",
+                 p.LocOf("hood_length").file, p.LocOf("hood_length").line);
+    return std::nullopt;
+  }
+  LensHood h;
+  h.length = p.FloatIn("hood_length", 0, 1e-3, 1e5);
+  if (round) h.radius = 0.5 * p.FloatIn("hood_diameter", 0, 1e-3, 1e5);
+  else h.half_width = 0.5 * p.FloatIn("hood_width", 0, 1e-3, 1e5), h.half_height = 0.5 * p.FloatIn("hood_height", 0, 1e-3, 1e5);
+  return h;
+}
+
 // The camera a <sensor type="realistic"> describes.
 std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b) {
   LensCameraSpec spec;
@@ -226,6 +251,10 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b
                    p.LocOf("vignetting").file, p.LocOf("vignetting").line, model);
   }
   s.far_clip = b.far_clip;
+  spec.hood = Hood(p, spec.model);
+  if (spec.hood)
+    if (std::string why = spec.hood->Mismatch(spec.lens.surfaces.front().semi_diameter); !why.empty())
+      throw ErrorAt(p.LocOf(p.Has("hood_diameter") ? "hood_diameter" : "hood_width"), "{}", why);
   if (p.Has("aperture_mask")) {
     std::string path = ResolvePath(p.LocOf("aperture_mask"), p.String("aperture_mask"));
     try {
@@ -292,6 +321,10 @@ SensorRegistry::PluginType RealisticSensorPlugin() {
            {"transmission", PropType::kBoolean},
            {"coating", PropType::kString},
            {"aperture_mask", PropType::kString},
+           {"hood_length", PropType::kFloat},
+           {"hood_diameter", PropType::kFloat},
+           {"hood_width", PropType::kFloat},
+           {"hood_height", PropType::kFloat},
            {"ghosts", PropType::kBoolean},
            {"ghost_grid", PropType::kInteger},
            {"glare_samples", PropType::kInteger},

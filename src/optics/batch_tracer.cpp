@@ -119,6 +119,8 @@ BatchLensTracer::BatchLensTracer(const LensSystem& lens_system)
     surfaces_.push_back(f);
   }
   if (lens.HasGradients()) exact_ = std::make_shared<const LensSystem>(lens_system);
+  hood_ = lens_system.hood();
+  first_vertex_z_ = float(lens_system.VertexZ(0));
   for (const std::vector<float>& tab : index_tables_)
     constant_index_.push_back(std::all_of(tab.begin(), tab.end(), [&](float v) { return v == tab[0]; }));
 }
@@ -126,6 +128,7 @@ BatchLensTracer::BatchLensTracer(const LensSystem& lens_system)
 void BatchLensTracer::IgnoreRims() {
   for (Surface& s : surfaces_)
     if (!s.is_stop) s.semi2 = INFINITY;
+  hood_.reset();  // mechanical vignetting too
   if (exact_) {  // the same for the exact tracer's surfaces: rims far beyond any ray
     LensPrescription rimless = exact_->prescription();
     for (LensSurface& s : rimless.surfaces)
@@ -136,6 +139,13 @@ void BatchLensTracer::IgnoreRims() {
     lens.SetBackFocus(exact_->BackFocus());
     exact_ = std::make_shared<const LensSystem>(std::move(lens));
   }
+}
+
+void BatchLensTracer::ClipAtHood(RayBatch& rays) const {
+  for (size_t j = 0; j < rays.Size(); ++j)
+    if (rays.alive[j] && !hood_->Passes(Vec3d(rays.ox[j], rays.oy[j], rays.oz[j]), Vec3d(rays.dx[j], rays.dy[j], rays.dz[j]),
+                                        first_vertex_z_))
+      rays.alive[j] = 0;
 }
 
 void BatchLensTracer::GradientStep(int i, bool from_film, bool transmission, bool absorb, RayBatch& rays) const {
@@ -504,6 +514,7 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
   rays.depth.assign(count, 0.f);
   const bool coated = transmission && !coating_tables_.empty();
   if (coated) CoatingRows(rays);
+  if (hood_ && !from_film) ClipAtHood(rays);  // from the scene: through the hood's mouth first
   const int n = int(surfaces_.size());
   for (int k = 0; k < n; ++k) {
     const int i = from_film ? n - 1 - k : k;
@@ -553,6 +564,7 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
     }
     if (sf.placed) FromSurfaceFrame(sf, rays);
   }
+  if (hood_ && from_film) ClipAtHood(rays);  // toward the scene: through the hood's mouth last
   if (absorbing)
     for (size_t j = 0; j < count; ++j) rays.transmittance[j] *= std::exp(-rays.depth[j]);
 }

@@ -56,7 +56,8 @@ class BatchLensTracer {
   // the Fresnel losses and glass absorption are multiplied into `transmittance`.
   void TraceFromFilm(RayBatch& rays, bool transmission = true) const;
   void TraceFromObject(RayBatch& rays, bool transmission = true) const;
-  // Without the rims: only the stop clips (to show a lens without optical vignetting).
+  // Without the rims (and a lens hood): only the stop clips (to show a lens without optical
+  // vignetting).
   void IgnoreRims();
   float FilmZ() const { return film_z_; }
 
@@ -111,6 +112,9 @@ class BatchLensTracer {
   float stop_semi_;
   // The lens as set up, where a gradient-index medium needs the exact tracer (null: none).
   std::shared_ptr<const LensSystem> exact_;
+  std::optional<LensHood> hood_;  // in front of the first vertex (z 0 in lens space)
+  float first_vertex_z_ = 0;
+  void ClipAtHood(RayBatch& rays) const;
 };
 
 }  // namespace objektiv

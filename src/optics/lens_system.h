@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "optics/coating.h"
+#include "optics/lens_hood.h"
 #include "optics/lens_prescription.h"
 #include "optics/paraxial.h"
 #include "optics/stop_shape.h"
@@ -35,6 +36,12 @@ class LensSystem {
   // The opening's shape (round, an iris of blades, cut by a mask's support).
   void SetStopShape(const StopShape& shape) { stop_shape_ = shape; }
   const StopShape& stop_shape() const { return stop_shape_; }
+  // A lens hood in front of the first element (optics/lens_hood.h): every tracer lets light in
+  // from the scene, and out toward it, only through its mouth; none by default.
+  void SetHood(const std::optional<LensHood>& hood) { hood_ = hood; }
+  const std::optional<LensHood>& hood() const { return hood_; }
+  // Whether a ray entering the lens from the scene (or leaving toward it) passes the hood.
+  bool PassesHood(const Vec3d& o, const Vec3d& d) const { return !hood_ || hood_->Passes(o, d, vertex_z_.front()); }
   // Whether (x, y) in the stop's plane (mm from the axis) lies inside the opening.
   bool InsideStop(double x, double y) const;
 
@@ -86,6 +93,7 @@ class LensSystem {
   int stop_index_ = -1;
   double film_z_ = 0, stop_semi_ = 0;
   StopShape stop_shape_;
+  std::optional<LensHood> hood_;
   ParaxialData paraxial_;
 };
 

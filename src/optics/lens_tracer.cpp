@@ -223,6 +223,12 @@ TraceResult TraceVisits(const LensSystem& lens, const LensRay& in, double lambda
   LensRay ray = in;
   TraceResult result;
   int previous = -1;
+  // From the scene into the front element: through the hood's mouth first.
+  if (count > 0 && visit(0).surface == 0 && visit(0).toward_film && !lens.PassesHood(ray.o, ray.d)) {
+    result.failure = TraceFailure::kClipped;
+    result.surface = -1;
+    return result;
+  }
   for (int k = 0; k < count; ++k) {
     const SurfaceVisit v = visit(k);
     const int i = v.surface;
@@ -275,6 +281,13 @@ TraceResult TraceVisits(const LensSystem& lens, const LensRay& in, double lambda
       return result;
     }
     ray = *out;
+  }
+  // Out of the front element toward the scene: through the hood's mouth last.
+  if (count > 0 && visit(count - 1).surface == 0 && !visit(count - 1).toward_film && !visit(count - 1).reflect &&
+      !lens.PassesHood(ray.o, ray.d)) {
+    result.failure = TraceFailure::kClipped;
+    result.surface = -1;
+    return result;
   }
   result.ray = ray;
   return result;

@@ -20,7 +20,7 @@ enum class TraceFailure { kNone, kMissedSurface, kClipped, kTotalInternalReflect
 struct TraceResult {
   std::optional<LensRay> ray;  // the ray after the last surface traced, if it got through
   TraceFailure failure = TraceFailure::kNone;
-  int surface = -1;            // where it failed
+  int surface = -1;            // where it failed (-1: at the lens hood's mouth)
   // Fraction of the light that gets through: the product of the surfaces' transmittances
   // (1 - R, unpolarised: Fresnel's where bare, the coating's where coated) at every refracting
   // surface, of what dust and scratches let through (0 or 1) at every surface, and of the

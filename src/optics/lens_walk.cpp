@@ -10,6 +10,7 @@ LensWalk WalkFromObject(const LensSystem& lens, const LensRay& in, double lambda
   const int n = lens.SurfaceCount(), stop = lens.StopIndex();
   const double stop_radius = lens.StopSemiDiameter();
   LensRay ray = in;
+  if (!lens.PassesHood(ray.o, ray.d)) return walk;  // the scene's light enters through the hood
   double weight = 1;
   int i = 0, previous = -1;
   bool toward_film = true;

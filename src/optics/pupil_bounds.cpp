@@ -257,7 +257,8 @@ PupilBounds::PupilBounds(const LensSystem& lens, double film_radius, const Pupil
   // (the convex hull of an annulus is its disc anyway, and the region search walks out from the
   // chief ray, which the obstruction blocks).
   const LensSystem unobstructed = lens.WithoutObstructions();
-  if (!lens.prescription().RotationallySymmetric()) {
+  // (A rectangular hood's mouth is no figure of revolution either.)
+  if (!lens.prescription().RotationallySymmetric() || (lens.hood() && lens.hood()->radius == 0)) {
     rear_z_ = PupilPlaneZ(unobstructed, options.wavelengths.front());
     grid_ = std::make_unique<PupilGrid>(unobstructed, film_radius, rear_z_, options);
     return;

@@ -36,7 +36,8 @@ class RegionProbe {
   // symmetric lens; else by Newton's method in both coordinates); nothing if the ray does not
   // reach the stop.
   std::optional<Vec2d> ChiefAim() const {
-    if (film_.y != 0 || !exact_.prescription().RotationallySymmetric()) return ChiefAimSkew();
+    if (film_.y != 0 || !exact_.prescription().RotationallySymmetric() || (exact_.hood() && exact_.hood()->radius == 0))
+      return ChiefAimSkew();
     const double r = film_.x;
     auto stop_x = [&](double a) -> std::optional<double> {
       Vec3d o(r, 0, film_z_);
