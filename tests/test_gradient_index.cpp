@@ -14,6 +14,7 @@
 #include "batch_agreement.h"
 #include "lens_text.h"
 #include "pupil_bound_checks.h"
+#include "optics/focusing.h"
 #include "optics/gradient_propagation.h"
 #include "optics/lens_system.h"
 #include "optics/lens_tracer.h"
@@ -131,6 +132,54 @@ TEST(GradientIndex, ParaxialDataMatchTheExactRaysNearTheAxis) {
     const double front_focus = b.ray->o.z - b.ray->o.y * b.ray->d.z / b.ray->d.y;
     EXPECT_NEAR(front_focus, p.ffl, 2e-6 * std::abs(p.ffl)) << options;
   }
+}
+
+// Focused on a near object, the paraxial back focus (the camera's focusing) is where the exact
+// tracer's rays from the object point near the axis cross it, for a radial and a spherical
+// gradient (the finite-distance paraxial trace carries the gradient's power too).
+TEST(GradientIndex, FiniteFocusMatchesTheExactRays) {
+  for (const char* options : {"grin_r=-0.002", "grin_sphere=-40,-0.002,1e-4"}) {
+    const LensPrescription rx =
+        Parse(fmt::format("stop 1 air 8\nsurface inf 5 n=1.6 10 {}\nsurface -200 49 air 10\n", options));
+    const double distance = 2500;  // film to object
+    const std::optional<FocusSolution> f = FocusAtDistance(rx, distance, 550);
+    ASSERT_TRUE(f) << options;
+    LensSystem lens(rx);
+    lens.SetBackFocus(f->back_focus);
+    const Vec3d object(0, 0, lens.FilmZ() - distance);
+    const TraceResult r = TraceFromObject(lens, {object, Normalize(Vec3d(0, 1e-5, 1))}, 550);
+    ASSERT_TRUE(r.ray) << options;
+    const double crossing = r.ray->o.z - r.ray->o.y * r.ray->d.z / r.ray->d.y;
+    EXPECT_NEAR(crossing, lens.FilmZ(), 1e-5 * f->back_focus) << options;
+  }
+}
+
+// A ray that curves out to the element's edge between its faces leaves the glass there: in a
+// rod 1.2 periods long every ray that gets through stays within its radius all the way.
+TEST(GradientIndex, RaysThatReachTheEdgeLeaveTheElement) {
+  const LensSystem rod(Parse(fmt::format("stop 0.01 air 0.5\nsurface inf {} n=1.6 1 selfoc=0.3\nsurface inf 1 air 1\n",
+                                         1.2 * 2 * M_PI / 0.3)));
+  int passed = 0, edge = 0;
+  for (int k = 0; k <= 200; ++k) {
+    const double sin_u = 0.9 * k / 200;
+    const LensRay ray{Vec3d(0, 0, rod.FilmZ()), Vec3d(0, sin_u, -std::sqrt(1 - sin_u * sin_u))};
+    const SurfaceCrossing back = CrossSurface(rod, 2, ray, 550, false);
+    if (back.failure != TraceFailure::kNone) continue;  // beyond the back face's rim
+    const std::optional<LensRay> in = Refracted(back, back.d);
+    if (!in) continue;
+    std::vector<Vec3d> points;
+    const GradientArrival a = PropagateThroughGradient(rod, 1, false, *in, 550, kGradientTolerance, &points);
+    double widest = 0;
+    for (const Vec3d& q : points) widest = std::max(widest, std::hypot(q.x, q.y));
+    if (a.failure == TraceFailure::kNone) {
+      ++passed;
+      EXPECT_LE(widest, 1.0) << sin_u;
+    } else {
+      edge += a.failure == TraceFailure::kClipped;
+    }
+  }
+  EXPECT_GT(passed, 20);
+  EXPECT_GT(edge, 20);
 }
 
 // The same lens in a homogeneous glass and with a gradient of zero terms trace alike.

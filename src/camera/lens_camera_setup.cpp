@@ -57,6 +57,10 @@ std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int
     setup.report += fmt::format("; hood {}", spec.hood->Describe());
   }
   const LensSystem& lens = setup.lens;
+  if (!(lens.BackFocus() > 0))
+    throw InputError(fmt::format("{} images {:.4g} mm {} its last surface (back focus {:.4g} mm): no film can lie there",
+                                 spec.lens.Described(), std::abs(lens.BackFocus()), lens.BackFocus() < 0 ? "inside" : "on",
+                                 lens.BackFocus()));
   spdlog::info("{}", setup.report);
   std::unique_ptr<Camera> camera;
   LensCameraSettings settings = spec.settings;

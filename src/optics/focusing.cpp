@@ -13,16 +13,11 @@ struct ObjectRay {
   double y_end, nu_end, y_stop;
 };
 ObjectRay TraceFromObjectPoint(const LensPrescription& lens, double s, double lambda_nm) {
-  const auto& surf = lens.surfaces;
-  const std::vector<double> index = SignedIndices(lens, lambda_nm);  // through mirrors too
-  double y = s, nu = index[0], y_stop = 0;  // slope 1 over the object distance s, in the object medium
-  for (size_t i = 0; i < surf.size(); ++i) {
-    const double n_before = index[i], n_after = index[i + 1];
-    if (surf[i].is_stop) y_stop = y;
-    nu -= y * surf[i].ParaxialCurvatureInY() * (n_after - n_before);
-    if (i + 1 < surf.size()) y += surf[i].thickness * nu / n_after;
-  }
-  return {y, nu, y_stop};
+  // Slope 1 over the object distance s, in the object medium; through mirrors and gradients too.
+  std::vector<double> heights;
+  const auto [y, nu] = TraceParaxialForward(lens, lambda_nm, s, lens.IndexBefore(0, lambda_nm), &heights);
+  const int stop = lens.StopIndex();
+  return {y, nu, stop >= 0 ? heights[size_t(stop)] : 0.0};
 }
 }  // namespace
 

@@ -11,13 +11,16 @@ namespace objektiv {
 
 namespace {
 
-// Where the index over the element after surface i leaves 1..5 (on a grid of 33 radii by 65
-// depths between the two surfaces' sags, at the d line): a message, or empty.
+// Where the index over the element after surface i leaves 1..5 (on a grid of 65 radii by 65
+// depths between the two surfaces' sags, out to the wider face plus either face's decentre, at
+// the d line): a message naming the farthest point out, or empty.
 std::string IndexOutOfRange(const LensSurface& front, const LensSurface& back) {
   const double n_v = front.IndexAfter(kLambdad);
-  const double semi = std::max(front.semi_diameter, back.semi_diameter);
-  for (int a = 0; a <= 32; ++a) {
-    const double r = semi * a / 32;
+  auto offset = [](const LensSurface& s) { return s.placement ? std::hypot(s.placement->offset.x, s.placement->offset.y) : 0.0; };
+  const double semi = std::max(front.semi_diameter, back.semi_diameter) + offset(front) + offset(back);
+  double worst = 0, worst_n = n_v, worst_r = 0, worst_z = 0;  // how far out of 1..5, and where
+  for (int a = 0; a <= 64; ++a) {
+    const double r = semi * a / 64;
     // The element's depth at this radius: from the front's sag to the back's (each surface's
     // sag where it reaches that far, else its vertex plane's).
     const double z_front = r <= front.semi_diameter ? front.Sag(r) : 0;
@@ -27,12 +30,13 @@ std::string IndexOutOfRange(const LensSurface& front, const LensSurface& back) {
       const double z = lo + (hi - lo) * b / 64;
       const double n2 = front.gradient->IndexSquared(n_v, Vec3d(r, 0, z));
       const double n = std::sqrt(std::max(n2, 0.0));
-      if (!(n >= 1 && n <= 5))
-        return fmt::format("the gradient's index reaches {:.4g} at r = {:.4g} mm, z = {:.4g} mm from the vertex (d line): a "
-                           "glass's lies between 1 and 5 over the whole element", n, r, z);
+      const double out = !std::isfinite(n) ? INFINITY : n < 1 ? 1 - n : n - 5;
+      if (out > worst) worst = out, worst_n = n, worst_r = r, worst_z = z;
     }
   }
-  return "";
+  if (!(worst > 0)) return "";
+  return fmt::format("the gradient's index reaches {:.4g} at r = {:.4g} mm, z = {:.4g} mm from the vertex (d line): a "
+                     "glass's lies between 1 and 5 over the whole element", worst_n, worst_r, worst_z);
 }
 
 }  // namespace

@@ -45,9 +45,9 @@ GradientArrival PropagateThroughGradient(const LensSystem& lens, int gap, bool t
   const LensSurface& ts = lens.surface(target);
   const Frame medium(lens, gap), target_frame(lens, target);
   const double direction = toward_film ? 1 : -1;
-  // The element's sides: rays beyond this radius have left through its edge.
-  const int other = toward_film ? gap : std::min(gap + 1, lens.SurfaceCount() - 1);
-  const double r_max = 1.5 * std::max({medium_surface.semi_diameter, lens.surface(other).semi_diameter, ts.semi_diameter}) + 1;
+  // The element's edge, a cylinder as wide as the wider of its faces: a ray that reaches it
+  // between them leaves the glass there (into the mount).
+  const double r_max = std::max(medium_surface.semi_diameter, lens.surface(gap + 1).semi_diameter);
 
   bool real_index = true;
   const auto f = [&](const State& y) {

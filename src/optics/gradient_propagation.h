@@ -16,8 +16,8 @@ namespace objektiv {
 
 struct GradientArrival {
   // kMissedSurface: the ray turned back, or ran past 20000 steps (60000 tries); kClipped: it left the
-  // element sideways (beyond 1.5 times the larger clear aperture of the gap's surfaces) or
-  // where the index is no longer real (p is where).
+  // element through its edge (a cylinder about the medium's axis as wide as the wider of the
+  // gap's clear apertures) or where the index is no longer real (p is where).
   TraceFailure failure = TraceFailure::kNone;
   Vec3d p, d;         // lens space: the point on the surface, and the unit direction of arrival
   double length = 0;  // the geometric path length, mm

@@ -422,6 +422,10 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
         if (grin.count("grin_z")) std::copy_n(grin["grin_z"].begin(), 3, z.begin());
         s.gradient = std::make_shared<const GradientIndex>(GradientIndex::Polynomial(r, z));
       }
+      const std::array<double, 6>& c = s.gradient->coefficients();
+      const bool flat = s.gradient->kind() == GradientIndex::Kind::kSpherical ? c[1] == 0 && c[2] == 0
+                                                                             : std::all_of(c.begin(), c.end(), [](double v) { return v == 0; });
+      if (flat) spdlog::warn("{}:{}: the gradient's terms are all zero: the medium is its glass, the same everywhere", path, number);
     }
     const SurfacePlacement placed = SurfacePlacement::DecenterTilt(decenter[0], decenter[1], tilt[0], tilt[1], tilt[2]);
     if (!placed.IsIdentity()) s.placement = placed;

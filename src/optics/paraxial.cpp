@@ -61,10 +61,11 @@ double IndexArriving(const LensPrescription& lens, const std::vector<double>& n,
 // angle nu (n u, u the slope along the direction of travel). Returns the values just after
 // `last`. `n`: SignedIndices.
 YNu TraceRange(const LensPrescription& lens, const std::vector<double>& n, YNu ray, int first, int last, bool backward,
-               double lambda_nm) {
+               double lambda_nm, std::vector<double>* heights = nullptr) {
   const auto& s = lens.surfaces;
   int step = backward ? -1 : 1;
   for (int i = first;; i += step) {
+    if (heights) (*heights)[size_t(i)] = ray.y;
     double c = s[i].ParaxialCurvatureInY();
     const double n_object = IndexArriving(lens, n, i, lambda_nm), n_film = n[i + 1];
     double n_before = backward ? n_film : n_object, n_after = backward ? n_object : n_film;
@@ -79,6 +80,14 @@ YNu TraceRange(const LensPrescription& lens, const std::vector<double>& n, YNu r
 }
 
 }  // namespace
+
+std::pair<double, double> TraceParaxialForward(const LensPrescription& lens, double lambda_nm, double y, double nu,
+                                               std::vector<double>* heights) {
+  if (heights) heights->assign(lens.surfaces.size(), 0.0);
+  const YNu out = TraceRange(lens, SignedIndices(lens, lambda_nm), {y, nu}, 0, int(lens.surfaces.size()) - 1, false,
+                             lambda_nm, heights);
+  return {out.y, out.nu};
+}
 
 std::vector<double> SignedIndices(const LensPrescription& lens, double lambda_nm) {
   std::vector<double> n{lens.IndexBefore(0, lambda_nm)};

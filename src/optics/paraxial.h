@@ -1,5 +1,6 @@
 // First-order (paraxial) optics of a prescription, by y-nu ray tracing at one wavelength.
 #pragma once
+#include <utility>
 #include <vector>
 
 #include "optics/dispersion.h"
@@ -30,6 +31,12 @@ struct ParaxialData {
 // hold unchanged through mirrors, n' = -n there, and thicknesses are negative where the
 // index is). Entry i + 1 is the medium after surface i; entry 0 the object space (air).
 std::vector<double> SignedIndices(const LensPrescription& lens, double lambda_nm);
+
+// A paraxial ray meeting the first surface at height y with reduced angle nu (n u in the object
+// medium) carried through the whole lens (gradient-index media included): its height and
+// reduced angle after the last surface; `heights`, if given, receives its height at each surface.
+std::pair<double, double> TraceParaxialForward(const LensPrescription& lens, double lambda_nm, double y, double nu,
+                                               std::vector<double>* heights = nullptr);
 
 // Object at infinity. Surfaces are refracted with their indices at lambda_nm.
 // stop_semi_diameter < 0: the prescription's stop.

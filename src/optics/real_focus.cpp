@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "base/log.h"
 #include "optics/focusing.h"
 #include "optics/paraxial.h"
 
@@ -110,10 +111,18 @@ LensFocus FocusLens(const LensSystem& lens, double distance_from_film, double la
     double object_z = t.FilmZ() - focus.plane_of_focus_to_film;
     std::vector<LensRay> rays = AxialBundle(t, p, object_z, infinite, lambda_nm);
     std::optional<double> z = LeastRmsPlane(rays);
-    if (!z) return focus;  // too few rays: keep the paraxial focus
+    if (!z) {  // too few rays: keep the paraxial focus
+      spdlog::warn("lens {}: too few real rays get through to find its best focus; the paraxial focus is kept", rx.name);
+      return focus;
+    }
     double next = *z - t.VertexZ(last);
     // Real and paraxial focus differ by the aberrations, a small fraction of f.
-    if (!std::isfinite(next) || std::abs(next - focus.back_focus) > 0.2 * std::abs(p.efl)) return focus;
+    if (!std::isfinite(next) || std::abs(next - focus.back_focus) > 0.2 * std::abs(p.efl)) {
+      spdlog::warn("lens {}: its real rays focus {} from the paraxial focus (more than a fifth of its focal length: "
+                   "aberrations too strong to trust); the paraxial focus is kept and the image may be soft",
+                   rx.name, std::isfinite(next) ? fmt::format("{:.4g} mm", next - focus.back_focus) : std::string("far"));
+      return focus;
+    }
     bool converged = std::abs(next - back) < 1e-9 * std::abs(p.efl);
     back = next;
     focus.rays_used = int(rays.size());
