@@ -48,7 +48,7 @@ inline BatchAgreement CompareTracers(const LensSystem& lens, int count, double a
     a.worst_mm = std::max(a.worst_mm, std::hypot(exact.ray->o.x + t_exact * exact.ray->d.x - (batch.ox[k] + t_fast * batch.dx[k]),
                                                  exact.ray->o.y + t_exact * exact.ray->d.y - (batch.oy[k] + t_fast * batch.dy[k])));
     a.worst_transmittance = std::max(
-        a.worst_transmittance, std::abs(batch.transmittance[k] - exact.surface_transmittance * exact.internal_transmittance));
+        a.worst_transmittance, std::abs(batch.transmittance[k] - exact.Transmittance()));
   }
   return a;
 }

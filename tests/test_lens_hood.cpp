@@ -104,6 +104,23 @@ TEST(LensHood, BeamsPassWhereTheirShadowMeetsTheMouth) {
   EXPECT_GT(through, 100);
 }
 
+// The mouth must enclose the front element as placed and lie in front of its foremost point.
+TEST(LensHood, MouthMustEncloseTheFrontElementAsPlaced) {
+  const LensHood hood{10, 20, 0, 0};
+  LensSurface s;
+  s.radius = 40, s.semi_diameter = 18;
+  EXPECT_EQ(hood.Mismatch(s), "");
+  s.placement = SurfacePlacement::DecenterTilt(0, 3, 0, 0, 0);  // reaches 21 mm from the axis
+  EXPECT_NE(hood.Mismatch(s).find("narrower than the front element (42 mm across as placed)"), std::string::npos);
+  s.placement.reset();
+  s.radius = -20;  // concave: the rim lies 11.28 mm before the vertex
+  const LensHood long_hood{15, 20, 0, 0}, flat_box{10, 0, 30, 17};
+  EXPECT_EQ(long_hood.Mismatch(s), "");
+  EXPECT_NE(hood.Mismatch(s).find("rim reaches 11.28 mm before its vertex"), std::string::npos);
+  s.radius = 40;
+  EXPECT_NE(flat_box.Mismatch(s).find("(60 x 34 mm) is narrower"), std::string::npos);
+}
+
 TEST(LensHood, BatchTracerFollowsTheExactOne) {
   const test::BatchAgreement a = test::CompareTracers(Tessar(LensHood{60, 0, 30, 22}), 3000, 18, -200, 5, 2);
   test::ExpectAgreement(a, 300, 3, 1e-4);

@@ -128,7 +128,7 @@ TEST(Parser, RealisticSensorErrorsNameFileAndLine) {
        5, "takes both hood_width and hood_height"},
       {scene("<string name=\"lens\" value=\"dgauss.50mm\"/>\n<float name=\"hood_length\" value=\"30\"/>\n"
              "<float name=\"hood_diameter\" value=\"20\"/>"),
-       5, "narrower than the front element (25.2 mm across)"},
+       5, "narrower than the front element (25.2 mm across as placed)"},
       {scene("<string name=\"lens\" value=\"dgauss.50mm\"/>\n<float name=\"hood_length\" value=\"-3\"/>\n"
              "<float name=\"hood_diameter\" value=\"60\"/>"),
        4, "hood_length"},

@@ -61,6 +61,9 @@ TEST(SurfaceDirt, DrawnDustCoversItsShare) {
     }
     EXPECT_NEAR(blocked / (seeds * points), 1 - std::exp(-coverage), 0.1 * (1 - std::exp(-coverage))) << coverage;
   }
+  // The clear share the grids use is the drawn dust's.
+  const SurfaceDirt mean(0.05, 0, 9, 6);
+  EXPECT_NEAR(mean.MeanTransmittance(), std::exp(-0.05), 0.1 * 0.05);
   // A seed is a pattern.
   const SurfaceDirt a(0.05, 10, 3, 6), b(0.05, 10, 3, 6), c(0.05, 10, 4, 6);
   int same = 0, differ = 0;
@@ -98,7 +101,7 @@ TEST(SurfaceDirt, ParticleNearTheFilmCastsItsShadow) {
     const TraceResult t = TraceFromObject(lens, {Vec3d(r * std::cos(phi), r * std::sin(phi), -0.001), Vec3d(0, 0, 1)}, 587.56);
     if (!t.ray) continue;
     clean += 1;
-    through += t.surface_transmittance > 0 ? 1 : 0;
+    through += t.dirt > 0 ? 1 : 0;
   }
   EXPECT_NEAR(1 - through / clean, (a / rho) * (a / rho), 0.08 * (a / rho) * (a / rho));
   // Off the shadow: a beam from a field angle whose footprint misses the particle loses nothing.
@@ -108,7 +111,7 @@ TEST(SurfaceDirt, ParticleNearTheFilmCastsItsShadow) {
     const double r = 3.0 * std::sqrt(rng.UniformFloat()), phi = 2 * M_PI * rng.UniformFloat();
     const Vec3d dir = Normalize(Vec3d(std::tan(angle), 0, 1));
     const TraceResult t = TraceFromObject(lens, {Vec3d(r * std::cos(phi), r * std::sin(phi), 0) - dir * 0.001, dir}, 587.56);
-    if (t.ray) lost += t.surface_transmittance == 0;
+    if (t.ray) lost += t.dirt == 0;
   }
   EXPECT_EQ(lost, 0);
 }

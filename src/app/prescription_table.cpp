@@ -63,9 +63,12 @@ std::string PrescriptionTable(const LensPrescription& lens) {
     if (s.form_error)
       extra += fmt::format(" form error {:g} um PV (seed {})", s.form_error->peak_to_valley() * 1000, s.form_error->seed());
     if (s.toroidal) extra += s.curvature_x == 0 ? " rx=inf (cylinder)" : fmt::format(" rx={:.4f}", 1 / s.curvature_x);
-    if (s.dirt)
-      extra += fmt::format(" dust {:g} ({} particles), {} scratches (seed {})", s.dirt->coverage(), s.dirt->particle_count(),
-                           s.dirt->scratch_count(), s.dirt->seed());
+    if (s.dirt) {
+      if (s.dirt->coverage() > 0) extra += fmt::format(" dust {:g} ({} particles)", s.dirt->coverage(), s.dirt->particle_count());
+      if (s.dirt->scratch_count() > 0)
+        extra += fmt::format(" {} scratch{}", s.dirt->scratch_count(), s.dirt->scratch_count() == 1 ? "" : "es");
+      extra += fmt::format(" (seed {}, {:.2f}% clear)", s.dirt->seed(), 100 * s.dirt->MeanTransmittance());
+    }
     if (s.gradient) extra += fmt::format(" gradient index after: {} ({})", s.gradient->KindName(), s.gradient->Terms());
     if (s.placement) extra += PlacementLabel(*s.placement);
     out += fmt::format("  {:>3}  {:>11}  {:>10.4f}  {:<{}} {:>8} {:>6}  {:>10.4f}{}\n", i + 1, radius, s.thickness,
@@ -111,6 +114,7 @@ nlohmann::ordered_json PrescriptionJson(const LensPrescription& lens) {
     }
     if (s.dirt) {
       r["dust_coverage"] = s.dirt->coverage();
+      r["dirt_clear_share"] = s.dirt->MeanTransmittance();
       r["dust_particles"] = s.dirt->particle_count();
       r["scratches"] = s.dirt->scratch_count();
       r["dirt_seed"] = s.dirt->seed();

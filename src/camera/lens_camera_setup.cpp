@@ -52,7 +52,8 @@ std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int
   LensSetup setup =
       SetUpLens(spec.lens, {spec.fnumber, spec.stop_diameter, StopOpening(spec)}, Focus(spec, to_world), spec.tilt);
   if (spec.hood) {
-    if (std::string why = spec.hood->Mismatch(setup.lens.surface(0).semi_diameter); !why.empty()) throw InputError(why);
+    // (On the lens as prescribed: a camera's tilt turns the lens, and the hood stays on the film's axis.)
+    if (std::string why = spec.hood->Mismatch(spec.lens.surfaces.front()); !why.empty()) throw InputError(why);
     setup.lens.SetHood(spec.hood);
     setup.report += fmt::format("; hood {}", spec.hood->Describe());
   }
@@ -96,6 +97,9 @@ std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int
       if (s.obscuration > 0)
         throw InputError(fmt::format("lens_model {}: the paraxial models have no central obstruction, which {} has: "
                                      "use lens_model real", model, spec.lens.name));
+    if (std::any_of(spec.lens.surfaces.begin(), spec.lens.surfaces.end(), [](const LensSurface& s) { return bool(s.dirt); }))
+      spdlog::warn("lens_model {}: {} has dust or scratches on its surfaces, which the paraxial models (no surfaces) "
+                   "leave out: use lens_model real", model, spec.lens.name);
     ParaxialLensModel m = MakeParaxialModel(lens, setup.focus.plane_of_focus_to_film, spec.model == LensModel::kThin);
     if (spec.convergence_mm > 0)
       settings.shift.x += ChiefRayFilmX(spec.eye_offset_mm, spec.convergence_mm, m.entrance_pupil_radius,

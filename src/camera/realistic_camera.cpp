@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "base/error.h"
+#include "base/log.h"
 #include "optics/dispersion.h"
 #include "optics/front_element.h"
 #include "optics/lens_tracer.h"
@@ -69,10 +70,15 @@ RealisticCamera::RealisticCamera(const Transform& to_world, int width, int heigh
   // A lens that lets light reach no point of the film (an element decentred off the beam) would
   // render black in silence: a 9 x 9 grid over the film centred on the axis is asked (a film
   // shifted off the image is the user's choice: it renders black, with no pass rate).
-  bool light = false;
-  for (int i = 0; i <= 8 && !light; ++i)
-    for (int j = 0; j <= 8 && !light; ++j)
-      light = bounds_.BoundAt(Vec2d(settings.sensor_width * (i / 8.0 - 0.5), settings.sensor_height * (j / 8.0 - 0.5))) != nullptr;
+  int lit = 0;
+  for (int i = 0; i <= 8; ++i)
+    for (int j = 0; j <= 8; ++j)
+      lit += bounds_.BoundAt(Vec2d(settings.sensor_width * (i / 8.0 - 0.5), settings.sensor_height * (j / 8.0 - 0.5))) != nullptr;
+  const bool light = lit > 0;
+  // (A fisheye's round image leaves the corners dark: a quarter of the points, not more.)
+  if (light && lit < 20)
+    spdlog::warn("light reaches only {} of 81 points over the film through {} as it is set up (its image circle, a hood, "
+                 "rims or decentres): most of the picture will be black", lit, lens.prescription().Described());
   if (!light)
     throw InputError(fmt::format("no light reaches the film through {} as it is placed: its rims, mirrors or "
                                  "obstruction block every ray (check its decentres, tilts and semi-diameters)",
@@ -182,7 +188,7 @@ std::optional<CameraImportance> RealisticCamera::SampleImportance(const Vec3f& p
   const Vec2d film(r.ray->o.x + t * r.ray->d.x, r.ray->o.y + t * r.ray->d.y);
   const Vec2d pixel = PixelOf(film);
   if (!(pixel.x >= 0 && pixel.x < width_ && pixel.y >= 0 && pixel.y < height_)) return std::nullopt;
-  const double hero_transmittance = settings_.transmission ? r.surface_transmittance * r.internal_transmittance : 1.0;
+  const double hero_transmittance = settings_.transmission ? r.Transmittance() : r.dirt;
   double w = 1;
   if (masked && lens_.StopIndex() >= 0 && path.size() > size_t(lens_.StopIndex())) {
     const Vec3d s = lens_.InSurfaceFrame(lens_.StopIndex(), path[size_t(lens_.StopIndex())]);
@@ -202,7 +208,7 @@ std::optional<CameraImportance> RealisticCamera::SampleImportance(const Vec3f& p
   if (per_wavelength_transmittance_)  // the same path at the sample's other wavelengths
     for (int k = 1; k < kSpectrumSamples; ++k) {
       const TraceResult rk = TraceFromObject(lens_, {front.p - d, d}, lambda[k]);
-      out.weight[k] = rk.ray ? float(w * rk.surface_transmittance * rk.internal_transmittance) : 0.f;
+      out.weight[k] = rk.ray ? float(w * rk.Transmittance()) : 0.f;
     }
   // (No 1 / n0^2 here: this weight takes flux through the lens to the film, and flux, unlike
   // radiance, is the same on both sides of the port.)

@@ -253,7 +253,7 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b
   s.far_clip = b.far_clip;
   spec.hood = Hood(p, spec.model);
   if (spec.hood)
-    if (std::string why = spec.hood->Mismatch(spec.lens.surfaces.front().semi_diameter); !why.empty())
+    if (std::string why = spec.hood->Mismatch(spec.lens.surfaces.front()); !why.empty())
       throw ErrorAt(p.LocOf(p.Has("hood_diameter") ? "hood_diameter" : "hood_width"), "{}", why);
   if (p.Has("aperture_mask")) {
     std::string path = ResolvePath(p.LocOf("aperture_mask"), p.String("aperture_mask"));

@@ -42,6 +42,8 @@ class BundleTracer {
   BundleTracer(const LensSystem& lens, std::span<const SurfaceVisit> path, const PointSource& source, double lambda_nm,
                const BundleOptions& options = {})
       : lens_(lens), path_(path), source_(source), options_(options), lambda_(lambda_nm) {
+    for (const SurfaceVisit& v : path)
+      if (const SurfaceDirt* dirt = lens.surface(v.surface).dirt.get()) mean_dirt_ *= dirt->MeanTransmittance();
     const LensSurface& front = lens.surface(0);
     // The rim's depth (a toroid's differs along x and y: the deeper one).
     double sag_x = 0, sag_y = 0;
@@ -78,11 +80,13 @@ class BundleTracer {
     points.clear();
     const bool masked = bool(options_.stop_transmittance);
     TraceResult r = TraceSequence(lens_, {at, d}, lambda_, path_, masked ? &points : nullptr);
-    if (!r.ray || !(r.ray->d.z > 0)) return c;
+    if (!r.ray || !(r.ray->d.z > 0)) return c;  // (r.dirt, the corner's own, gives way to mean_dirt_)
     const double t = (lens_.FilmZ() - r.ray->o.z) / r.ray->d.z;
     c.alive = true;
     c.film = {r.ray->o.x + t * r.ray->d.x, r.ray->o.y + t * r.ray->d.y};
-    c.transmittance = options_.lossless ? 1.0 : r.surface_transmittance * r.internal_transmittance;
+    // Dust and scratches by the share of each surface they leave clear: the grid's cells are
+    // far coarser than the particles, which a corner ray would take for whole cells.
+    c.transmittance = (options_.lossless ? 1.0 : r.surface_transmittance * r.internal_transmittance) * mean_dirt_;
     if (masked) {
       const double inv = 1 / lens_.StopSemiDiameter();
       for (size_t k = 0; k < points.size() && k < path_.size(); ++k)
@@ -242,6 +246,7 @@ class BundleTracer {
 
   const LensSystem& lens_;
   std::span<const SurfaceVisit> path_;
+  double mean_dirt_ = 1;  // the product of the visited surfaces' clear shares
   PointSource source_;
   BundleOptions options_;
   double lambda_, start_z_, reach_;

@@ -105,7 +105,7 @@ GradientArrival PropagateThroughGradient(const LensSystem& lens, int gap, bool t
         DormandPrinceStep<7>(f, y, k1, m, y_hit, err, k7);
         double fm;
         if (!side(y_hit, fm)) fm = -1;  // off the surface's domain: not yet across
-        if (std::abs(fm) < 1e-12 || hi - lo < 1e-15 * h) break;
+        if (std::abs(fm) < 0.01 * tolerance || hi - lo < 1e-15 * h) break;
         if (fm < 0) {
           lo = m, flo = fm;
           if (last == -1) fhi *= 0.5;

@@ -6,7 +6,8 @@
 //   dr/dtau = T,  dT/dtau = grad(n^2) / 2,  ds/dtau = n.
 // The crossing is where the surface's side function (its frame's z less its sag, signed with
 // the direction of travel) changes sign within a step: found by regula falsi on the step's
-// length (each trial a step of that length from the step's start) to 1e-12 mm.
+// length (each trial a step of that length from the step's start) to a hundredth of the
+// tolerance (1e-12 mm in the exact tracer).
 #pragma once
 #include <vector>
 

@@ -397,6 +397,9 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
       if (particles > SurfaceDirt::kMaxParticles)
         throw MakeInputError(path, number, "dust={} over a semi-diameter of {} mm is {:.3g} particles; at most {}", dust,
                              s.semi_diameter, particles, SurfaceDirt::kMaxParticles);
+      if (dust > 0 && particles < 0.5)
+        spdlog::warn("{}:{}: dust={} over a semi-diameter of {} mm is {:.2g} particles: none", path, number, dust,
+                     s.semi_diameter, particles);
       s.dirt = std::make_shared<const SurfaceDirt>(dust, scratches, dirt_seed.value_or(lens.surfaces.size() + 1), s.semi_diameter);
     } else if (dirt_seed) {
       throw MakeInputError(path, number, "dirt_seed= without dust= or scratches=: it chooses their pattern");

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "base/vec.h"
+#include "optics/lens_prescription.h"
 
 namespace objektiv {
 
@@ -24,9 +25,11 @@ struct LensHood {
   // Whether the line of a ray (lens space) crosses the mouth's plane inside the mouth;
   // `first_vertex_z` is the first vertex's z.
   bool Passes(const Vec3d& o, const Vec3d& d, double first_vertex_z) const;
-  // Why the hood cannot hold a front element of `front_semi` mm (narrower than it, or of no
-  // length); empty where it can.
-  std::string Mismatch(double front_semi) const;
+  // Why the hood cannot hold the front element `front` (its first vertex at z 0): its mouth
+  // narrower than the element's reach from the axis (its semi-diameter, decentre and tilt), or
+  // not in front of the element's foremost point (a concave or tilted face's rim lies before the
+  // vertex); empty where it can.
+  std::string Mismatch(const LensSurface& front) const;
   std::string Describe() const;  // "round, 40 mm long, 72 mm across"
 };
 

@@ -247,7 +247,7 @@ TraceResult TraceVisits(const LensSystem& lens, const LensRay& in, double lambda
     // Absorption along the segment just travelled, inside the medium between the surfaces.
     if (previous >= 0) result.internal_transmittance *= SegmentTransmittance(lens, previous, i, lambda_nm, c.t);
     previous = i;
-    result.surface_transmittance *= c.clean;
+    result.dirt *= c.clean;
     if (c.mirror) {  // always reflects; the path goes on to the next surface in order
       if (v.reflect) {  // a ghost cannot pass through a mirror
         result.failure = TraceFailure::kMissedSurface;

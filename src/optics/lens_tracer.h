@@ -23,9 +23,11 @@ struct TraceResult {
   int surface = -1;            // where it failed (-1: at the lens hood's mouth)
   // Fraction of the light that gets through: the product of the surfaces' transmittances
   // (1 - R, unpolarised: Fresnel's where bare, the coating's where coated) at every refracting
-  // surface, of what dust and scratches let through (0 or 1) at every surface, and of the
-  // glasses' internal transmittances along the path (Beer-Lambert, from the catalogs' IT data).
-  double surface_transmittance = 1, internal_transmittance = 1;
+  // surface, of the glasses' internal transmittances along the path (Beer-Lambert, from the
+  // catalogs' IT data) and of what dust and scratches let through where the ray met them (0 or
+  // 1; optics/surface_dirt.h), kept apart for those who average it (the ghosts' grids).
+  double surface_transmittance = 1, internal_transmittance = 1, dirt = 1;
+  double Transmittance() const { return surface_transmittance * internal_transmittance * dirt; }
 };
 
 // What happened at each refracting surface a ray crossed (for ghosts and diagnostics).

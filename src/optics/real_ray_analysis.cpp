@@ -343,7 +343,11 @@ AxialTransmittance AxialTransmittanceOf(const LensSystem& lens, double lambda_nm
     r = trace(rim * 0.5 * (first + last) / kSteps);
     if (!r.ray) return {};
   }
-  return {r.surface_transmittance, r.internal_transmittance};
+  // Dust and scratches by their mean over each surface (one ray would find them or not).
+  double dirt = 1;
+  for (int i = 0; i < lens.SurfaceCount(); ++i)
+    if (lens.surface(i).dirt) dirt *= lens.surface(i).dirt->MeanTransmittance();
+  return {r.surface_transmittance * dirt, r.internal_transmittance};
 }
 
 }  // namespace objektiv

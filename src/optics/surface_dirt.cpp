@@ -67,7 +67,8 @@ void SurfaceDirt::BuildGrid() {
     extent_ = std::max({extent_, std::abs(s.x0) + s.half_width, std::abs(s.y0) + s.half_width, std::abs(s.x1) + s.half_width,
                         std::abs(s.y1) + s.half_width});
   const double side = 2 * extent_;
-  cells_ = std::clamp(int(std::ceil(side / std::max(2 * largest, 1e-9))), 1, kMaxCellsPerSide);
+  // (Clamped in double: without particles the wanted count overflows an int.)
+  cells_ = int(std::clamp(std::ceil(side / std::max(2 * largest, 1e-9)), 1.0, double(kMaxCellsPerSide)));
   cell_size_ = side / cells_;
   // Each item's cells: those its bounding box overlaps (a stroke's, along its length).
   std::vector<std::pair<uint32_t, int32_t>> entries;
@@ -105,6 +106,17 @@ void SurfaceDirt::BuildGrid() {
   for (size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
   cell_items_.resize(entries.size());
   for (size_t k = 0; k < entries.size(); ++k) cell_items_[k] = entries[k].second;  // sorted by cell already
+  // The clear share, at the centres of a 512 x 512 grid's cells within the aperture.
+  constexpr int kGrid = 512;
+  int inside = 0, clear = 0;
+  for (int j = 0; j < kGrid; ++j)
+    for (int i = 0; i < kGrid; ++i) {
+      const double x = semi_ * ((i + 0.5) * 2 / kGrid - 1), y = semi_ * ((j + 0.5) * 2 / kGrid - 1);
+      if (x * x + y * y > semi_ * semi_) continue;
+      ++inside;
+      clear += Transmittance(x, y) > 0;
+    }
+  mean_ = inside ? double(clear) / inside : 1;
 }
 
 double SurfaceDirt::Transmittance(double x, double y) const {

@@ -34,6 +34,9 @@ class SurfaceDirt {
 
   // 1 where light gets through at (x, y) of the surface's frame, 0 where dust or a scratch is.
   double Transmittance(double x, double y) const;
+  // The share of the clear aperture left clear (on a 512 x 512 grid over it): what the dirt
+  // lets through on average, for images traced on grids coarser than the particles.
+  double MeanTransmittance() const { return mean_; }
 
   double coverage() const { return coverage_; }
   int scratch_count() const { return int(scratches_.size()); }
@@ -58,6 +61,7 @@ class SurfaceDirt {
   // Grid over [-extent, extent]^2 (the aperture and every item whole): per cell, indices into
   // particles_ (>= 0) and scratches_ (~index).
   double extent_ = 0;
+  double mean_ = 1;
   int cells_ = 1;
   double cell_size_ = 1;
   std::vector<uint32_t> cell_start_;
