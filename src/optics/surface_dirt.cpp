@@ -106,17 +106,12 @@ void SurfaceDirt::BuildGrid() {
   for (size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
   cell_items_.resize(entries.size());
   for (size_t k = 0; k < entries.size(); ++k) cell_items_[k] = entries[k].second;  // sorted by cell already
-  // The clear share, at the centres of a 512 x 512 grid's cells within the aperture.
-  constexpr int kGrid = 512;
-  int inside = 0, clear = 0;
-  for (int j = 0; j < kGrid; ++j)
-    for (int i = 0; i < kGrid; ++i) {
-      const double x = semi_ * ((i + 0.5) * 2 / kGrid - 1), y = semi_ * ((j + 0.5) * 2 / kGrid - 1);
-      if (x * x + y * y > semi_ * semi_) continue;
-      ++inside;
-      clear += Transmittance(x, y) > 0;
-    }
-  mean_ = inside ? double(clear) / inside : 1;
+  // The clear share: items placed at random over the aperture and covering a total area a leave
+  // exp(-a / A) of its area A clear in expectation (overlaps included).
+  double covered = 0;
+  for (const Particle& p : particles_) covered += M_PI * p.r * p.r;
+  for (const Scratch& s : scratches_) covered += 2 * s.half_width * std::hypot(s.x1 - s.x0, s.y1 - s.y0);
+  mean_ = semi_ > 0 ? std::exp(-covered / (M_PI * semi_ * semi_)) : 1;
 }
 
 double SurfaceDirt::Transmittance(double x, double y) const {

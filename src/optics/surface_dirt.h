@@ -34,8 +34,9 @@ class SurfaceDirt {
 
   // 1 where light gets through at (x, y) of the surface's frame, 0 where dust or a scratch is.
   double Transmittance(double x, double y) const;
-  // The share of the clear aperture left clear (on a 512 x 512 grid over it): what the dirt
-  // lets through on average, for images traced on grids coarser than the particles.
+  // The share of the clear aperture left clear, exp(-(the items' total area) / (its area)) (the
+  // expectation for items placed at random): what the dirt lets through on average, for images
+  // traced on grids coarser than the particles.
   double MeanTransmittance() const { return mean_; }
 
   double coverage() const { return coverage_; }
