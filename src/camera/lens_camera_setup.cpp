@@ -51,9 +51,7 @@ std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int
   auto start = std::chrono::steady_clock::now();
   LensSetup setup =
       SetUpLens(spec.lens, {spec.fnumber, spec.stop_diameter, StopOpening(spec)}, Focus(spec, to_world), spec.tilt);
-  if (spec.hood) {
-    // (On the lens as prescribed: a camera's tilt turns the lens, and the hood stays on the film's axis.)
-    if (std::string why = spec.hood->Mismatch(spec.lens.surfaces.front()); !why.empty()) throw InputError(why);
+  if (spec.hood) {  // (checked against the lens by the scene's reader, which names the line)
     setup.lens.SetHood(spec.hood);
     setup.report += fmt::format("; hood {}", spec.hood->Describe());
   }

@@ -42,12 +42,11 @@ Svg PlotLensLayout(const LensSystem& lens, const std::vector<double>& fields, do
   // axis, a toroid's x-z section drawn for `--section x`, then shows its curve).
   auto section = [&](int i, double y) {
     const LensSurface& s = lens.surface(i);
-    const Vec3d vertex(0, 0, lens.VertexZ(i));
     const Vec3d under = s.placement ? s.placement->ToLocal(Vec3d(0, y, 0) - s.placement->offset) : Vec3d(0, y, 0);
     double sag = 0;
     s.SagAt(under.x, under.y, sag);
     const Vec3d local(under.x, under.y, sag);
-    const Vec3d p = s.placement ? vertex + s.placement->offset + s.placement->FromLocal(local) : vertex + local;
+    const Vec3d p = lens.FromSurfaceFrame(i, local);
     return Vec2d(p.z, p.y);
   };
   // Elements: the profile of each surface followed by the next one's, where glass lies between.

@@ -525,6 +525,10 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
     // Air is medium 0 (index one, no absorption); the ray starts in air (no absorption before
     // the first surface).
     const bool absorb = k > 0;
+    if (sf.gradient_step) {
+      GradientStep(i, from_film, transmission, absorb && transmission, rays);
+      continue;
+    }
     Step st{sf.z, sf.c, sf.k1, sf.semi2, sf.obscuration2, sf.reflectance, sf.cx, sf.mx, sf.my, sf.a2, {}, {},
             sf.q_count, sf.inv_rn2, sf.qbfs, sf.scalar.get(),
             rays.media_index.data() + (m_in + 1) * count,
@@ -533,10 +537,6 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
             sf.coating < 0 ? nullptr : coating_tables_[2 * sf.coating + (from_film ? 1 : 0)].data()};
     std::copy(sf.a, sf.a + 7, st.a);
     std::copy(sf.q, sf.q + sf.q_count, st.q);
-    if (sf.gradient_step) {
-      GradientStep(i, from_film, transmission, absorb && transmission, rays);
-      continue;
-    }
     const bool refract = m_in != m_out && !sf.mirror;  // the stop too, where it parts two media
     if (sf.placed) ToSurfaceFrame(sf, rays);
     if (sf.scalar) StepShape<false, Asphere::kScalar>(st, refract, sf.mirror, transmission, rays);

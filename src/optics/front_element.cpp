@@ -18,7 +18,7 @@ FrontPoint SampleFrontElement(const LensSystem& lens, Vec2d u) {
   f.normal = SurfaceNormal(s, local);
   f.p = Vec3d(0, 0, lens.VertexZ(0)) + local;
   if (s.placement) {  // decentred or tilted: the point and the normal carried into lens space
-    f.p = Vec3d(0, 0, lens.VertexZ(0)) + s.placement->offset + s.placement->FromLocal(local);
+    f.p = lens.FromSurfaceFrame(0, local);
     f.normal = s.placement->FromLocal(f.normal);
     f.axis = s.placement->ez;
   }

@@ -12,20 +12,6 @@ namespace {
 // State: x, y, z, Tx, Ty, Tz (the medium's frame), s.
 using State = OdeState<7>;
 
-// Surface i's frame and lens space, for points and directions.
-struct Frame {
-  const LensSystem& lens;
-  int i;
-  const SurfacePlacement* placed;
-  Frame(const LensSystem& l, int surface)
-      : lens(l), i(surface), placed(l.surface(surface).placement ? &*l.surface(surface).placement : nullptr) {}
-  Vec3d PointToLens(const Vec3d& p) const {
-    const Vec3d vertex(0, 0, lens.VertexZ(i));
-    return placed ? vertex + placed->offset + placed->FromLocal(p) : vertex + p;
-  }
-  Vec3d DirectionToLens(const Vec3d& d) const { return placed ? placed->FromLocal(d) : d; }
-  Vec3d DirectionToLocal(const Vec3d& d) const { return placed ? placed->ToLocal(d) : d; }
-};
 
 }  // namespace
 
@@ -43,7 +29,7 @@ GradientArrival PropagateThroughGradient(const LensSystem& lens, int gap, bool t
   const double n_v = medium_surface.IndexAfter(lambda_nm);
   const int target = toward_film ? gap + 1 : gap;
   const LensSurface& ts = lens.surface(target);
-  const Frame medium(lens, gap), target_frame(lens, target);
+  const SurfacePlacement* placed = medium_surface.placement ? &*medium_surface.placement : nullptr;
   const double direction = toward_film ? 1 : -1;
   // The element's edge, a cylinder as wide as the wider of its faces: a ray that reaches it
   // between them leaves the glass there (into the mount).
@@ -59,17 +45,19 @@ GradientArrival PropagateThroughGradient(const LensSystem& lens, int gap, bool t
   // The target's side function at a point of the medium's frame: negative before the crossing;
   // false outside the surface's domain (where it cannot be met).
   const auto side = [&](const State& y, double& value) {
-    const Vec3d local = lens.InSurfaceFrame(target, medium.PointToLens(Vec3d(y[0], y[1], y[2])));
+    const Vec3d local = lens.InSurfaceFrame(target, lens.FromSurfaceFrame(gap, Vec3d(y[0], y[1], y[2])));
     double z;
     if (!ts.SagAt(local.x, local.y, z)) return false;
     value = direction * (local.z - z);
     return true;
   };
 
-  const Vec3d p0 = lens.InSurfaceFrame(gap, ray.o), d0 = medium.DirectionToLocal(ray.d);
+  const Vec3d p0 = lens.InSurfaceFrame(gap, ray.o), d0 = placed ? placed->ToLocal(ray.d) : ray.d;
   const double n0 = grin.Index(n_v, p0);
   State y{p0.x, p0.y, p0.z, n0 * d0.x, n0 * d0.y, n0 * d0.z, 0};
   State k1 = f(y), y1, err, k7;
+  double f_start = -1;  // the side function at y (the last accepted step's end)
+  side(y, f_start);
   if (!real_index || !(n0 > 0)) {
     out.failure = TraceFailure::kClipped;
     out.p = ray.o;
@@ -93,10 +81,7 @@ GradientArrival PropagateThroughGradient(const LensSystem& lens, int gap, bool t
     const bool on_surface = side(y1, f1);
     if (on_surface && f1 >= 0) {
       // The crossing lies within this step: regula falsi (Illinois) on the step's length.
-      double f0 = -1;
-      side(y, f0);
-      f0 = std::min(f0, 0.0);
-      double lo = 0, hi = h, flo = f0, fhi = f1;
+      double lo = 0, hi = h, flo = std::min(f_start, 0.0), fhi = f1;
       State y_hit = y1;
       int last = 0;
       for (int it = 0; it < 100; ++it) {
@@ -117,8 +102,8 @@ GradientArrival PropagateThroughGradient(const LensSystem& lens, int gap, bool t
         }
       }
       const Vec3d t(y_hit[3], y_hit[4], y_hit[5]);
-      out.p = medium.PointToLens(Vec3d(y_hit[0], y_hit[1], y_hit[2]));
-      out.d = medium.DirectionToLens(t / Length(t));
+      out.p = lens.FromSurfaceFrame(gap, Vec3d(y_hit[0], y_hit[1], y_hit[2]));
+      out.d = placed ? placed->FromLocal(t / Length(t)) : t / Length(t);
       out.length = y_hit[6];
       if (points) points->push_back(out.p);
       if (!real_index) out.failure = TraceFailure::kClipped;
@@ -126,10 +111,11 @@ GradientArrival PropagateThroughGradient(const LensSystem& lens, int gap, bool t
     }
     y = y1;
     k1 = k7;
-    if (points) points->push_back(medium.PointToLens(Vec3d(y[0], y[1], y[2])));
+    f_start = on_surface ? f1 : -1;
+    if (points) points->push_back(lens.FromSurfaceFrame(gap, Vec3d(y[0], y[1], y[2])));
     if (!real_index || std::hypot(y[0], y[1]) > r_max) {
       out.failure = TraceFailure::kClipped;
-      out.p = medium.PointToLens(Vec3d(y[0], y[1], y[2]));
+      out.p = lens.FromSurfaceFrame(gap, Vec3d(y[0], y[1], y[2]));
       return out;
     }
     if (!(direction * y[5] > 0)) break;  // turned back toward where it came from

@@ -22,7 +22,7 @@ std::string LensHood::Mismatch(const LensSurface& front) const {
     double z = 0;
     front.SagAt(x, y, z);
     for (const Vec3d& local : {Vec3d(x, y, z), Vec3d(0, 0, 0)}) {
-      const Vec3d p = front.placement ? front.placement->offset + front.placement->FromLocal(local) : local;
+      const Vec3d p = front.placement ? front.placement->PointFromLocal(local) : local;
       reach = std::max(reach, std::hypot(p.x, p.y));
       foremost = std::min(foremost, p.z);
     }

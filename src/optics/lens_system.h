@@ -56,6 +56,11 @@ class LensSystem {
     const std::optional<SurfacePlacement>& placed = prescription_.surfaces[i].placement;
     return placed ? placed->ToLocal(rel - placed->offset) : rel;
   }
+  // The inverse: a point of surface i's frame (relative to its vertex) in lens space.
+  Vec3d FromSurfaceFrame(int i, const Vec3d& p) const {
+    const std::optional<SurfacePlacement>& placed = prescription_.surfaces[i].placement;
+    return Vec3d(0, 0, vertex_z_[i]) + (placed ? placed->PointFromLocal(p) : p);
+  }
   double FilmZ() const { return film_z_; }
 
   // Unpolarised reflectance of surface i for light crossing it toward the film (or toward the

@@ -22,6 +22,9 @@ struct SurfacePlacement {
   // A direction in lens space in the surface's frame, and back.
   Vec3d ToLocal(const Vec3d& v) const { return {Dot(v, ex), Dot(v, ey), Dot(v, ez)}; }
   Vec3d FromLocal(const Vec3d& v) const { return ex * v.x + ey * v.y + ez * v.z; }
+  // A point of the surface's frame relative to its nominal vertex (the inverse of
+  // ToLocal(p - offset)).
+  Vec3d PointFromLocal(const Vec3d& p) const { return offset + FromLocal(p); }
   // The surface turned by the right-handed angle (radians) about its own axis `axis` (0 x, 1 y, 2 z).
   SurfacePlacement Turned(int axis, double angle) const {
     const double c = std::cos(angle), s = std::sin(angle);
