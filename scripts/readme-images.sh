@@ -16,7 +16,8 @@
 # (docs/images/lens-tilt-shift.png), `readme-images.sh asphere` the singlet, its Q-type
 # asphere, its axial GRIN version and the Fresnel lens (docs/images/lens-asphere.png), `readme-images.sh
 # dust` dust on a cover glass at f/2.8 and f/22 (docs/images/lens-dust.png), `readme-images.sh hood`
-# a hood that fits the wide-angle and one too long (docs/images/lens-hood.png).
+# a hood that fits the wide-angle and one too long (docs/images/lens-hood.png), `readme-images.sh
+# calcite` the Tessar without and with a calcite plate (docs/images/lens-calcite.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/objektiv
@@ -147,6 +148,13 @@ hood() {
   oiiotool "$tmp/hood-short.png" "$tmp/hood-long.png" --mosaic:pad=6 2x1 -o "$out/lens-hood.png"
 }
 
+# A checkerboard through the Tessar alone and with a calcite plate before the film (double image).
+calcite() {
+  render scenes/lens/calcite-double-image.xml -D spp=256 -D lens=tessar.brendel.100mm -o "$tmp/calcite-none.exr"
+  render scenes/lens/calcite-double-image.xml -D spp=256 -o "$tmp/calcite-plate.exr"
+  oiiotool "$tmp/calcite-none.png" "$tmp/calcite-plate.png" --mosaic:pad=6 2x1 -o "$out/lens-calcite.png"
+}
+
 # The Cornell box through the Tessar in air and behind a flat port under water.
 underwater() {
   render scenes/cornell-box/cornell-box-underwater.xml -D spp=256 -D res=400 -D lens=tessar.brendel.100mm \
@@ -156,7 +164,7 @@ underwater() {
 }
 
 case "${1:-}" in
-  flare | caustics | bump | stereo | classic | media | sampling | filter | mirror | underwater | anamorphic | tilt | asphere | dust | hood)
+  flare | caustics | bump | stereo | classic | media | sampling | filter | mirror | underwater | anamorphic | tilt | asphere | dust | hood | calcite)
     "$1"
     echo "wrote $out/$1-*.png"
     exit 0
@@ -174,6 +182,7 @@ tilt
 asphere
 dust
 hood
+calcite
 
 render scenes/lens/distortion-chart.xml -D spp=64 -o "$tmp/dist-wide.exr"
 render scenes/lens/distortion-chart.xml -D spp=64 -D lens=telephoto.250mm -D distance=11.4 -o "$tmp/dist-tele.exr"

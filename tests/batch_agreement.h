@@ -21,9 +21,10 @@ struct BatchAgreement {
   double worst_transmittance = 0;        // the largest difference of their transmittances
 };
 
-// `aim_half`: the aim points' square, +-aim_half mm; `plane_z`: lens-space z of the plane.
+// `aim_half`: the aim points' square, +-aim_half mm; `plane_z`: lens-space z of the plane;
+// `random_waves`: each ray takes random waves in birefringent crystals (LensRay::wave_choices).
 inline BatchAgreement CompareTracers(const LensSystem& lens, int count, double aim_half, double plane_z, uint64_t seed,
-                                     uint64_t stream) {
+                                     uint64_t stream, bool random_waves = false) {
   BatchLensTracer fast(lens);
   RayBatch batch;
   std::vector<LensRay> rays;
@@ -33,8 +34,9 @@ inline BatchAgreement CompareTracers(const LensSystem& lens, int count, double a
     const Vec3d o(rng.UniformFloat() * 36 - 18, rng.UniformFloat() * 24 - 12, lens.FilmZ());
     const Vec3d aim(rng.UniformFloat() * 2 * aim_half - aim_half, rng.UniformFloat() * 2 * aim_half - aim_half, rear_z);
     const Vec3d d = Normalize(aim - o);
-    rays.push_back({o, d});
-    batch.Push({float(o.x), float(o.y), float(o.z), float(d.x), float(d.y), float(d.z), 550.f});
+    const uint32_t waves = random_waves ? rng.Uniform32() : 0;
+    rays.push_back({o, d, false, waves});
+    batch.Push({float(o.x), float(o.y), float(o.z), float(d.x), float(d.y), float(d.z), 550.f, 1.f, waves});
   }
   fast.TraceFromFilm(batch);
   BatchAgreement a;

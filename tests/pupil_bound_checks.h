@@ -16,9 +16,10 @@ struct PassRate {
   double Rate() const { return launched ? double(passed) / launched : 0; }
 };
 
-// `count` camera rays from film points `film(rng)` aimed where the bound samples.
+// `count` camera rays from film points `film(rng)` aimed where the bound samples; `waves`: the
+// waves they take in birefringent crystals (LensRay::wave_choices).
 inline PassRate CameraPassRate(const LensSystem& lens, const PupilBounds& bounds, int count, PCG32& rng,
-                               const std::function<Vec2d(PCG32&)>& film, double lambda_nm) {
+                               const std::function<Vec2d(PCG32&)>& film, double lambda_nm, uint32_t waves = 0) {
   PassRate p;
   for (int i = 0; i < count; ++i) {
     const Vec2d f = film(rng);
@@ -26,7 +27,7 @@ inline PassRate CameraPassRate(const LensSystem& lens, const PupilBounds& bounds
     if (s.pdf == 0) continue;
     ++p.launched;
     const Vec3d o(f.x, f.y, lens.FilmZ());
-    p.passed += bool(TraceFromFilm(lens, {o, Normalize(s.point - o)}, lambda_nm).ray);
+    p.passed += bool(TraceFromFilm(lens, {o, Normalize(s.point - o), false, waves}, lambda_nm).ray);
   }
   return p;
 }
@@ -38,16 +39,17 @@ struct AreaEstimates {
 };
 
 // The passing area for one film point: uniformly over the square +-half (which must hold all
-// the light on the sampling plane), and through the bound; `count` rays each.
+// the light on the sampling plane), and through the bound; `count` rays each, taking `waves`
+// in birefringent crystals.
 inline AreaEstimates PassingArea(const LensSystem& lens, const PupilBounds& bounds, Vec2d film, double half, int count,
-                                 PCG32& rng, double lambda_nm) {
+                                 PCG32& rng, double lambda_nm, uint32_t waves = 0) {
   const Vec3d o(film.x, film.y, lens.FilmZ());
   int brute = 0, via_bound = 0;
   for (int i = 0; i < count; ++i) {
     const Vec3d target(half * (2 * rng.UniformFloat() - 1), half * (2 * rng.UniformFloat() - 1), bounds.rear_z());
-    brute += bool(TraceFromFilm(lens, {o, Normalize(target - o)}, lambda_nm).ray);
+    brute += bool(TraceFromFilm(lens, {o, Normalize(target - o), false, waves}, lambda_nm).ray);
     const PupilBounds::Sample s = bounds.SampleRear(film, {rng.UniformFloat(), rng.UniformFloat()});
-    if (s.pdf > 0) via_bound += bool(TraceFromFilm(lens, {o, Normalize(s.point - o)}, lambda_nm).ray);
+    if (s.pdf > 0) via_bound += bool(TraceFromFilm(lens, {o, Normalize(s.point - o), false, waves}, lambda_nm).ray);
   }
   const ConvexPolygon* poly = bounds.BoundAt(film);
   const double square = 4 * half * half, area = poly ? poly->area : 0;

@@ -101,7 +101,7 @@ TEST(GlassLookup, ANameOfTwoGlassesIsTheOneWhoseStatedValuesAgreeOrTheFileCatalo
   EXPECT_EQ(lookup.Find("F2", StatedGlass{1.7, 30})->glass->catalog(), "SCHOTT");
   lookup.Prefer({"CDGM"}, nullptr);
   EXPECT_EQ(lookup.Find("F2")->glass->catalog(), "CDGM");
-  EXPECT_EQ(lookup.SearchedCatalogs(), "CDGM, SCHOTT, OHARA, HOYA, SUMITA, HIKARI");
+  EXPECT_EQ(lookup.SearchedCatalogs(), "CDGM, SCHOTT, OHARA, HOYA, SUMITA, HIKARI, CRYSTALS");
   // SK16 is HIKARI's (a Nikon glass under the old Schott name) unless the file names SCHOTT:
   // then Schott's successor N-SK16.
   GlassLookup plain(GlassCatalog::Default());
@@ -319,7 +319,7 @@ TEST(ZemaxGlasses, GcatOrderAndStatedValuesPickAmongGlassesOfOneName) {
 
 TEST(ZemaxGlasses, AGlassInNoCatalogIsAnErrorThatSaysHowToSupplyIt) {
   std::string e = ErrorOf([] { ParseZemaxLens(Singlet("", "GLAS B270 1 0 1.5230 58.5"), "v.zmx", GlassCatalog::Default()); });
-  EXPECT_NE(e.find("v.zmx:10: glass B270 is in no catalog (searched SCHOTT, OHARA, HOYA, CDGM, SUMITA, HIKARI). The file "
+  EXPECT_NE(e.find("v.zmx:10: glass B270 is in no catalog (searched SCHOTT, OHARA, HOYA, CDGM, SUMITA, HIKARI, CRYSTALS). The file "
                    "states nd 1.523 vd 58.5; the nearest shipped glasses are "),
             std::string::npos) << e;
   EXPECT_NE(e.find("give it in v.glass beside the lens (a line 'glass B270 nd=1.523 vd=58.5'"), std::string::npos) << e;

@@ -110,7 +110,7 @@ TEST(Zemax, UnsupportedThingsAreNamed) {
     ParseZemaxLens(unknown_glass, "g.zmx", GlassCatalog::Default());
     ADD_FAILURE();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("g.zmx:9: glass NOPE is in no catalog (searched SCHOTT, OHARA, HOYA, CDGM, SUMITA, HIKARI); give it in "
+    EXPECT_NE(std::string(e.what()).find("g.zmx:9: glass NOPE is in no catalog (searched SCHOTT, OHARA, HOYA, CDGM, SUMITA, HIKARI, CRYSTALS); give it in "
                                                  "g.glass beside the lens (a line 'glass NOPE nd=N vd=V'"), std::string::npos) << e.what();
   }
   // An unknown keyword is a warning, not an error.

@@ -14,6 +14,7 @@
 #include "io/lens_ghosts.h"
 #include "io/lens_plot.h"
 #include "io/lens_psf.h"
+#include "optics/crystal_images.h"
 #include "optics/anamorphic.h"
 #include "optics/coating_library.h"
 #include "optics/dispersion.h"
@@ -170,6 +171,14 @@ int RunInfo(const LensArgs& a) {
   j["obstruction_share"] = hidden * hidden;
   j["axial_surface_transmittance"] = transmittance.surfaces;
   j["axial_glass_transmittance"] = transmittance.glass;
+  // Birefringent crystals: each one's extraordinary image of an on-axis point, off the ordinary one.
+  const std::vector<std::optional<Vec2d>> double_images = ExtraordinaryImageOffsets(system, a.wavelength);
+  if (!double_images.empty()) {
+    nlohmann::ordered_json offsets = nlohmann::ordered_json::array();
+    for (const std::optional<Vec2d>& o : double_images)
+      offsets.push_back(o ? nlohmann::ordered_json{o->x, o->y} : nlohmann::ordered_json());
+    j["extraordinary_image_offsets_mm"] = offsets;
+  }
   // Each coating and the surfaces (1-based rows) that carry it.
   std::vector<std::pair<std::shared_ptr<const Coating>, std::vector<int>>> coatings;
   for (int i = 0; i < system.SurfaceCount(); ++i) {
@@ -218,10 +227,16 @@ int RunInfo(const LensArgs& a) {
                 "  centred on its axis\n");
   std::printf("  paraxial, object at infinity, %.2f nm:\n", a.wavelength);
   std::printf("  EFL %.4f mm   BFL %.4f mm   FFL %.4f mm   f/%.3f\n", d.efl, d.bfl, d.ffl, d.fnumber);
-  std::printf("  entrance pupil: diameter %.4f mm, %.4f mm behind the first vertex\n", d.entrance_pupil_diameter,
-              d.entrance_pupil_position);
-  std::printf("  exit pupil:     diameter %.4f mm, %.4f mm behind the last vertex\n", d.exit_pupil_diameter,
-              d.exit_pupil_position);
+  // A pupil ten thousand focal lengths away is at infinity: the lens is telecentric on that side
+  // (its diameter and position grow without bound as the chief ray's slope goes to zero).
+  auto pupil = [&](const char* label, double diameter, double position, const char* vertex, const char* rays) {
+    if (std::isfinite(position) && std::abs(position) <= 1e4 * std::max(1.0, std::abs(d.efl)))
+      std::printf("  %s diameter %.4f mm, %.4f mm behind the %s vertex\n", label, diameter, position, vertex);
+    else
+      std::printf("  %s at infinity (telecentric: the chief rays %s parallel to the axis)\n", label, rays);
+  };
+  pupil("entrance pupil:", d.entrance_pupil_diameter, d.entrance_pupil_position, "first", "enter");
+  pupil("exit pupil:    ", d.exit_pupil_diameter, d.exit_pupil_position, "last", "leave");
   std::printf("  principal planes: front %.4f mm from the first vertex, back %.4f mm from the last\n",
               d.front_principal_plane, d.back_principal_plane);
   std::printf("  real back focus (smallest on-axis spot): %.4f mm\n", real_bfl);
@@ -250,6 +265,16 @@ int RunInfo(const LensArgs& a) {
                 a.wavelength, 100 * transmittance.Total(), 100 * transmittance.surfaces, 100 * transmittance.glass);
   else
     std::printf("  on-axis transmittance at %.2f nm: no ray parallel to the axis gets through\n", a.wavelength);
+  if (!double_images.empty())
+    std::printf("  birefringent crystals: the data above are the ordinary waves'; the extraordinary image of an on-axis point\n");
+  for (size_t k = 0, row = 0; k < double_images.size(); ++k, ++row) {
+    while (!lens.surfaces[row].crystal) ++row;
+    if (const std::optional<Vec2d>& o = double_images[k])
+      std::printf("    crystal after row %zu: %.4f mm from the ordinary one (x %.4f, y %.4f mm)\n", row + 1,
+                  std::hypot(o->x, o->y), o->x, o->y);
+    else
+      std::printf("    crystal after row %zu: no ray parallel to the axis reaches the film\n", row + 1);
+  }
   if (hidden > 0 && hidden_from)
     std::printf("  central obstruction: hides %.1f%% of the on-axis cone (the f-number's light, a T-stop effect); "
                 "stopped down to f/%.3g it hides all\n", 100 * hidden * hidden, *hidden_from);

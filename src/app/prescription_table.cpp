@@ -70,6 +70,10 @@ std::string PrescriptionTable(const LensPrescription& lens) {
       extra += fmt::format(" (seed {}, {:.2f}% clear)", s.dirt->seed(), 100 * s.dirt->MeanTransmittance());
     }
     if (s.gradient) extra += fmt::format(" gradient index after: {} ({})", s.gradient->KindName(), s.gradient->Terms());
+    if (s.crystal)
+      extra += fmt::format(" crystal after: extraordinary {} (nd {:.5f}), optic axis ({:.4g}, {:.4g}, {:.4g})",
+                           MediumLabel(s.crystal->extraordinary), s.crystal->extraordinary->ComputedNd(), s.crystal->axis.x,
+                           s.crystal->axis.y, s.crystal->axis.z);
     if (s.placement) extra += PlacementLabel(*s.placement);
     out += fmt::format("  {:>3}  {:>11}  {:>10.4f}  {:<{}} {:>8} {:>6}  {:>10.4f}{}\n", i + 1, radius, s.thickness,
                        MediumLabel(s), width, nd, vd, s.semi_diameter, extra);
@@ -128,6 +132,11 @@ nlohmann::ordered_json PrescriptionJson(const LensPrescription& lens) {
                             : s.gradient->kind() == GradientIndex::Kind::kSpherical
                                 ? nlohmann::ordered_json{{"centre_mm", c[0]}, {"s1", c[1]}, {"s2", c[2]}}
                                 : nlohmann::ordered_json{{"g", c[0]}, {"h4", c[1]}, {"h6", c[2]}};
+    }
+    if (s.crystal) {  // the medium after is birefringent: its extraordinary index and optic axis
+      r["extraordinary"] = MediumLabel(s.crystal->extraordinary);
+      r["extraordinary_nd"] = s.crystal->extraordinary->ComputedNd();
+      r["optic_axis"] = {s.crystal->axis.x, s.crystal->axis.y, s.crystal->axis.z};
     }
     if (s.forbes) {
       r["q_type"] = s.forbes->Name();

@@ -90,6 +90,7 @@ std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int
                                    "use lens_model real", model, spec.lens.name,
                                    spec.lens.HasToroids()      ? "anamorphic, toroidal surfaces"
                                    : spec.lens.HasFormErrors() ? "surfaces with form errors"
+                                   : spec.lens.HasTurnedCrystals() ? "a crystal whose optic axis is not the lens's"
                                                                : "decentred or tilted surfaces"));
     for (const LensSurface& s : spec.lens.surfaces)
       if (s.obscuration > 0)
@@ -97,6 +98,9 @@ std::unique_ptr<Camera> MakeLensCamera(const Transform& to_world, int width, int
                                      "use lens_model real", model, spec.lens.name));
     if (std::any_of(spec.lens.surfaces.begin(), spec.lens.surfaces.end(), [](const LensSurface& s) { return bool(s.dirt); }))
       spdlog::warn("lens_model {}: {} has dust or scratches on its surfaces, which the paraxial models (no surfaces) "
+                   "leave out: use lens_model real", model, spec.lens.name);
+    if (spec.lens.CrystalCount() > 0)
+      spdlog::warn("lens_model {}: {} has birefringent crystals, whose second (extraordinary) image the paraxial models "
                    "leave out: use lens_model real", model, spec.lens.name);
     ParaxialLensModel m = MakeParaxialModel(lens, setup.focus.plane_of_focus_to_film, spec.model == LensModel::kThin);
     if (spec.convergence_mm > 0)

@@ -1,9 +1,11 @@
 #include "camera/realistic_camera.h"
 
+#include <bit>
 #include <cmath>
 
 #include "base/error.h"
 #include "base/log.h"
+#include "base/rng.h"
 #include "optics/dispersion.h"
 #include "optics/front_element.h"
 #include "optics/lens_tracer.h"
@@ -17,8 +19,17 @@ namespace {
 bool IsDispersive(const LensPrescription& lens) {
   if (lens.object_medium && lens.object_medium->IsDispersive()) return true;
   for (const LensSurface& s : lens.surfaces)
-    if (s.medium && s.medium->IsDispersive()) return true;
+    if ((s.medium && s.medium->IsDispersive()) || (s.crystal && s.crystal->extraordinary->IsDispersive())) return true;
   return false;
+}
+
+// The waves a ray takes in the lens's birefringent crystals (LensRay::wave_choices): unpolarised
+// light divides evenly between a crystal's two, so each is chosen with probability 1/2 and the
+// ray keeps its weight; the bits hash the ray's own sample numbers (independent of the choices
+// made with them).
+template <typename... Floats>
+uint32_t WaveChoices(Floats... v) {
+  return uint32_t(Hash(std::bit_cast<uint32_t>(v)...) >> 32);
 }
 
 // Where the scene lies in another medium (index n0, an underwater port), radiance there is n0^2
@@ -64,6 +75,7 @@ RealisticCamera::RealisticCamera(const Transform& to_world, int width, int heigh
     : LensCamera(to_world, width, height, settings), lens_(lens), fast_(MakeFastTracer(lens, settings.vignetting)),
       bounds_(lens, FilmRadius(), BoundsOptions(lens, settings.vignetting)), film_z_(lens.FilmZ()),
       stop_radius_(float(lens.StopSemiDiameter())), dispersive_(IsDispersive(lens.prescription())),
+      birefringent_(lens.prescription().CrystalCount() > 0),
       per_wavelength_transmittance_(!dispersive_ && settings.transmission && TransmittanceVariesWithWavelength(lens)) {
   const ParaxialData& p = lens.paraxial();
   SetOriginZ(lens.VertexZ(0) + p.entrance_pupil_position);
@@ -103,6 +115,7 @@ bool RealisticCamera::StartRay(const CameraSample& s, SampledWavelengths& lambda
   // Each wavelength takes its own path through dispersive glass: only the hero goes on.
   if (dispersive_) lambda.TerminateSecondary();
   ray = {fx, fy, float(film_z_), dx * inv, dy * inv, dz * inv, lambda[0], 1.f};
+  if (birefringent_) ray.wave_choices = WaveChoices(s.p_film.x, s.p_film.y, s.p_lens.x, s.p_lens.y);
   return true;
 }
 
@@ -182,7 +195,8 @@ std::optional<CameraImportance> RealisticCamera::SampleImportance(const Vec3f& p
   // From just in front of the surface point (the scene point may be far away).
   std::vector<Vec3d> path;
   const bool masked = settings_.aperture_mask != nullptr;
-  const TraceResult r = TraceFromObject(lens_, {front.p - d, d}, lambda[0], masked ? &path : nullptr);
+  const uint32_t waves = birefringent_ ? WaveChoices(p.x, p.y, p.z, u.x, u.y) : 0;
+  const TraceResult r = TraceFromObject(lens_, {front.p - d, d, false, waves}, lambda[0], masked ? &path : nullptr);
   if (!r.ray || !(r.ray->d.z > 0)) return std::nullopt;
   const double t = (film_z_ - r.ray->o.z) / r.ray->d.z;
   const Vec2d film(r.ray->o.x + t * r.ray->d.x, r.ray->o.y + t * r.ray->d.y);

@@ -51,6 +51,7 @@ class RealisticCamera final : public LensCamera {
   double film_z_;
   float stop_radius_;  // for the aperture mask
   bool dispersive_;  // each camera ray carries its hero wavelength only: each takes its own path
+  bool birefringent_;  // a crystal in the lens: each ray chooses its waves (LensRay::wave_choices)
   // Without dispersion every wavelength of a sample takes one path, but coatings and absorbing
   // glass (a colour filter) transmit each differently: the ray is traced once for each of the
   // sample's wavelengths, for its transmittance (the hero's alone would leave colour noise).

@@ -110,6 +110,7 @@ Svg PlotLensLayout(const LensSystem& lens, const std::vector<double>& fields, do
   svg.Text(map(z_end, -y_extent) + Vec2d(0, 16), "film", 11, "middle");
 
   // Ray fans.
+  const bool crystals = rx.CrystalCount() > 0;
   const char* colours[] = {"#1f5fd1", "#1a9e3a", "#d12f1f", "#a31fd1", "#d18a1f"};
   for (size_t f = 0; f < fields.size(); ++f) {
     double theta = fields[f] * M_PI / 180;
@@ -123,18 +124,25 @@ Svg PlotLensLayout(const LensSystem& lens, const std::vector<double>& fields, do
       // Begin the drawn ray at the left edge of the plot.
       double back = (chief->o.z - z_start) / dir.z;
       r.o = r.o - dir * back;
-      std::vector<Vec3d> path;  // curved through a gradient-index medium
-      TraceResult t = TraceFromObject(lens, r, lambda_nm, nullptr, nullptr, &path);
-      std::vector<Vec2d> pts = {map(r.o.z, r.o.y)};
-      for (const Vec3d& q : path) pts.push_back(map(q.z, q.y));
-      if (t.ray && t.ray->d.z > 0) {
-        double s = (z_end - t.ray->o.z) / t.ray->d.z;
-        pts.push_back(map(z_end, t.ray->o.y + t.ray->d.y * s));
+      // Through birefringent crystals, the ordinary waves' rays and, dashed, the extraordinary ones'.
+      for (int pass = 0; pass < (crystals ? 2 : 1); ++pass) {
+        const uint32_t waves = pass ? ~0u : 0u;
+        r.wave_choices = waves;
+        std::vector<Vec3d> path;  // curved through a gradient-index medium
+        TraceResult t = TraceFromObject(lens, r, lambda_nm, nullptr, nullptr, &path);
+        std::vector<Vec2d> pts = {map(r.o.z, r.o.y)};
+        for (const Vec3d& q : path) pts.push_back(map(q.z, q.y));
+        if (t.ray && t.ray->d.z > 0) {
+          double s = (z_end - t.ray->o.z) / t.ray->d.z;
+          pts.push_back(map(z_end, t.ray->o.y + t.ray->d.y * s));
+        }
+        svg.Polyline(pts, colours[f % 5], 0.9, 0.85, waves ? "4,3" : "");
       }
-      svg.Polyline(pts, colours[f % 5], 0.9, 0.85);
     }
     svg.Text({W - margin, 24.0 + 16 * (f + 1)}, fmt::format("field {:.1f} deg", fields[f]), 12, "end", colours[f % 5]);
   }
+  if (crystals)
+    svg.Text({W - margin, 24.0 + 16 * (fields.size() + 1)}, "dashed: the crystals' extraordinary waves", 12, "end");
   return svg;
 }
 

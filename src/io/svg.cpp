@@ -33,9 +33,11 @@ void Svg::Line(Vec2d a, Vec2d b, const std::string& stroke, double width, const 
                                dash.empty() ? "" : fmt::format(R"( stroke-dasharray="{}")", dash)));
 }
 
-void Svg::Polyline(const std::vector<Vec2d>& pts, const std::string& stroke, double width, double opacity) {
-  items_.push_back(fmt::format(R"(<polyline points="{}" fill="none" stroke="{}" stroke-width="{}" stroke-opacity="{}"/>)",
-                               Points(pts), stroke, width, opacity));
+void Svg::Polyline(const std::vector<Vec2d>& pts, const std::string& stroke, double width, double opacity,
+                   const std::string& dash) {
+  const std::string dashes = dash.empty() ? "" : fmt::format(R"( stroke-dasharray="{}")", dash);
+  items_.push_back(fmt::format(R"(<polyline points="{}" fill="none" stroke="{}" stroke-width="{}" stroke-opacity="{}"{}/>)",
+                               Points(pts), stroke, width, opacity, dashes));
 }
 
 void Svg::Polygon(const std::vector<Vec2d>& pts, const std::string& fill, const std::string& stroke, double width) {

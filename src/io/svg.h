@@ -11,7 +11,8 @@ class Svg {
  public:
   Svg(double width, double height) : width_(width), height_(height) {}
   void Line(Vec2d a, Vec2d b, const std::string& stroke, double width = 1, const std::string& dash = "");
-  void Polyline(const std::vector<Vec2d>& points, const std::string& stroke, double width = 1, double opacity = 1);
+  void Polyline(const std::vector<Vec2d>& points, const std::string& stroke, double width = 1, double opacity = 1,
+                const std::string& dash = "");
   void Polygon(const std::vector<Vec2d>& points, const std::string& fill, const std::string& stroke, double width = 1);
   void Circle(Vec2d centre, double radius, const std::string& fill, double opacity = 1);
   void Text(Vec2d at, const std::string& text, double size = 12, const std::string& anchor = "start",

@@ -11,6 +11,8 @@ void RayBatch::Resize(size_t n) {
   for (auto* v : {&ox, &oy, &oz, &dx, &dy, &dz, &lambda}) v->resize(n);
   transmittance.assign(n, 1.f);
   alive.assign(n, 1);
+  wave_choices.assign(n, 0);
+  extraordinary.assign(n, 0);
 }
 
 namespace {
@@ -114,11 +116,11 @@ BatchLensTracer::BatchLensTracer(const LensSystem& lens_system)
       coating_tables_.push_back(TabulateReflectance(lens_system, int(i), false));
     }
     f.medium_after = medium_tables(s.medium.get());
-    f.gradient_step = s.gradient || (i > 0 && lens.surfaces[i - 1].gradient);
+    f.exact_step = s.gradient || s.crystal || (i > 0 && (lens.surfaces[i - 1].gradient || lens.surfaces[i - 1].crystal));
     f.dirt = s.dirt;
     surfaces_.push_back(f);
   }
-  if (lens.HasGradients()) exact_ = std::make_shared<const LensSystem>(lens_system);
+  if (lens.HasGradients() || lens.CrystalCount() > 0) exact_ = std::make_shared<const LensSystem>(lens_system);
   hood_ = lens_system.hood();
   first_vertex_z_ = float(lens_system.VertexZ(0));
   for (const std::vector<float>& tab : index_tables_)
@@ -148,16 +150,17 @@ void BatchLensTracer::ClipAtHood(RayBatch& rays) const {
       rays.alive[j] = 0;
 }
 
-void BatchLensTracer::GradientStep(int i, bool from_film, bool transmission, bool absorb, RayBatch& rays) const {
+void BatchLensTracer::ExactStep(int i, bool from_film, bool transmission, bool absorb, RayBatch& rays) const {
   const LensSystem& lens = *exact_;
   const bool is_stop = surfaces_[size_t(i)].is_stop && rays.record_stop;
   if (is_stop) rays.stop_x.resize(rays.Size()), rays.stop_y.resize(rays.Size());
   for (size_t j = 0; j < rays.Size(); ++j) {
     if (!rays.alive[j]) continue;
-    const LensRay ray{Vec3d(rays.ox[j], rays.oy[j], rays.oz[j]), Normalize(Vec3d(rays.dx[j], rays.dy[j], rays.dz[j]))};
+    const LensRay ray{Vec3d(rays.ox[j], rays.oy[j], rays.oz[j]), Normalize(Vec3d(rays.dx[j], rays.dy[j], rays.dz[j])),
+                      bool(rays.extraordinary[j]), rays.wave_choices[j]};
     const double lambda = rays.lambda[j];
     const SurfaceCrossing c = CrossSurface(lens, i, ray, lambda, !from_film, kGradientRenderTolerance);
-    std::optional<LensRay> out = LensRay{c.p, c.d};
+    std::optional<LensRay> out = Onward(c);
     if (c.failure == TraceFailure::kNone && c.interface) out = Refracted(c, c.d);
     if (c.failure != TraceFailure::kNone || !out) {
       rays.alive[j] = 0;
@@ -173,6 +176,7 @@ void BatchLensTracer::GradientStep(int i, bool from_film, bool transmission, boo
     }
     rays.ox[j] = float(out->o.x), rays.oy[j] = float(out->o.y), rays.oz[j] = float(out->o.z);
     rays.dx[j] = float(out->d.x), rays.dy[j] = float(out->d.y), rays.dz[j] = float(out->d.z);
+    rays.extraordinary[j] = out->extraordinary, rays.wave_choices[j] = out->wave_choices;
   }
 }
 
@@ -525,8 +529,8 @@ void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) c
     // Air is medium 0 (index one, no absorption); the ray starts in air (no absorption before
     // the first surface).
     const bool absorb = k > 0;
-    if (sf.gradient_step) {
-      GradientStep(i, from_film, transmission, absorb && transmission, rays);
+    if (sf.exact_step) {
+      ExactStep(i, from_film, transmission, absorb && transmission, rays);
       continue;
     }
     Step st{sf.z, sf.c, sf.k1, sf.semi2, sf.obscuration2, sf.reflectance, sf.cx, sf.mx, sf.my, sf.a2, {}, {},

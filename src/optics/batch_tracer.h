@@ -19,12 +19,18 @@ namespace objektiv {
 struct FloatRay {
   float ox, oy, oz, dx, dy, dz, lambda;
   float transmittance = 1;
+  uint32_t wave_choices = 0;  // the waves it takes in birefringent crystals (LensRay::wave_choices)
+  bool extraordinary = false;
 };
 
 struct RayBatch {
   std::vector<float> ox, oy, oz, dx, dy, dz, lambda;
   std::vector<float> transmittance;  // Fresnel and internal transmittance, multiplied along
   std::vector<uint8_t> alive;
+  // Birefringent crystals (LensRay): the waves each ray takes in those ahead, and whether it is
+  // the extraordinary wave of the one it is in.
+  std::vector<uint32_t> wave_choices;
+  std::vector<uint8_t> extraordinary;
   // Where each ray crossed the stop's plane (lens x, y in mm), set by the tracer when
   // `record_stop` is on (an aperture mask needs it).
   bool record_stop = false;
@@ -43,8 +49,12 @@ struct RayBatch {
     lambda.push_back(r.lambda);
     transmittance.push_back(r.transmittance);
     alive.push_back(1);
+    wave_choices.push_back(r.wave_choices);
+    extraordinary.push_back(r.extraordinary);
   }
-  FloatRay Get(size_t i) const { return {ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], lambda[i], transmittance[i]}; }
+  FloatRay Get(size_t i) const {
+    return {ox[i], oy[i], oz[i], dx[i], dy[i], dz[i], lambda[i], transmittance[i], wave_choices[i], bool(extraordinary[i])};
+  }
 };
 
 class BatchLensTracer {
@@ -85,15 +95,15 @@ class BatchLensTracer {
     // A surface no kernel traces (a Fresnel surface, a form error): traced one ray at a time
     // through this copy (IntersectSurface).
     std::shared_ptr<const LensSurface> scalar;
-    // Next to a gradient-index medium (on either side): each ray traced by the exact tracer
-    // (GradientStep).
-    bool gradient_step = false;
+    // Next to a gradient-index medium or a birefringent crystal (on either side): each ray
+    // traced by the exact tracer (ExactStep).
+    bool exact_step = false;
     std::shared_ptr<const SurfaceDirt> dirt;  // dust and scratches (null: clean)
     int medium_after;            // glass index (-1: air); its tables are at medium_after + 1
     int coating;                 // -1: bare (Fresnel's equations inline) or a mirror of constant reflectance; else coating_tables_[2 coating + toward object] (a metal mirror's reflectance: both the same)
   };
   void Trace(RayBatch& rays, bool from_film, bool transmission) const;
-  void GradientStep(int i, bool from_film, bool transmission, bool absorb, RayBatch& rays) const;
+  void ExactStep(int i, bool from_film, bool transmission, bool absorb, RayBatch& rays) const;
   static void ToSurfaceFrame(const Surface& s, RayBatch& rays);
   static void FromSurfaceFrame(const Surface& s, RayBatch& rays);
 
@@ -110,7 +120,7 @@ class BatchLensTracer {
   // The opening, where not round (the circle is tested inline), and the stop's radius.
   StopShape stop_shape_;
   float stop_semi_;
-  // The lens as set up, where a gradient-index medium needs the exact tracer (null: none).
+  // The lens as set up, where a gradient-index medium or a crystal needs the exact tracer (null: none).
   std::shared_ptr<const LensSystem> exact_;
   std::optional<LensHood> hood_;  // in front of the first vertex (z 0 in lens space)
   float first_vertex_z_ = 0;

@@ -122,7 +122,7 @@ std::string DataDirectory() {
 const GlassCatalog& GlassCatalog::Default() {
   static const GlassCatalog catalog = [] {
     GlassCatalog c;
-    for (const char* name : {"SCHOTT", "OHARA", "HOYA", "CDGM", "SUMITA", "HIKARI"})
+    for (const char* name : {"SCHOTT", "OHARA", "HOYA", "CDGM", "SUMITA", "HIKARI", "CRYSTALS"})
       c.LoadAgf(DataDirectory() + "/glass/" + name + ".AGF", name);
     return c;
   }();

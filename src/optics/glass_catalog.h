@@ -19,7 +19,7 @@ class GlassCatalog {
   void LoadAgfText(const std::string& text, const std::string& path, const std::string& name);
 
   // The catalogs shipped in data/glass, in lookup order: SCHOTT, OHARA, HOYA, CDGM, SUMITA,
-  // HIKARI. The data folder is OBJEKTIV_DATA_DIR (environment) or the one built in.
+  // HIKARI, CRYSTALS (birefringent crystals' two indices, optics/uniaxial_crystal.h). The data folder is OBJEKTIV_DATA_DIR (environment) or the one built in.
   static const GlassCatalog& Default();
 
   // "N-BK7" (case-insensitive; catalogs searched in load order) or "OHARA:S-BSL7".

@@ -6,7 +6,7 @@
 //   2. the catalogs the lens file names (Zemax's GCAT line), in its order: a shipped catalog,
 //      or an AGF file of that name beside the lens (Zemax's glasscat folder);
 //   3. every other shipped catalog, in the shipped order (SCHOTT, OHARA, HOYA, CDGM, SUMITA,
-//      HIKARI).
+//      HIKARI, CRYSTALS).
 // In each group the exact name first; where several catalogs of the group list it (CDGM's F2
 // is not Schott's F2) and the file gives the glass's nd and Vd, the first that agrees with
 // them (nd within 0.001, Vd within 0.5), else one of that name in a later group that agrees,

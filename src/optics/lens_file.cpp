@@ -13,6 +13,7 @@
 #include "base/log.h"
 #include "base/text_file.h"
 #include "optics/coating_library.h"
+#include "optics/crystal_checks.h"
 #include "optics/element_tolerances.h"
 #include "optics/glass_catalog.h"
 #include "optics/gradient_checks.h"
@@ -228,6 +229,8 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
     // A gradient-index medium after the surface: grin_r= and grin_z= (polynomial), grin_sphere=
     // or selfoc=, each a list of terms.
     std::map<std::string, std::vector<double>> grin;
+    std::optional<Vec3d> optic_axis;  // optic_axis=, extraordinary=: a birefringent crystal after the surface
+    std::string extraordinary;
     double dust = 0;  // dust=, scratches=, dirt_seed=: what absorbs light on the surface
     int scratches = 0;
     std::optional<uint64_t> dirt_seed;
@@ -288,6 +291,17 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
         std::vector<double>& terms = grin[key];
         for (const std::string& part : parts) terms.push_back(ParseFiniteNumber(part, path, number));
         terms.resize(3, 0.0);
+      } else if (key == "optic_axis") {  // a crystal's optic axis, in the surface's frame
+        const std::vector<std::string> parts = SplitCommas(value);
+        if (parts.size() != 3) throw MakeInputError(path, number, "optic_axis={}: AX,AY,AZ, a direction", Printable(value));
+        Vec3d a;
+        for (int k = 0; k < 3; ++k) a[k] = ParseFiniteNumber(parts[size_t(k)], path, number);
+        const double length = Length(a);
+        if (!(length > 0 && std::isfinite(length)))
+          throw MakeInputError(path, number, "optic_axis={}: a direction, not zero", Printable(value));
+        optic_axis = a / length;
+      } else if (key == "extraordinary") {  // a crystal's extraordinary index: a glass, n= or nd=,vd=
+        extraordinary = value;
       } else if (key == "dust") {  // the share of the aperture's area its particles cover
         dust = ParseFiniteNumber(value, path, number);
         if (!(dust > 0 && dust <= SurfaceDirt::kMaxCoverage))
@@ -359,7 +373,8 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
                              s.mirror ? "k, a4..a16, qbfs, qcon, qnorm, zones, form_error_um, form_seed, rx, decenter, tilt, "
                                         "obscuration, dust, scratches, dirt_seed, reflectance, stop"
                                       : "k, a4..a16, qbfs, qcon, qnorm, zones, form_error_um, form_seed, rx, decenter, tilt, "
-                                        "coating, obscuration, dust, scratches, dirt_seed, grin_r, grin_z, grin_sphere, selfoc");
+                                        "coating, obscuration, dust, scratches, dirt_seed, grin_r, grin_z, grin_sphere, selfoc, "
+                                        "optic_axis, extraordinary");
       }
     }
     if (q_kind) {
@@ -430,6 +445,25 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
                                                                              : std::all_of(c.begin(), c.end(), [](double v) { return v == 0; });
       if (flat) spdlog::warn("{}:{}: the gradient's terms are all zero: the medium is its glass, the same everywhere", path, number);
     }
+    if (optic_axis) {
+      if (s.mirror) throw MakeInputError(path, number, "optic_axis= on a mirror: a crystal follows a refracting surface");
+      if (!s.medium) throw MakeInputError(path, number, "optic_axis=: a crystal needs its glass (the medium column names air)");
+      // The extraordinary index: named, or the ordinary glass's name with -E (as the crystal
+      // catalogs pair them: CALCITE, CALCITE-E).
+      const std::string name = extraordinary.empty() ? f[next + 1] + "-E" : extraordinary;
+      std::shared_ptr<const Glass> ne;
+      try {
+        ne = ParseMedium(name, lens_glasses, path, number);
+      } catch (const InputError& e) {
+        if (!extraordinary.empty()) throw;
+        throw MakeInputError(path, number, "optic_axis=: no extraordinary index for {} (no glass {}); give it with "
+                             "extraordinary=GLASS, n=N or nd=N,vd=V", Printable(f[next + 1]), Printable(name));
+      }
+      if (!ne) throw MakeInputError(path, number, "extraordinary=air: a crystal's extraordinary index is a glass's");
+      s.crystal = std::make_shared<const UniaxialCrystal>(UniaxialCrystal{*optic_axis, ne});
+    } else if (!extraordinary.empty()) {
+      throw MakeInputError(path, number, "extraordinary= without optic_axis=: it is a crystal's second index");
+    }
     const SurfacePlacement placed = SurfacePlacement::DecenterTilt(decenter[0], decenter[1], tilt[0], tilt[1], tilt[2]);
     if (!placed.IsIdentity()) s.placement = placed;
     if (std::string why = ToroidTurnMismatch(s); !why.empty()) throw MakeInputError(path, number, "{}", why);
@@ -487,6 +521,7 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
   }
   if (auto crossed = FirstCrossedGap(lens)) throw MakeInputError(path, surface_lines[crossed->first], "{}", crossed->second);
   if (auto grin = FirstGradientMismatch(lens)) throw MakeInputError(path, surface_lines[grin->first], "{}", grin->second);
+  if (auto crystal = FirstCrystalMismatch(lens)) throw MakeInputError(path, surface_lines[crystal->first], "{}", crystal->second);
   if (tolerances.Any()) {
     if (lens.MirrorCount() > 0 || lens.HasToroids())
       throw MakeInputError(path, tolerance_line, "element tolerances are not modelled for a lens with {}",

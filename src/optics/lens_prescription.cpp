@@ -217,7 +217,8 @@ LensPrescription TurnedAboutAxis(const LensPrescription& lens, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
   auto turn = [&](const Vec3d& v) { return Vec3d(c * v.x - s * v.y, s * v.x + c * v.y, v.z); };
   for (LensSurface& surface : out.surfaces) {
-    if (!surface.toroidal && !surface.placement && !surface.is_stop) continue;  // the same turned
+    const bool turned_crystal = surface.crystal && (surface.crystal->axis.x != 0 || surface.crystal->axis.y != 0);
+    if (!surface.toroidal && !surface.placement && !surface.is_stop && !turned_crystal) continue;  // the same turned
     SurfacePlacement p = surface.placement.value_or(SurfacePlacement{});
     p.offset = turn(p.offset);
     p.ex = turn(p.ex), p.ey = turn(p.ey), p.ez = turn(p.ez);
@@ -252,6 +253,16 @@ LensPrescription MovedAsAWhole(const LensPrescription& lens, const SurfacePlacem
 
 bool LensPrescription::HasToroids() const {
   return std::any_of(surfaces.begin(), surfaces.end(), [](const LensSurface& s) { return s.toroidal; });
+}
+
+int LensPrescription::CrystalCount() const {
+  return int(std::count_if(surfaces.begin(), surfaces.end(), [](const LensSurface& s) { return bool(s.crystal); }));
+}
+
+bool LensPrescription::HasTurnedCrystals() const {
+  return std::any_of(surfaces.begin(), surfaces.end(), [](const LensSurface& s) {
+    return s.crystal && (s.crystal->axis.x != 0 || s.crystal->axis.y != 0);
+  });
 }
 
 bool LensPrescription::HasGradients() const {

@@ -15,6 +15,7 @@
 #include "optics/mirror_metal.h"
 #include "optics/surface_dirt.h"
 #include "optics/surface_placement.h"
+#include "optics/uniaxial_crystal.h"
 
 namespace objektiv {
 
@@ -68,6 +69,10 @@ struct LensSurface {
   // surface's frame; `medium` is its glass (its index on the axis at the vertex, its dispersion
   // and absorption); null: homogeneous.
   std::shared_ptr<const GradientIndex> gradient;
+  // A birefringent crystal after this surface (optics/uniaxial_crystal.h): `medium` gives its
+  // ordinary index, the crystal its extraordinary one and its optic axis (in this surface's
+  // frame); null: isotropic.
+  std::shared_ptr<const UniaxialCrystal> crystal;
 
   double Curvature() const { return (flat || radius == 0) ? 0.0 : 1.0 / radius; }
   // Sets the radius from a curvature c (1/mm): a plane where c is 0 or so small (a subnormal
@@ -138,12 +143,14 @@ struct LensPrescription {
   std::vector<double> VertexZs() const;
   int MirrorCount() const;
   // Whether every surface is a figure of revolution about the axis (no toroid, none decentred
-  // or tilted, no form error): the radial pupil bounds, the thin- and thick-lens models and the radial
-  // analyses rely on it.
-  bool RotationallySymmetric() const { return Centred() && !HasToroids() && !HasFormErrors(); }
+  // or tilted, no form error, every crystal's optic axis along it): the radial pupil bounds, the
+  // thin- and thick-lens models and the radial analyses rely on it.
+  bool RotationallySymmetric() const { return Centred() && !HasToroids() && !HasFormErrors() && !HasTurnedCrystals(); }
   bool HasToroids() const;
   bool HasFormErrors() const;
   bool HasGradients() const;  // a gradient-index medium anywhere
+  int CrystalCount() const;   // birefringent media
+  bool HasTurnedCrystals() const;  // a crystal whose optic axis is not the lens's axis
   bool Centred() const;  // no surface decentred or tilted
   // +1 where light leaves surface i toward the film (+z), -1 toward the object (after an odd
   // number of mirrors up to and including i).

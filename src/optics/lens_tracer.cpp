@@ -112,6 +112,21 @@ std::optional<double> IntersectNominal(const LensSurface& s, const Vec3d& o, con
   return t;
 }
 
+// Gap `gap`'s medium (index n) as a wave sees it: isotropic, or the crystal's ordinary or
+// extraordinary wave, its optic axis turned into lens space by the surface's placement.
+WaveMedium CrystalWaveMedium(const LensSystem& lens, int gap, const UniaxialCrystal* crystal, double n, double lambda_nm,
+                             bool extraordinary) {
+  WaveMedium m;
+  m.n = n;
+  if (!crystal) return m;
+  m.crystal = true;
+  m.extraordinary = extraordinary;
+  m.ne = crystal->extraordinary->Index(lambda_nm);
+  const LensSurface& s = lens.surface(gap);
+  m.axis = s.placement ? s.placement->FromLocal(crystal->axis) : crystal->axis;
+  return m;
+}
+
 }  // namespace
 
 std::optional<double> IntersectSurface(const LensSurface& s, const Vec3d& o, const Vec3d& d, bool& blocked) {
@@ -170,8 +185,15 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
                                                                      : lens.prescription().IndexBefore(size_t(i), lambda_nm);
   const double n_film_side = s.gradient ? IndexInGap(lens, i, c.p, lambda_nm) : s.IndexAfter(lambda_nm);
   const double n1 = toward_film ? n_object_side : n_film_side, n2 = toward_film ? n_film_side : n_object_side;
+  // Birefringent crystals on either side (optics/uniaxial_crystal.h).
+  const UniaxialCrystal* crystal_object_side = i > 0 ? lens.surface(i - 1).crystal.get() : nullptr;
+  const UniaxialCrystal* crystal_in = toward_film ? crystal_object_side : s.crystal.get();
+  const UniaxialCrystal* crystal_out = toward_film ? s.crystal.get() : crystal_object_side;
+  c.extraordinary = ray.extraordinary && crystal_in;
+  c.wave_choices = ray.wave_choices;
+  c.anisotropic = crystal_in || crystal_out;
   c.mirror = s.mirror;
-  c.interface = n1 != n2 && !s.mirror;
+  c.interface = (n1 != n2 || crystal_in != crystal_out) && !s.mirror;
   if (!c.interface && !c.mirror) return c;
   // The normal facing the incoming ray: for a plane or a conic from the gradient of its
   // implicit form c (x^2 + y^2) + (1 + k) c z^2 - 2 z = 0 at the point (no square root of
@@ -191,20 +213,65 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
     return c;
   }
   c.eta = n1 / n2;
-  c.reflectance = lens.SurfaceReflectance(i, lambda_nm, c.cos_i, toward_film, n_object_side, n_film_side);
+  if (!c.anisotropic) {
+    c.reflectance = lens.SurfaceReflectance(i, lambda_nm, c.cos_i, toward_film, n_object_side, n_film_side);
+    return c;
+  }
+  // Into or out of a crystal: the waves on either side as they are; the reflected and the
+  // refracted wave in a crystal is the one the ray's next choice names.
+  const bool next_extraordinary = c.wave_choices & 1u;
+  const int gap_in = toward_film ? i - 1 : i, gap_out = toward_film ? i : i - 1;
+  const WaveMedium m_in = CrystalWaveMedium(lens, gap_in, crystal_in, n1, lambda_nm, c.extraordinary);
+  c.reflected_medium = CrystalWaveMedium(lens, gap_in, crystal_in, n1, lambda_nm, next_extraordinary);
+  c.refracted_medium = CrystalWaveMedium(lens, gap_out, crystal_out, n2, lambda_nm, next_extraordinary);
+  c.k_in = WaveVectorOf(c.d, m_in);
+  const double k_in = Length(c.k_in);
+  c.cos_i = -Dot(c.normal, c.k_in) / k_in;
+  const std::optional<Vec3d> k_out = WaveVectorInto(c.k_in + c.normal * (c.cos_i * k_in), -c.normal, c.refracted_medium);
+  if (!k_out) {  // beyond the critical angle: all reflected
+    c.eta = INFINITY;
+    c.reflectance = 1;
+    return c;
+  }
+  // Fresnel's unpolarised reflectance with each wave's own index (an approximation).
+  const double k_after = Length(*k_out);
+  c.eta = k_in / k_after;
+  c.reflectance = lens.SurfaceReflectance(i, lambda_nm, c.cos_i, toward_film, toward_film ? k_in : k_after,
+                                          toward_film ? k_after : k_in);
   return c;
 }
 
 LensRay Reflected(const SurfaceCrossing& c, const Vec3d& d) {
+  if (c.anisotropic) {
+    // The wave vector's part along the surface is kept; the reflected wave goes back into the
+    // incoming side (where the normal points). Where the wave the choice names cannot exist
+    // there (a quartz extraordinary wave reflected as an ordinary one beyond its critical
+    // angle), the ray's own wave is reflected, which always exists.
+    const Vec3d t = c.k_in + c.normal * (c.cos_i * Length(c.k_in));
+    WaveMedium m = c.reflected_medium;
+    std::optional<Vec3d> k = WaveVectorInto(t, c.normal, m);
+    if (!k) m.extraordinary = c.extraordinary, k = WaveVectorInto(t, c.normal, m);
+    const bool in_crystal = c.reflected_medium.crystal;
+    const Vec3d dir = k ? RayDirectionOf(*k, m) : d + c.normal * (2 * c.cos_i);
+    return {c.p, dir / Length(dir), m.extraordinary, in_crystal ? c.wave_choices >> 1 : c.wave_choices};
+  }
   Vec3d r = d + c.normal * (2 * c.cos_i);
-  return {c.p, r / Length(r)};
+  return {c.p, r / Length(r), false, c.wave_choices};
 }
 
 std::optional<LensRay> Refracted(const SurfaceCrossing& c, const Vec3d& d) {
+  if (c.anisotropic) {
+    const Vec3d t = c.k_in + c.normal * (c.cos_i * Length(c.k_in));
+    const std::optional<Vec3d> k = WaveVectorInto(t, -c.normal, c.refracted_medium);
+    if (!k) return std::nullopt;
+    const bool into_crystal = c.refracted_medium.crystal;
+    return LensRay{c.p, RayDirectionOf(*k, c.refracted_medium), c.refracted_medium.extraordinary,
+                   into_crystal ? c.wave_choices >> 1 : c.wave_choices};
+  }
   const double k2 = 1 - c.eta * c.eta * (1 - c.cos_i * c.cos_i);
   if (k2 < 0) return std::nullopt;
   Vec3d r = d * c.eta + c.normal * (c.eta * c.cos_i - std::sqrt(k2));
-  return LensRay{c.p, r / Length(r)};
+  return LensRay{c.p, r / Length(r), false, c.wave_choices};
 }
 
 double SegmentTransmittance(const LensSystem& lens, int from, int to, double lambda_nm, double length) {
@@ -264,7 +331,7 @@ TraceResult TraceVisits(const LensSystem& lens, const LensRay& in, double lambda
         result.surface = i;
         return result;
       }
-      ray = LensRay{c.p, c.d};
+      ray = Onward(c);
       continue;
     }
     if (events) events->push_back({i, c.reflectance, c.cos_i});

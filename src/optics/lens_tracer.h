@@ -2,17 +2,24 @@
 // the reference of the renderer's batch tracer). Lens space: millimetres, z along the optical
 // axis toward the film, the first vertex at z = 0.
 #pragma once
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>
 
 #include "base/vec.h"
 #include "optics/lens_system.h"
+#include "optics/uniaxial_crystal.h"
 
 namespace objektiv {
 
 struct LensRay {
-  Vec3d o, d;  // d unit length
+  Vec3d o, d;  // d unit length: where the light goes (in a crystal the ray's, not its wave normal)
+  // Birefringent crystals (optics/uniaxial_crystal.h): whether the ray is the extraordinary wave
+  // of the crystal it is in, and which wave it takes in each crystal still ahead, one bit a
+  // crystal entered (refracted into or reflected inside), lowest first, 1 extraordinary.
+  bool extraordinary = false;
+  uint32_t wave_choices = 0;
 };
 
 enum class TraceFailure { kNone, kMissedSurface, kClipped, kTotalInternalReflection };
@@ -91,6 +98,16 @@ struct SurfaceCrossing {
   double cos_i = 1, eta = 1;  // eta: incoming index over outgoing
   double reflectance = 0;     // unpolarised (LensSystem::SurfaceReflectance), the mirror's, 0 where neither
   double clean = 1;           // what the surface's dust and scratches let through at p (optics/surface_dirt.h)
+  // The ray's crystal state (LensRay), which Reflected and Refracted carry on. Where a crystal
+  // lies on either side (`anisotropic`): the arriving wave vector and the media as the waves
+  // see them (the outgoing one for the reflected and the refracted wave), from which they
+  // solve for the wave that leaves; `eta` and `cos_i` are then the refracted wave's index
+  // ratio and its wave normal's incidence.
+  bool extraordinary = false;
+  uint32_t wave_choices = 0;
+  bool anisotropic = false;
+  Vec3d k_in;
+  WaveMedium reflected_medium, refracted_medium;
 };
 // Local error allowed per step of the integration through a gradient-index medium, mm (and in
 // n dr/ds, index units): the exact tracer's, and the renderer's (its single-precision tracer
@@ -101,9 +118,12 @@ inline constexpr double kGradientTolerance = 1e-10, kGradientRenderTolerance = 1
 SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, double lambda_nm, bool toward_film,
                              double gradient_tolerance = kGradientTolerance, std::vector<Vec3d>* curve = nullptr);
 // The ray leaving an interface crossing in direction d (SurfaceCrossing::d) reflected, or
-// refracted (nothing beyond the critical angle).
+// refracted (nothing beyond the critical angle), with the ray's crystal state: entering a
+// crystal (refracted into it, reflected inside it) takes the next of its wave choices.
 LensRay Reflected(const SurfaceCrossing& c, const Vec3d& d);
 std::optional<LensRay> Refracted(const SurfaceCrossing& c, const Vec3d& d);
+// The ray going on through a crossing that is no interface (the same medium on both sides).
+inline LensRay Onward(const SurfaceCrossing& c) { return {c.p, c.d, c.extraordinary, c.wave_choices}; }
 // The glass's internal transmittance over `length` mm between neighbouring surfaces `from`
 // and `to` (1 in air).
 double SegmentTransmittance(const LensSystem& lens, int from, int to, double lambda_nm, double length);

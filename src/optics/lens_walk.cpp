@@ -10,6 +10,8 @@ LensWalk WalkFromObject(const LensSystem& lens, const LensRay& in, double lambda
   const int n = lens.SurfaceCount(), stop = lens.StopIndex();
   const double stop_radius = lens.StopSemiDiameter();
   LensRay ray = in;
+  // Unpolarised light: each crystal's wave chosen with probability 1/2 (optics/uniaxial_crystal.h).
+  if (lens.prescription().CrystalCount() > 0) ray.wave_choices = rng.Uniform32();
   if (!lens.PassesHood(ray.o, ray.d)) return walk;  // the scene's light enters through the hood
   double weight = 1;
   int i = 0, previous = -1;
@@ -23,7 +25,7 @@ LensWalk WalkFromObject(const LensSystem& lens, const LensRay& in, double lambda
       if (!(ray.d.z > 0)) return walk;
       const double t = (lens.FilmZ() - ray.o.z) / ray.d.z;
       if (!(t >= 0)) return walk;
-      walk.film = LensRay{ray.o + ray.d * t, ray.d};
+      walk.film = LensRay{ray.o + ray.d * t, ray.d, ray.extraordinary, ray.wave_choices};
       walk.weight = weight;
       return walk;
     }
@@ -60,7 +62,7 @@ LensWalk WalkFromObject(const LensSystem& lens, const LensRay& in, double lambda
       ray = Reflected(c, c.d);
       toward_film = !toward_film;
     } else {
-      ray = refracted ? *refracted : LensRay{c.p, c.d};
+      ray = refracted ? *refracted : Onward(c);
     }
     i += toward_film ? 1 : -1;
   }

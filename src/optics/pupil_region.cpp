@@ -14,9 +14,11 @@ namespace {
 // wavelength leaves the lens.
 class RegionProbe {
  public:
+  // `wave_choices`: the waves the rays take in the lens's birefringent crystals (LensRay).
   RegionProbe(const BatchLensTracer& fast, const LensSystem& exact, Vec2d film, double film_z, double plane_z,
-              double lambda_nm)
-      : fast_(fast), exact_(exact), film_(film), film_z_(film_z), plane_z_(plane_z), lambda_(lambda_nm) {}
+              double lambda_nm, uint32_t wave_choices)
+      : fast_(fast), exact_(exact), film_(film), film_z_(film_z), plane_z_(plane_z), lambda_(lambda_nm),
+        wave_choices_(wave_choices) {}
 
   // Whether the rays aimed at each point get through.
   std::vector<uint8_t> Passes(const std::vector<Vec2d>& points) const {
@@ -26,6 +28,7 @@ class RegionProbe {
       batch_.ox[n] = float(film_.x), batch_.oy[n] = float(film_.y), batch_.oz[n] = float(film_z_);
       batch_.dx[n] = float(d.x), batch_.dy[n] = float(d.y), batch_.dz[n] = float(d.z);
       batch_.lambda[n] = float(lambda_);
+      batch_.wave_choices[n] = wave_choices_;
     }
     fast_.TraceFromFilm(batch_, false);
     return batch_.alive;
@@ -41,7 +44,7 @@ class RegionProbe {
     const double r = film_.x;
     auto stop_x = [&](double a) -> std::optional<double> {
       Vec3d o(r, 0, film_z_);
-      std::optional<Vec3d> hit = StopCrossingFromFilm(exact_, {o, Normalize(Vec3d(a, 0, plane_z_) - o)}, lambda_);
+      std::optional<Vec3d> hit = StopCrossingFromFilm(exact_, {o, Normalize(Vec3d(a, 0, plane_z_) - o), false, wave_choices_}, lambda_);
       return hit ? std::optional<double>(hit->x) : std::nullopt;
     };
     double a0 = 0, a1 = 1e-3 * (1 + std::abs(r));
@@ -60,7 +63,7 @@ class RegionProbe {
   std::optional<Vec2d> ChiefAimSkew() const {
     const Vec3d o(film_.x, film_.y, film_z_);
     auto stop_at = [&](Vec2d a) -> std::optional<Vec2d> {
-      std::optional<Vec3d> hit = StopCrossingFromFilm(exact_, {o, Normalize(Vec3d(a.x, a.y, plane_z_) - o)}, lambda_);
+      std::optional<Vec3d> hit = StopCrossingFromFilm(exact_, {o, Normalize(Vec3d(a.x, a.y, plane_z_) - o), false, wave_choices_}, lambda_);
       return hit ? std::optional<Vec2d>(Vec2d(hit->x, hit->y)) : std::nullopt;
     };
     const double h = 1e-4 * (1 + std::hypot(film_.x, film_.y));
@@ -138,6 +141,7 @@ class RegionProbe {
   const LensSystem& exact_;
   Vec2d film_;
   double film_z_, plane_z_, lambda_;
+  uint32_t wave_choices_;
   mutable RayBatch batch_;
 };
 
@@ -218,16 +222,20 @@ PupilRegion TracePupilRegionAt(const PupilRegionProbe& probe, Vec2d film, const 
   const double c = std::cos(turn), s = std::sin(turn);
   std::vector<Vec2d> points;
   double size = 0;
-  for (double lambda : lambdas) {
-    RegionProbe rays(probe.fast, probe.exact, film, probe.film_z, probe.plane_z, lambda);
-    std::optional<Vec2d> centre = rays.Inside(probe.window);
-    if (!centre) continue;
-    if (probe.recentre) centre = rays.Centred(*centre, 2 * probe.window);
-    for (const Vec2d& q : TraceEdge(rays, *centre, 2 * probe.window, probe.tolerance)) {
-      size = std::max(size, std::hypot(q.x - centre->x, q.y - centre->y));
-      points.push_back(turn == 0 ? q : Vec2d(c * q.x - s * q.y, s * q.x + c * q.y));
+  // Through birefringent crystals, the region of every combination of their two waves (each
+  // crystal is entered once on the way from the film).
+  const uint32_t combinations = 1u << probe.exact.prescription().CrystalCount();
+  for (double lambda : lambdas)
+    for (uint32_t waves = 0; waves < combinations; ++waves) {
+      RegionProbe rays(probe.fast, probe.exact, film, probe.film_z, probe.plane_z, lambda, waves);
+      std::optional<Vec2d> centre = rays.Inside(probe.window);
+      if (!centre) continue;
+      if (probe.recentre) centre = rays.Centred(*centre, 2 * probe.window);
+      for (const Vec2d& q : TraceEdge(rays, *centre, 2 * probe.window, probe.tolerance)) {
+        size = std::max(size, std::hypot(q.x - centre->x, q.y - centre->y));
+        points.push_back(turn == 0 ? q : Vec2d(c * q.x - s * q.y, s * q.x + c * q.y));
+      }
     }
-  }
   PupilRegion region;
   region.hull = ConvexHull(std::move(points));
   region.grow = 2e-3 * size;

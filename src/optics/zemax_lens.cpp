@@ -184,7 +184,7 @@ LensPrescription ParseZemaxLens(const std::string& raw, const std::string& path,
       if (f[0] != "STANDARD" && f[0] != "EVENASPH" && f[0] != "TOROIDAL" && f[0] != "COORDBRK")
         throw MakeInputError(path, number, "surface type {} is not supported (STANDARD, EVENASPH, TOROIDAL and COORDBRK are; "
                              "a Q-type asphere can be written in the native lens format, qbfs= or qcon=, a gradient-index medium "
-                             "grin_r=, grin_z=, grin_sphere= or selfoc=)", Printable(f[0]));
+                             "grin_r=, grin_z=, grin_sphere= or selfoc=, a birefringent crystal optic_axis=)", Printable(f[0]));
     } else if (key == "CURV") {
       need(1);
       cur->curv = ParseFiniteNumber(f[0], path, number);

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "base/cie.h"
+#include "base/log.h"
 
 namespace objektiv {
 
@@ -100,6 +101,9 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
   if (!settings.ghosts && !settings.light_images) return out;
 
   const LensSystem& lens = camera.lens();
+  if (lens.prescription().CrystalCount() > 0)
+    spdlog::warn("ghosts: {} has birefringent crystals; the ghosts and the lights' images are traced for their ordinary "
+                 "waves only (no second, extraordinary image)", lens.prescription().name);
   FilmRaster raster;
   raster.width = out.width, raster.height = out.height;
   const Vec2d pixel = camera.PixelSize(), origin = camera.FilmOrigin();
