@@ -17,7 +17,9 @@
 # asphere, its axial GRIN version and the Fresnel lens (docs/images/lens-asphere.png), `readme-images.sh
 # dust` dust on a cover glass at f/2.8 and f/22 (docs/images/lens-dust.png), `readme-images.sh hood`
 # a hood that fits the wide-angle and one too long (docs/images/lens-hood.png), `readme-images.sh
-# calcite` the Tessar without and with a calcite plate (docs/images/lens-calcite.png).
+# calcite` the Tessar without and with a calcite plate (docs/images/lens-calcite.png),
+# `readme-images.sh spectral` the hero wavelength alone against spectral MIS through the Tessar's
+# catalog glasses (docs/images/lens-spectral-mis.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/objektiv
@@ -155,6 +157,15 @@ calcite() {
   oiiotool "$tmp/calcite-none.png" "$tmp/calcite-plate.png" --mosaic:pad=6 2x1 -o "$out/lens-calcite.png"
 }
 
+# Colour noise through dispersive glass: the hero wavelength alone, and spectral MIS (16 spp each).
+spectral() {
+  for mis in false true; do
+    render scenes/cornell-box/cornell-box-lens.xml -D lens=tessar.brendel.100mm -D sensor=34.4 -D res=320 -D spp=16 \
+      -D spectral_mis=$mis -o "$tmp/mis-$mis.exr"
+  done
+  oiiotool "$tmp/mis-false.png" "$tmp/mis-true.png" --mosaic:pad=6 2x1 -o "$out/lens-spectral-mis.png"
+}
+
 # The Cornell box through the Tessar in air and behind a flat port under water.
 underwater() {
   render scenes/cornell-box/cornell-box-underwater.xml -D spp=256 -D res=400 -D lens=tessar.brendel.100mm \
@@ -164,7 +175,7 @@ underwater() {
 }
 
 case "${1:-}" in
-  flare | caustics | bump | stereo | classic | media | sampling | filter | mirror | underwater | anamorphic | tilt | asphere | dust | hood | calcite)
+  flare | caustics | bump | stereo | classic | media | sampling | filter | mirror | underwater | anamorphic | tilt | asphere | dust | hood | calcite | spectral)
     "$1"
     echo "wrote $out/$1-*.png"
     exit 0
@@ -183,6 +194,7 @@ asphere
 dust
 hood
 calcite
+spectral
 
 render scenes/lens/distortion-chart.xml -D spp=64 -o "$tmp/dist-wide.exr"
 render scenes/lens/distortion-chart.xml -D spp=64 -D lens=telephoto.250mm -D distance=11.4 -o "$tmp/dist-tele.exr"

@@ -70,7 +70,9 @@ TEST(Birefringence, WalkOffAtNormalIncidenceFollowsTheClosedForm) {
     EXPECT_NEAR(shift.y, 0, 1e-14);
     // Calcite is negative (n_o > n_e): the energy flows farther from the optic axis than the
     // wave normal (here, along z), so away from the axis's side.
-    if (theta_deg > 0 && theta_deg < 90) EXPECT_LT(shift.x, 0) << theta_deg;
+    if (theta_deg > 0 && theta_deg < 90) {
+      EXPECT_LT(shift.x, 0) << theta_deg;
+    }
     EXPECT_NEAR(Length(e.out.d - Vec3d(0, 0, 1)), 0, 1e-12) << theta_deg;
     EXPECT_FALSE(e.out.extraordinary);  // in air again
   }

@@ -41,10 +41,20 @@ ConvexPolygon ConvexPolygon::HullOf(std::vector<Vec2d> points) {
 }
 
 bool ConvexPolygon::Contains(Vec2d p) const {
-  if (vertices.size() < 3) return false;
-  for (size_t i = 0; i < vertices.size(); ++i)
-    if (Cross(vertices[i], vertices[(i + 1) % vertices.size()], p) < 0) return false;
-  return true;
+  const size_t n = vertices.size();
+  if (n < 3) return false;
+  // The fan of triangles from the first corner: p must lie between its first and last edges
+  // (the polygon's two edges there), then, in the triangle whose wedge holds it (found by
+  // bisection: a pupil bound's hull has hundreds of corners), on the inner side of the
+  // polygon's edge that closes it.
+  const Vec2d o = vertices[0];
+  if (Cross(o, vertices[1], p) < 0 || Cross(o, vertices[n - 1], p) > 0) return false;
+  size_t lo = 1, hi = n - 1;  // p lies left of o -> v[lo] and right of o -> v[hi]
+  while (hi - lo > 1) {
+    const size_t mid = (lo + hi) / 2;
+    (Cross(o, vertices[mid], p) >= 0 ? lo : hi) = mid;
+  }
+  return Cross(vertices[lo], vertices[hi], p) >= 0;
 }
 
 ConvexPolygon HullOfGrown(const std::vector<const std::vector<Vec2d>*>& point_sets, double grow) {

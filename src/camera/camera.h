@@ -9,6 +9,7 @@
 #include "base/sampled_spectrum.h"
 #include "base/transform.h"
 #include "base/ray.h"
+#include "camera/spectral_mis.h"
 
 namespace objektiv {
 
@@ -18,11 +19,17 @@ struct CameraSample {
   // The pixel whose sample this is ((-1, -1): the one under p_film). A filter wider than a pixel
   // puts samples beyond it; a camera that tiles its film (stereo) keeps them in the pixel's tile.
   Vec2i pixel{-1, -1};
+  // The caller weighs the wavelengths itself where the camera gives their terms
+  // (CameraRay::spectral, camera/spectral_mis.h): it knows the pixel filter.
+  bool spectral_mis = false;
 };
 
 struct CameraRay {
   Ray ray;
   SampledSpectrum weight{1.f};
+  // Through a dispersive lens, for a sample that asked (CameraSample::spectral_mis): the terms
+  // from which the caller sets `weight` (SpectralMisWeight); the ray serves every wavelength.
+  std::optional<SpectralMisTerms> spectral;
 };
 
 // The light side of a camera (camera importance, as pbrt-v4's Camera::SampleWi): light

@@ -31,6 +31,9 @@ struct LensCameraSettings {
   double exposure_scale = 1;
   Vignetting vignetting = Vignetting::kFull;
   bool transmission = true;  // Fresnel losses and glass absorption (real lens only)
+  // Through dispersive glass, every wavelength of a sample weighed by spectral MIS
+  // (camera/spectral_mis.h); false: the hero alone (pbrt-v4's way, more colour noise).
+  bool spectral_mis = true;
   float far_clip = 1e4;      // scene units
   std::shared_ptr<const ApertureMask> aperture_mask;  // over the stop; null: none
 };

@@ -103,17 +103,20 @@ double RealisticCamera::WorkingFNumber() const {
   return std::abs(lens_.FilmZ() - exit_pupil_z) / p.exit_pupil_diameter;
 }
 
-bool RealisticCamera::StartRay(const CameraSample& s, SampledWavelengths& lambda, FloatRay& ray, float& weight) const {
+bool RealisticCamera::StartRay(const CameraSample& s, SampledWavelengths& lambda, FloatRay& ray, float& weight, Vec2d& aim,
+                               bool spectral) const {
   Vec2d film = FilmPoint(s.p_film);
   PupilBounds::Sample ps = bounds_.SampleRear(film, Vec2d(s.p_lens.x, s.p_lens.y));
   if (ps.pdf == 0) return false;
+  aim = Vec2d(ps.point.x, ps.point.y);
   // Single precision from here: the direction toward the pupil point.
   float fx = float(film.x), fy = float(film.y), dz = float(bounds_.rear_z() - film_z_);
   float dx = float(ps.point.x) - fx, dy = float(ps.point.y) - fy;
   float inv = 1 / std::sqrt(dx * dx + dy * dy + dz * dz);
   weight = Weight(film, -dz * inv, -dz, ps.pdf);
-  // Each wavelength takes its own path through dispersive glass: only the hero goes on.
-  if (dispersive_) lambda.TerminateSecondary();
+  // Each wavelength takes its own path through dispersive glass: only the hero goes on, unless
+  // the others are weighed by spectral MIS.
+  if (dispersive_ && !spectral) lambda.TerminateSecondary();
   ray = {fx, fy, float(film_z_), dx * inv, dy * inv, dz * inv, lambda[0], 1.f};
   if (birefringent_) ray.wave_choices = WaveChoices(s.p_film.x, s.p_film.y, s.p_lens.x, s.p_lens.y);
   return true;
@@ -139,17 +142,25 @@ void RealisticCamera::GenerateRays(std::span<const CameraSample> samples, std::s
   thread_local RayBatch batch;
   thread_local std::vector<float> weights;
   thread_local std::vector<uint32_t> index;
+  thread_local std::vector<Vec2d> films, aims;
+  thread_local std::vector<uint8_t> spectral;
   batch.Resize(0);
   weights.clear();
   index.clear();
+  films.clear(), aims.clear(), spectral.clear();
   for (size_t i = 0; i < samples.size(); ++i) {
     out[i].reset();
     FloatRay r;
     float w;
-    if (!StartRay(samples[i], lambdas[i], r, w)) continue;
+    Vec2d aim;
+    // Spectral MIS where the caller weighs the wavelengths (not through crystals, whose waves
+    // the way back would have to retrace).
+    const bool mis = dispersive_ && !birefringent_ && settings_.spectral_mis && samples[i].spectral_mis;
+    if (!StartRay(samples[i], lambdas[i], r, w, aim, mis)) continue;
     batch.Push(r);
     weights.push_back(w);
     index.push_back(uint32_t(i));
+    films.push_back(FilmPoint(samples[i].p_film)), aims.push_back(aim), spectral.push_back(mis);
     if (per_wavelength_transmittance_)
       for (int k = 1; k < kSpectrumSamples; ++k) {  // the copies right after the hero's
         r.lambda = lambdas[i][k];
@@ -162,15 +173,31 @@ void RealisticCamera::GenerateRays(std::span<const CameraSample> samples, std::s
   const size_t copies = per_wavelength_transmittance_ ? kSpectrumSamples : 1;
   count.traced += batch.Size() / copies;
   const float inv_stop = 1 / stop_radius_;
+  thread_local std::vector<MisHero> heroes;
+  heroes.clear();
   for (size_t n = 0; n < weights.size(); ++n) {
     const size_t j = n * copies;  // the hero's copy
     if (!batch.alive[j]) continue;
     ++count.passed;
     float w = weights[n];
-    if (mask) w *= mask->Transmittance(batch.stop_x[j] * inv_stop, batch.stop_y[j] * inv_stop);
-    out[index[n]] = Finish(batch.Get(j), w);
-    if (copies > 1) out[index[n]]->weight = PerWavelengthWeight(batch, j, w);
+    const float m = mask ? mask->Transmittance(batch.stop_x[j] * inv_stop, batch.stop_y[j] * inv_stop) : 1.f;
+    out[index[n]] = Finish(batch.Get(j), w * m);
+    if (copies > 1) out[index[n]]->weight = PerWavelengthWeight(batch, j, w * m);
     ScaleForObjectMedium(lens_.prescription(), lambdas[index[n]], out[index[n]]->weight);
+    if (spectral[n]) heroes.push_back({j, index[n], films[n], aims[n], m});
+  }
+  if (heroes.empty()) return;
+  thread_local std::vector<SpectralMisTerms> terms;
+  SpectralTerms(batch, heroes, lambdas, terms);
+  for (size_t h = 0; h < heroes.size(); ++h) {
+    std::optional<CameraRay>& cr = out[heroes[h].sample];
+    SampledSpectrum numerator;
+    for (int k = 0; k < kSpectrumSamples; ++k) numerator[k] = terms[h].numerator[k];
+    ScaleForObjectMedium(lens_.prescription(), lambdas[heroes[h].sample], numerator);
+    for (int k = 0; k < kSpectrumSamples; ++k) terms[h].numerator[k] = numerator[k];
+    cr->spectral = terms[h];
+    // Until the caller weighs them with its filter: as with a filter flat over the four.
+    cr->weight = SpectralMisWeight(terms[h], Vec2f(0, 0), [](Vec2f) { return 1.f; });
   }
 }
 

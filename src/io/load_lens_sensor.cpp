@@ -235,6 +235,7 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b
   s.exposure_scale = p.FloatIn("exposure_scale", 1, 0, 1e30);
   s.vignetting = p.Choice("vignetting", Vignetting::kFull, kVignettingModes);
   s.transmission = p.Bool("transmission", true);
+  s.spectral_mis = p.Bool("spectral_mis", true);
   // The ideal models have no glass and no rims: what only the real lens has is said to do nothing.
   if (spec.model != LensModel::kReal) {
     const char* model = spec.model == LensModel::kThick ? "thick" : "thin";
@@ -245,6 +246,10 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b
       spdlog::warn("{}:{}: transmission (the real lens's Fresnel and glass losses) does nothing with lens_model '{}', "
                    "which has no glass",
                    p.LocOf("transmission").file, p.LocOf("transmission").line, model);
+    if (p.Has("spectral_mis"))
+      spdlog::warn("{}:{}: spectral_mis (for a real lens's dispersive glass) does nothing with lens_model '{}', whose rays "
+                   "do not depend on the wavelength",
+                   p.LocOf("spectral_mis").file, p.LocOf("spectral_mis").line, model);
     if (s.vignetting == Vignetting::kOptical)
       spdlog::warn("{}:{}: lens_model '{}' has no rims and so no optical vignetting: vignetting 'aperture' gives what "
                    "'none' does",
@@ -319,6 +324,7 @@ SensorRegistry::PluginType RealisticSensorPlugin() {
            {"exposure_scale", PropType::kFloat},
            {"vignetting", kVignettingModes},
            {"transmission", PropType::kBoolean},
+           {"spectral_mis", PropType::kBoolean},
            {"coating", PropType::kString},
            {"aperture_mask", PropType::kString},
            {"hood_length", PropType::kFloat},

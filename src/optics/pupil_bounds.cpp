@@ -331,6 +331,22 @@ PupilBounds::Sample PupilBounds::SampleRear(Vec2d film, Vec2d u) const {
   return {{p.x * cs - p.y * sn, p.x * sn + p.y * cs, rear_z_}, 1 / region->poly.area};
 }
 
+double PupilBounds::PdfRear(Vec2d film, Vec2d point) const {
+  if (grid_) {
+    const PupilGrid::Found f = grid_->RegionAt(film);
+    if (!f.region) return 0;
+    return f.region->poly.Contains(Vec2d(point.x * f.mirror.x, point.y * f.mirror.y)) ? 1 / f.region->poly.area : 0;
+  }
+  const Frame frame = FrameOf(film);
+  const Region* region = RegionAt(frame);
+  if (!region) return 0;
+  // From lens space to the table's frame: the turn undone, then the mirror.
+  const double cs = frame.cos_sin.x, sn = frame.cos_sin.y;
+  Vec2d p(point.x * cs + point.y * sn, -point.x * sn + point.y * cs);
+  if (frame.mirrored) p.y = -p.y;
+  return region->poly.Contains(p) ? 1 / region->poly.area : 0;
+}
+
 double PupilPlaneZ(const LensSystem& lens, double lambda_nm) {
   return lens.VertexZ(lens.SurfaceCount() - 1) + lens.Paraxial(lambda_nm).exit_pupil_position;
 }

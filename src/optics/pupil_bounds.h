@@ -45,6 +45,9 @@ class PupilBounds {
   };
   // A point to aim at from the film point (x, y), uniform in its bound.
   Sample SampleRear(Vec2d film, Vec2d u) const;
+  // The density SampleRear samples `point` (on the sampling plane, lens x, y) with from the film
+  // point: 1 / area inside its bound, else 0.
+  double PdfRear(Vec2d film, Vec2d point) const;
   // The bound for the film point (x, y) in the table's frame (see FrameOf); null if no light.
   const ConvexPolygon* BoundAt(Vec2d film) const;
   size_t RegionCount() const;

@@ -88,7 +88,8 @@ void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
     b.lambdas[j] = SampledWavelengths::SampleVisible(u);
     const Vec2f offset = b.filter_samples[j].offset;
     const Vec2f lens = lens_sample ? sj.Get2D() : Vec2f(0.5f, 0.5f);
-    b.camera_samples[j] = {Vec2f(pixel.x + 0.5f + offset.x, pixel.y + 0.5f + offset.y), lens, pixel};
+    // Through a dispersive lens every wavelength of the sample is weighed with the filter below.
+    b.camera_samples[j] = {Vec2f(pixel.x + 0.5f + offset.x, pixel.y + 0.5f + offset.y), lens, pixel, true};
   };
   // Traces the batch's n samples (started, n x sets slots) and estimates each: b.xyz,
   // b.xyz_emitted, b.aovs.
@@ -96,6 +97,11 @@ void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
     const int slots = n * sets;
     camera.GenerateRays(std::span(b.camera_samples.data(), slots), std::span(b.lambdas.data(), slots),
                         std::span(b.rays.data(), slots), ctx.camera_rays());
+    // Spectral MIS (camera/spectral_mis.h): each wavelength's film point weighed by the filter.
+    for (int j = 0; j < slots; ++j)
+      if (b.rays[j] && b.rays[j]->spectral)
+        b.rays[j]->weight = SpectralMisWeight(*b.rays[j]->spectral, b.filter_samples[j].offset,
+                                              [&](Vec2f p) { return ctx.filter().Evaluate(p); });
     // A set whose camera ray is its set 0's (a camera that does not depend on wavelength)
     // takes that ray's first hit.
     auto same_ray = [&](int j) {
