@@ -171,13 +171,18 @@ int RunInfo(const LensArgs& a) {
   j["obstruction_share"] = hidden * hidden;
   j["axial_surface_transmittance"] = transmittance.surfaces;
   j["axial_glass_transmittance"] = transmittance.glass;
-  // Birefringent crystals: each one's extraordinary image of an on-axis point, off the ordinary one.
-  const std::vector<std::optional<Vec2d>> double_images = ExtraordinaryImageOffsets(system, a.wavelength);
-  if (!double_images.empty()) {
-    nlohmann::ordered_json offsets = nlohmann::ordered_json::array();
-    for (const std::optional<Vec2d>& o : double_images)
-      offsets.push_back(o ? nlohmann::ordered_json{o->x, o->y} : nlohmann::ordered_json());
+  // Birefringent crystals: each one's extraordinary image of an on-axis point, off the ordinary
+  // one, and how far each spreads.
+  const std::optional<CrystalImages> double_images = CrystalImagesOf(system, a.wavelength);
+  if (double_images) {
+    nlohmann::ordered_json offsets = nlohmann::ordered_json::array(), spreads = nlohmann::ordered_json::array();
+    for (const std::optional<CrystalImage>& e : double_images->extraordinary) {
+      offsets.push_back(e ? nlohmann::ordered_json{e->offset.x, e->offset.y} : nlohmann::ordered_json());
+      spreads.push_back(e ? nlohmann::ordered_json(e->rms) : nlohmann::ordered_json());
+    }
     j["extraordinary_image_offsets_mm"] = offsets;
+    j["extraordinary_image_rms_mm"] = spreads;
+    j["ordinary_image_rms_mm"] = double_images->ordinary_rms;
   }
   // Each coating and the surfaces (1-based rows) that carry it.
   std::vector<std::pair<std::shared_ptr<const Coating>, std::vector<int>>> coatings;
@@ -265,15 +270,19 @@ int RunInfo(const LensArgs& a) {
                 a.wavelength, 100 * transmittance.Total(), 100 * transmittance.surfaces, 100 * transmittance.glass);
   else
     std::printf("  on-axis transmittance at %.2f nm: no ray parallel to the axis gets through\n", a.wavelength);
-  if (!double_images.empty())
-    std::printf("  birefringent crystals: the data above are the ordinary waves'; the extraordinary image of an on-axis point\n");
-  for (size_t k = 0, row = 0; k < double_images.size(); ++k, ++row) {
-    while (!lens.surfaces[row].crystal) ++row;
-    if (const std::optional<Vec2d>& o = double_images[k])
-      std::printf("    crystal after row %zu: %.4f mm from the ordinary one (x %.4f, y %.4f mm)\n", row + 1,
-                  std::hypot(o->x, o->y), o->x, o->y);
-    else
-      std::printf("    crystal after row %zu: no ray parallel to the axis reaches the film\n", row + 1);
+  if (double_images) {
+    // -0.0000 printed as 0.0000.
+    auto mm = [](double v) { return std::abs(v) < 5e-5 ? 0.0 : v; };
+    std::printf("  birefringent crystals: the data above are the ordinary waves'; an on-axis point's ordinary image spreads "
+                "%.4f mm RMS on the film; its extraordinary image\n", double_images->ordinary_rms);
+    for (size_t k = 0, row = 0; k < double_images->extraordinary.size(); ++k, ++row) {
+      while (!lens.surfaces[row].crystal) ++row;
+      if (const std::optional<CrystalImage>& e = double_images->extraordinary[k])
+        std::printf("    crystal after row %zu: %.4f mm from the ordinary one (x %.4f, y %.4f mm), spread %.4f mm RMS\n",
+                    row + 1, mm(std::hypot(e->offset.x, e->offset.y)), mm(e->offset.x), mm(e->offset.y), e->rms);
+      else
+        std::printf("    crystal after row %zu: no ray parallel to the axis reaches the film\n", row + 1);
+    }
   }
   if (hidden > 0 && hidden_from)
     std::printf("  central obstruction: hides %.1f%% of the on-axis cone (the f-number's light, a T-stop effect); "
@@ -301,8 +310,17 @@ LensSystem InSection(LensSystem lens, const std::string& section) {
   return XSectionSystem(lens);
 }
 
+// Analyses that trace each ray once follow the crystals' ordinary waves: said where it applies.
+void WarnOrdinaryWavesOnly(const LensSystem& lens, const char* what) {
+  if (lens.prescription().CrystalCount() > 0)
+    spdlog::warn("{} has birefringent crystals: {} traced for their ordinary waves only (lens info gives where each "
+                 "extraordinary image lies)", lens.prescription().name, what);
+}
+
 int RunAnalyze(const LensArgs& a) {
-  WriteLensAnalysis(InSection(LoadImagingLens(a.lens, kLambdad), a.section), a.output);
+  const LensSystem lens = InSection(LoadImagingLens(a.lens, kLambdad), a.section);
+  WarnOrdinaryWavesOnly(lens, "the analyses are");
+  WriteLensAnalysis(lens, a.output);
   return 0;
 }
 
@@ -359,6 +377,7 @@ LensSetup SetUpStop(const LensArgs& a) {
 int RunGhosts(const LensArgs& a) {
   CheckExrOutput(a.output);
   const LensSetup setup = SetUpStop(a);
+  WarnOrdinaryWavesOnly(setup.lens, "the ghosts and the direct image are");
   GhostPictureRequest q;
   q.field_deg = a.field;
   q.azimuth_deg = a.azimuth;

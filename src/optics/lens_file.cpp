@@ -296,11 +296,13 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
         if (parts.size() != 3) throw MakeInputError(path, number, "optic_axis={}: AX,AY,AZ, a direction", Printable(value));
         Vec3d a;
         for (int k = 0; k < 3; ++k) a[k] = ParseFiniteNumber(parts[size_t(k)], path, number);
-        const double length = Length(a);
-        if (!(length > 0 && std::isfinite(length)))
-          throw MakeInputError(path, number, "optic_axis={}: a direction, not zero", Printable(value));
-        optic_axis = a / length;
+        // Normalised by its largest component first (1e308 or 1e-300 components are fine).
+        const double largest = std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z)});
+        if (!(largest > 0)) throw MakeInputError(path, number, "optic_axis={}: a direction, not zero", Printable(value));
+        a = a / largest;
+        optic_axis = a / Length(a);
       } else if (key == "extraordinary") {  // a crystal's extraordinary index: a glass, n= or nd=,vd=
+        if (value.empty()) throw MakeInputError(path, number, "extraordinary= names no index (a glass, n=N or nd=N,vd=V)");
         extraordinary = value;
       } else if (key == "dust") {  // the share of the aperture's area its particles cover
         dust = ParseFiniteNumber(value, path, number);
@@ -447,7 +449,9 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
     }
     if (optic_axis) {
       if (s.mirror) throw MakeInputError(path, number, "optic_axis= on a mirror: a crystal follows a refracting surface");
-      if (!s.medium) throw MakeInputError(path, number, "optic_axis=: a crystal needs its glass (the medium column names air)");
+      if (!s.medium)
+        throw MakeInputError(path, number, "optic_axis={},{},{}: a crystal needs its glass (the medium column names air)",
+                             optic_axis->x, optic_axis->y, optic_axis->z);
       // The extraordinary index: named, or the ordinary glass's name with -E (as the crystal
       // catalogs pair them: CALCITE, CALCITE-E).
       const std::string name = extraordinary.empty() ? f[next + 1] + "-E" : extraordinary;
@@ -456,13 +460,16 @@ LensPrescription ParseNativeLens(const std::string& text, const std::string& pat
         ne = ParseMedium(name, lens_glasses, path, number);
       } catch (const InputError& e) {
         if (!extraordinary.empty()) throw;
-        throw MakeInputError(path, number, "optic_axis=: no extraordinary index for {} (no glass {}); give it with "
+        throw MakeInputError(path, number, "optic_axis= makes {} a crystal, but there is no extraordinary index (no glass {}); give it with "
                              "extraordinary=GLASS, n=N or nd=N,vd=V", Printable(f[next + 1]), Printable(name));
       }
       if (!ne) throw MakeInputError(path, number, "extraordinary=air: a crystal's extraordinary index is a glass's");
       s.crystal = std::make_shared<const UniaxialCrystal>(UniaxialCrystal{*optic_axis, ne});
     } else if (!extraordinary.empty()) {
       throw MakeInputError(path, number, "extraordinary= without optic_axis=: it is a crystal's second index");
+    } else if (s.medium && s.medium->catalog() == "CRYSTALS") {
+      spdlog::warn("{}:{}: {} is one index of a birefringent crystal; without optic_axis= it is traced as an isotropic glass "
+                   "of that index", path, number, s.medium->name());
     }
     const SurfacePlacement placed = SurfacePlacement::DecenterTilt(decenter[0], decenter[1], tilt[0], tilt[1], tilt[2]);
     if (!placed.IsIdentity()) s.placement = placed;

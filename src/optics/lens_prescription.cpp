@@ -265,6 +265,14 @@ bool LensPrescription::HasTurnedCrystals() const {
   });
 }
 
+bool LensPrescription::CrystalsMirrorSymmetric() const {
+  return std::all_of(surfaces.begin(), surfaces.end(), [](const LensSurface& s) {
+    if (!s.crystal) return true;
+    const Vec3d& a = s.crystal->axis;
+    return (a.x == 0 || (a.y == 0 && a.z == 0)) && (a.y == 0 || (a.x == 0 && a.z == 0));
+  });
+}
+
 bool LensPrescription::HasGradients() const {
   return std::any_of(surfaces.begin(), surfaces.end(), [](const LensSurface& s) { return bool(s.gradient); });
 }

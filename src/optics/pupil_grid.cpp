@@ -21,8 +21,9 @@ class PupilGrid::Builder {
     window_ = search.window, tolerance_ = search.tolerance;
     round_ = lens.stop_shape().symmetry().order == 0;
     // Centred toroids are symmetric under x -> -x and y -> -y; so is a round stop. A decentred or
-    // tilted surface is not, nor a form error.
-    g_.quadrant_ = round_ && lens.prescription().Centred() && !lens.prescription().HasFormErrors();
+    // tilted surface is not, nor a form error, nor a crystal whose optic axis leans both ways.
+    g_.quadrant_ = round_ && lens.prescription().Centred() && !lens.prescription().HasFormErrors() &&
+                   lens.prescription().CrystalsMirrorSymmetric();
     g_.cells_ = g_.quadrant_ ? 8 : 16;
     g_.x0_ = g_.quadrant_ ? 0 : -film_radius;
     g_.size_ = g_.quadrant_ ? film_radius : 2 * film_radius;
