@@ -104,11 +104,12 @@ double RealisticCamera::WorkingFNumber() const {
 }
 
 bool RealisticCamera::StartRay(const CameraSample& s, SampledWavelengths& lambda, FloatRay& ray, float& weight, Vec2d& aim,
-                               bool spectral) const {
+                               double& pdf, bool spectral) const {
   Vec2d film = FilmPoint(s.p_film);
   PupilBounds::Sample ps = bounds_.SampleRear(film, Vec2d(s.p_lens.x, s.p_lens.y));
   if (ps.pdf == 0) return false;
   aim = Vec2d(ps.point.x, ps.point.y);
+  pdf = ps.pdf;
   // Single precision from here: the direction toward the pupil point.
   float fx = float(film.x), fy = float(film.y), dz = float(bounds_.rear_z() - film_z_);
   float dx = float(ps.point.x) - fx, dy = float(ps.point.y) - fy;
@@ -143,24 +144,26 @@ void RealisticCamera::GenerateRays(std::span<const CameraSample> samples, std::s
   thread_local std::vector<float> weights;
   thread_local std::vector<uint32_t> index;
   thread_local std::vector<Vec2d> films, aims;
+  thread_local std::vector<double> pdfs;
   thread_local std::vector<uint8_t> spectral;
   batch.Resize(0);
   weights.clear();
   index.clear();
-  films.clear(), aims.clear(), spectral.clear();
+  films.clear(), aims.clear(), pdfs.clear(), spectral.clear();
   for (size_t i = 0; i < samples.size(); ++i) {
     out[i].reset();
     FloatRay r;
     float w;
     Vec2d aim;
+    double pdf;
     // Spectral MIS where the caller weighs the wavelengths (not through crystals, whose waves
     // the way back would have to retrace).
     const bool mis = dispersive_ && !birefringent_ && settings_.spectral_mis && samples[i].spectral_mis;
-    if (!StartRay(samples[i], lambdas[i], r, w, aim, mis)) continue;
+    if (!StartRay(samples[i], lambdas[i], r, w, aim, pdf, mis)) continue;
     batch.Push(r);
     weights.push_back(w);
     index.push_back(uint32_t(i));
-    films.push_back(FilmPoint(samples[i].p_film)), aims.push_back(aim), spectral.push_back(mis);
+    films.push_back(FilmPoint(samples[i].p_film)), aims.push_back(aim), pdfs.push_back(pdf), spectral.push_back(mis);
     if (per_wavelength_transmittance_)
       for (int k = 1; k < kSpectrumSamples; ++k) {  // the copies right after the hero's
         r.lambda = lambdas[i][k];
@@ -184,7 +187,7 @@ void RealisticCamera::GenerateRays(std::span<const CameraSample> samples, std::s
     out[index[n]] = Finish(batch.Get(j), w * m);
     if (copies > 1) out[index[n]]->weight = PerWavelengthWeight(batch, j, w * m);
     ScaleForObjectMedium(lens_.prescription(), lambdas[index[n]], out[index[n]]->weight);
-    if (spectral[n]) heroes.push_back({j, index[n], films[n], aims[n], m});
+    if (spectral[n]) heroes.push_back({j, index[n], films[n], aims[n], pdfs[n], m});
   }
   if (heroes.empty()) return;
   thread_local std::vector<SpectralMisTerms> terms;

@@ -41,26 +41,28 @@ class RealisticCamera final : public LensCamera {
   // `spectral`: the sample's wavelengths all go on (spectral MIS); else through dispersive
   // glass the hero alone.
   bool StartRay(const CameraSample& s, SampledWavelengths& lambda, FloatRay& ray, float& weight, Vec2d& aim,
-                bool spectral) const;
+                double& pdf, bool spectral) const;
   CameraRay Finish(const FloatRay& ray, float weight) const;
   // Spectral MIS (camera/spectral_mis.h). A hero ray that got through: its place in the traced
-  // batch, its sample, film point, aim point and the aperture mask's transmittance for it.
+  // batch, its sample, film point, aim point and the density it was aimed with, and the
+  // aperture mask's transmittance for it.
   struct MisHero {
     size_t j;
     uint32_t sample;
     Vec2d film, aim;
+    double pdf;
     float mask;
   };
   // For each hero, its sample's terms: the hero's from its own trace, the other wavelengths'
   // by tracing its world ray back into the lens at each (realistic_camera_spectral.cpp).
   void SpectralTerms(const RayBatch& batch, std::span<const MisHero> heroes, std::span<const SampledWavelengths> lambdas,
                      std::vector<SpectralMisTerms>& terms) const;
-  // A technique's parts for the ray from film point x to aim point u: s / c(x) over G, and the
-  // pupil bound's density for u over G (camera/spectral_mis.h).
+  // A technique's parts for the ray from film point x to aim point u, which the pupil bound
+  // samples with density `pdf`: s / c(x) over G, and pdf over G (camera/spectral_mis.h).
   struct Technique {
     float scale, density;
   };
-  Technique TechniqueAt(Vec2d x, Vec2d u) const;
+  Technique TechniqueAt(Vec2d x, Vec2d u, double pdf) const;
   // The weights of a sample's wavelengths whose copies (one per wavelength, alike but for it)
   // the batch traced at `first`.
   SampledSpectrum PerWavelengthWeight(const RayBatch& batch, size_t first, float weight) const;

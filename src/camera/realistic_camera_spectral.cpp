@@ -7,13 +7,13 @@
 
 namespace objektiv {
 
-RealisticCamera::Technique RealisticCamera::TechniqueAt(Vec2d x, Vec2d u) const {
+RealisticCamera::Technique RealisticCamera::TechniqueAt(Vec2d x, Vec2d u, double pdf) const {
   const double dz = film_z_ - bounds_.rear_z();  // from the sampling plane to the film, positive
   const double d2 = (u.x - x.x) * (u.x - x.x) + (u.y - x.y) * (u.y - x.y) + dz * dz;
   const double cos_theta = dz / std::sqrt(d2);
   const double g = cos_theta * cos_theta * cos_theta * cos_theta / (dz * dz);  // G = cos^4 / dz^2
   // Weight() with pdf 1 is s G / c(x): over G, s / c(x).
-  return {float(Weight(x, cos_theta, dz, 1.0) / g), float(bounds_.PdfRear(x, u) / g)};
+  return {float(Weight(x, cos_theta, dz, 1.0) / g), float(pdf / g)};
 }
 
 void RealisticCamera::SpectralTerms(const RayBatch& batch, std::span<const MisHero> heroes,
@@ -38,7 +38,7 @@ void RealisticCamera::SpectralTerms(const RayBatch& batch, std::span<const MisHe
     const MisHero& h = heroes[n];
     SpectralMisTerms& t = terms[n];
     const Vec2d pixel0 = PixelOf(h.film);
-    const Technique hero = TechniqueAt(h.film, h.aim);
+    const Technique hero = TechniqueAt(h.film, h.aim, h.pdf);
     t.numerator[0] = hero.scale * batch.transmittance[h.j] * h.mask;
     t.density[0] = hero.density;
     for (int k = 1; k < kSpectrumSamples; ++k) {
@@ -47,7 +47,7 @@ void RealisticCamera::SpectralTerms(const RayBatch& batch, std::span<const MisHe
       const double ox = back.ox[j], oy = back.oy[j], oz = back.oz[j], dx = back.dx[j], dy = back.dy[j], dz = back.dz[j];
       const double to_film = (film_z_ - oz) / dz, to_plane = (rear_z - oz) / dz;
       const Vec2d film(ox + dx * to_film, oy + dy * to_film), aim(ox + dx * to_plane, oy + dy * to_plane);
-      const Technique tk = TechniqueAt(film, aim);
+      const Technique tk = TechniqueAt(film, aim, bounds_.PdfRear(film, aim));
       const float m = mask ? mask->Transmittance(back.stop_x[j] * inv_stop, back.stop_y[j] * inv_stop) : 1.f;
       t.numerator[k] = tk.scale * back.transmittance[j] * m;
       t.density[k] = tk.density;

@@ -335,7 +335,7 @@ double PupilBounds::PdfRear(Vec2d film, Vec2d point) const {
   if (grid_) {
     const PupilGrid::Found f = grid_->RegionAt(film);
     if (!f.region) return 0;
-    return f.region->poly.Contains(Vec2d(point.x * f.mirror.x, point.y * f.mirror.y)) ? 1 / f.region->poly.area : 0;
+    return f.region->Contains(Vec2d(point.x * f.mirror.x, point.y * f.mirror.y)) ? 1 / f.region->poly.area : 0;
   }
   const Frame frame = FrameOf(film);
   const Region* region = RegionAt(frame);
@@ -344,7 +344,7 @@ double PupilBounds::PdfRear(Vec2d film, Vec2d point) const {
   const double cs = frame.cos_sin.x, sn = frame.cos_sin.y;
   Vec2d p(point.x * cs + point.y * sn, -point.x * sn + point.y * cs);
   if (frame.mirrored) p.y = -p.y;
-  return region->poly.Contains(p) ? 1 / region->poly.area : 0;
+  return region->Contains(p) ? 1 / region->poly.area : 0;
 }
 
 double PupilPlaneZ(const LensSystem& lens, double lambda_nm) {

@@ -1,6 +1,7 @@
 #include "optics/sampled_polygon.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "base/sampling.h"
 
@@ -16,6 +17,17 @@ SampledPolygon::SampledPolygon(ConvexPolygon hull) {
     cdf.push_back(acc);
   }
   for (double& c : cdf) c /= acc;
+  // The inner disc: the vertices' mean lies inside a convex polygon; its distance to the
+  // nearest edge's line (shrunk a little against rounding) bounds a disc inside.
+  const size_t n = poly.vertices.size();
+  for (const Vec2d& v : poly.vertices) inner_centre = inner_centre + v * (1.0 / n);
+  double nearest = INFINITY;
+  for (size_t i = 0; i < n; ++i) {
+    const Vec2d a = poly.vertices[i], b = poly.vertices[(i + 1) % n];
+    const double length = std::hypot(b.x - a.x, b.y - a.y);
+    if (length > 0) nearest = std::min(nearest, Cross(a, b, inner_centre) / length);
+  }
+  inner_radius2 = nearest > 0 && std::isfinite(nearest) ? 0.999 * nearest * nearest : 0;
   // Guide table: for u in [g / G, (g + 1) / G), the triangles before guide[g] are too low.
   guide.resize(64);
   for (size_t g = 0; g < guide.size(); ++g)

@@ -15,8 +15,17 @@ struct SampledPolygon {
   std::vector<double> cdf;      // over the fan triangles from vertex 0
   std::vector<uint16_t> guide;  // where to start looking in the cdf for u in [g/G, (g+1)/G)
 
+  // A disc inside the polygon (about its vertices' mean, as wide as the nearest edge allows):
+  // most points tested lie in it, which saves the polygon's own test.
+  Vec2d inner_centre{0, 0};
+  double inner_radius2 = 0;
+
   explicit SampledPolygon(ConvexPolygon hull = {});
   bool Empty() const { return !(poly.area > 0); }
+  bool Contains(Vec2d p) const {
+    const double dx = p.x - inner_centre.x, dy = p.y - inner_centre.y;
+    return dx * dx + dy * dy < inner_radius2 || poly.Contains(p);
+  }
   // A point uniform in the polygon (pdf 1 / area) for u in [0, 1)^2.
   Vec2d Sample(Vec2d u) const;
 };
