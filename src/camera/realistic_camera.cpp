@@ -194,10 +194,7 @@ void RealisticCamera::GenerateRays(std::span<const CameraSample> samples, std::s
   SpectralTerms(batch, heroes, lambdas, terms);
   for (size_t h = 0; h < heroes.size(); ++h) {
     std::optional<CameraRay>& cr = out[heroes[h].sample];
-    SampledSpectrum numerator;
-    for (int k = 0; k < kSpectrumSamples; ++k) numerator[k] = terms[h].numerator[k];
-    ScaleForObjectMedium(lens_.prescription(), lambdas[heroes[h].sample], numerator);
-    for (int k = 0; k < kSpectrumSamples; ++k) terms[h].numerator[k] = numerator[k];
+    ScaleForObjectMedium(lens_.prescription(), lambdas[heroes[h].sample], terms[h].numerator);
     cr->spectral = terms[h];
     // Until the caller weighs them with its filter: as with a filter flat over the four.
     cr->weight = SpectralMisWeight(terms[h], Vec2f(0, 0), [](Vec2f) { return 1.f; });
@@ -251,7 +248,7 @@ std::optional<CameraImportance> RealisticCamera::SampleImportance(const Vec3f& p
   out.weight = SampledSpectrum(float(w * hero_transmittance));
   if (per_wavelength_transmittance_)  // the same path at the sample's other wavelengths
     for (int k = 1; k < kSpectrumSamples; ++k) {
-      const TraceResult rk = TraceFromObject(lens_, {front.p - d, d}, lambda[k]);
+      const TraceResult rk = TraceFromObject(lens_, {front.p - d, d, false, waves}, lambda[k]);
       out.weight[k] = rk.ray ? float(w * rk.Transmittance()) : 0.f;
     }
   // (No 1 / n0^2 here: this weight takes flux through the lens to the film, and flux, unlike

@@ -27,7 +27,8 @@ namespace objektiv {
 // `density[k]` = p_u(u_k | x_k) / G_k.
 struct SpectralMisTerms {
   std::array<Vec2f, kSpectrumSamples> shift{};
-  std::array<float, kSpectrumSamples> numerator{}, density{};
+  SampledSpectrum numerator{0.f};
+  std::array<float, kSpectrumSamples> density{};
 };
 
 // The weights with the pixel filter `filter` (its value at an offset from the pixel's centre),

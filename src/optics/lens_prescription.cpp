@@ -217,8 +217,8 @@ LensPrescription TurnedAboutAxis(const LensPrescription& lens, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
   auto turn = [&](const Vec3d& v) { return Vec3d(c * v.x - s * v.y, s * v.x + c * v.y, v.z); };
   for (LensSurface& surface : out.surfaces) {
-    const bool turned_crystal = surface.crystal && (surface.crystal->axis.x != 0 || surface.crystal->axis.y != 0);
-    if (!surface.toroidal && !surface.placement && !surface.is_stop && !turned_crystal) continue;  // the same turned
+    const bool leaning_crystal = surface.crystal && surface.crystal->Leans();
+    if (!surface.toroidal && !surface.placement && !surface.is_stop && !leaning_crystal) continue;  // the same turned
     SurfacePlacement p = surface.placement.value_or(SurfacePlacement{});
     p.offset = turn(p.offset);
     p.ex = turn(p.ex), p.ey = turn(p.ey), p.ez = turn(p.ez);
@@ -261,7 +261,7 @@ int LensPrescription::CrystalCount() const {
 
 bool LensPrescription::HasTurnedCrystals() const {
   return std::any_of(surfaces.begin(), surfaces.end(), [](const LensSurface& s) {
-    return s.crystal && (s.crystal->axis.x != 0 || s.crystal->axis.y != 0);
+    return s.crystal && s.crystal->Leans();
   });
 }
 

@@ -33,6 +33,9 @@ namespace objektiv {
 struct UniaxialCrystal {
   Vec3d axis{0, 0, 1};                          // unit, in the frame of the surface it follows
   std::shared_ptr<const Glass> extraordinary;  // n_e(lambda); the medium's glass is n_o(lambda)
+  // Whether the optic axis leans off the surface's own axis (the crystal is then not a
+  // figure of revolution about it).
+  bool Leans() const { return axis.x != 0 || axis.y != 0; }
 };
 
 // A medium as a wave sees it at one wavelength: isotropic of index n, or a crystal's ordinary
