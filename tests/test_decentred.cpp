@@ -113,6 +113,29 @@ TEST(Placement, PupilBoundsHoldAllTheLight) {
   }
 }
 
+TEST(Placement, MirrorSymmetryIsFoundAndTheHalfTableHoldsAllTheLight) {
+  // Tilted about x and decentred along y: its own mirror image under x -> -x, not under y -> -y.
+  const char* tilted_about_x = "stop 6 air 12\nsurface 60 7 n=1.6 14 decenter=0,0.8 tilt=3,0\n"
+                               "surface -60 45 air 14 decenter=0,0.8 tilt=3,0\n";
+  const LensSystem lens(Parse(tilted_about_x));
+  EXPECT_TRUE(lens.prescription().MirrorSymmetric(0));
+  EXPECT_FALSE(lens.prescription().MirrorSymmetric(1));
+  EXPECT_FALSE(Parse("stop 6 air 12\nsurface 60 7 n=1.6 14 decenter=0.1,0\nsurface -60 45 air 14\n").MirrorSymmetric(0));
+  EXPECT_TRUE(Parse("stop 6 air 12\nsurface 60 7 n=1.6 14 decenter=0.1,0\nsurface -60 45 air 14\n").MirrorSymmetric(1));
+  EXPECT_FALSE(Parse("stop 6 air 12\nsurface 60 7 n=1.6 14 tilt=0,0,20\nsurface -60 45 air 14\n").MirrorSymmetric(1));
+  EXPECT_TRUE(Parse("stop 6 air 12\nsurface 60 7 n=1.6 14 tilt=0,0,90\nsurface -60 45 air 14\n").MirrorSymmetric(1));
+  SKIP_UNDER_SANITIZERS("Placement.CameraTakesTheCrookedLens");
+  // The bounds of film points with x < 0 are the mirror images of those with x > 0.
+  const PupilBounds bounds(lens, std::hypot(18.0, 12.0));
+  PCG32 rng(4, 1);
+  for (Vec2d film : {Vec2d(-11.3, 6.1), Vec2d(11.3, 6.1), Vec2d(-6.2, -10.4), Vec2d(-16.0, 0.5)}) {
+    const test::AreaEstimates a = test::PassingArea(lens, bounds, film, 30, 40000, rng, 587.56);
+    ASSERT_TRUE(a.has_bound);
+    EXPECT_NEAR(a.bound, a.brute, 4 * a.se) << film.x << ", " << film.y;
+    EXPECT_GT(a.passed_share, 0.85) << film.x << ", " << film.y;
+  }
+}
+
 TEST(Placement, CameraTakesTheCrookedLensAndTheParaxialModelsRefuseIt) {
   LensCameraSpec spec;
   spec.lens = Crooked().prescription();

@@ -58,11 +58,13 @@ bool ConvexPolygon::Contains(Vec2d p) const {
 }
 
 ConvexPolygon HullOfGrown(const std::vector<const std::vector<Vec2d>*>& point_sets, double grow) {
+  // The hull of the points first: only its corners, grown, can be corners of the sum.
+  std::vector<Vec2d> all;
+  for (const std::vector<Vec2d>* points : point_sets) all.insert(all.end(), points->begin(), points->end());
   std::vector<Vec2d> corners;
-  for (const std::vector<Vec2d>* points : point_sets)
-    for (const Vec2d& q : *points)
-      for (double dx : {-grow, grow})
-        for (double dy : {-grow, grow}) corners.push_back({q.x + dx, q.y + dy});
+  for (const Vec2d& q : ConvexHull(std::move(all)))
+    for (double dx : {-grow, grow})
+      for (double dy : {-grow, grow}) corners.push_back({q.x + dx, q.y + dy});
   return ConvexPolygon::HullOf(std::move(corners));
 }
 

@@ -38,6 +38,20 @@ std::vector<float> TabulateReflectance(const LensSystem& lens, int i, bool towar
   }
   return table;
 }
+
+// A coated surface's reflectance for a ray in table row `row` (CoatingRows: its wavelength's,
+// `weight` the next row's share) at cos(incidence) `cos_i`: bilinear in the table. Clamped so
+// that a dead ray's garbage (NaN too) still indexes it.
+inline float TableReflectance(const float* __restrict table, int32_t row, float weight, float cos_i) {
+  cos_i = cos_i > 0.f ? (cos_i < 1.f ? cos_i : 1.f) : 0.f;
+  const float y = cos_i * float(kCoatColumns - 1) * (1 - 1e-6f);
+  const int32_t c = int32_t(y);
+  const float fy = y - float(c);
+  const float* row0 = table + row + c;
+  const float* row1 = row0 + kCoatColumns;
+  const float lo = row0[0] + fy * (row0[1] - row0[0]), hi = row1[0] + fy * (row1[1] - row1[0]);
+  return lo + weight * (hi - lo);
+}
 }  // namespace
 
 BatchLensTracer::BatchLensTracer(const LensSystem& lens_system)
@@ -152,14 +166,19 @@ void BatchLensTracer::ClipAtHood(RayBatch& rays) const {
 
 void BatchLensTracer::ExactStep(int i, bool from_film, bool transmission, bool absorb, RayBatch& rays) const {
   const LensSystem& lens = *exact_;
-  const bool is_stop = surfaces_[size_t(i)].is_stop && rays.record_stop;
+  const Surface& sf = surfaces_[size_t(i)];
+  const bool is_stop = sf.is_stop && rays.record_stop;
+  // A coating's reflectance from its table, as the kernel's (the exact thin-film stack was two
+  // thirds of a crystal lens's set-up time); a bare surface's from Fresnel's equations.
+  const float* coating = transmission && sf.coating >= 0 ? coating_tables_[2 * sf.coating + (from_film ? 1 : 0)].data() : nullptr;
   if (is_stop) rays.stop_x.resize(rays.Size()), rays.stop_y.resize(rays.Size());
   for (size_t j = 0; j < rays.Size(); ++j) {
     if (!rays.alive[j]) continue;
     const LensRay ray{Vec3d(rays.ox[j], rays.oy[j], rays.oz[j]), Normalize(Vec3d(rays.dx[j], rays.dy[j], rays.dz[j])),
                       bool(rays.extraordinary[j]), rays.wave_choices[j]};
     const double lambda = rays.lambda[j];
-    const SurfaceCrossing c = CrossSurface(lens, i, ray, lambda, !from_film, kGradientRenderTolerance);
+    const SurfaceCrossing c =
+        CrossSurface(lens, i, ray, lambda, !from_film, kGradientRenderTolerance, nullptr, transmission && !coating);
     std::optional<LensRay> out = Onward(c);
     if (c.failure == TraceFailure::kNone && c.interface) out = Refracted(c, c.d);
     if (c.failure != TraceFailure::kNone || !out) {
@@ -168,7 +187,8 @@ void BatchLensTracer::ExactStep(int i, bool from_film, bool transmission, bool a
     }
     double w = c.clean;
     if (absorb) w *= SegmentTransmittance(lens, i, from_film ? i + 1 : i - 1, lambda, c.t);
-    if (transmission && c.interface) w *= 1 - c.reflectance;
+    if (transmission && c.interface)
+      w *= 1 - (coating ? TableReflectance(coating, rays.coat_row[j], rays.coat_weight[j], float(c.cos_i)) : c.reflectance);
     rays.transmittance[j] *= float(w);
     if (is_stop) {
       const Vec3d local = lens.InSurfaceFrame(i, c.p);
@@ -224,17 +244,7 @@ void ApplyCoating(const float* __restrict table, RayBatch& b, bool mirror) {
   const float* __restrict weights = b.coat_weight.data();
   const float* __restrict cosines = b.coat_cos.data();
   float* __restrict trans = b.transmittance.data();
-  for (size_t j = 0; j < n; ++j) {
-    // Clamped so that a dead ray's garbage (NaN too) still indexes the table.
-    const float cos_i = cosines[j] > 0.f ? (cosines[j] < 1.f ? cosines[j] : 1.f) : 0.f;
-    const float y = cos_i * float(kCoatColumns - 1) * (1 - 1e-6f);
-    const int32_t c = int32_t(y);
-    const float fy = y - float(c);
-    const float* row0 = table + rows[j] + c;
-    const float* row1 = row0 + kCoatColumns;
-    const float lo = row0[0] + fy * (row0[1] - row0[0]), hi = row1[0] + fy * (row1[1] - row1[0]);
-    trans[j] *= offset - sign * (lo + weights[j] * (hi - lo));
-  }
+  for (size_t j = 0; j < n; ++j) trans[j] *= offset - sign * TableReflectance(table, rows[j], weights[j], cosines[j]);
 }
 
 // Which terms a surface of revolution adds to its conic; kScalar: a surface no kernel traces
@@ -458,36 +468,40 @@ void StepShape(const Step& s, bool refract, bool mirror, bool transmission, RayB
   else StepAll<kPlane, kAsphere, kToroid, kCylinder, false, false>(s, transmission, b);
 }
 
-}  // namespace
-
-void BatchLensTracer::ToSurfaceFrame(const Surface& s, RayBatch& b) {
+// A rigid motion of every ray of the batch: p -> m (p - before) + after, d -> m d (the matrix
+// and the batch's arrays as locals and restricted pointers: the loop vectorises).
+void MoveRays(const float (&m)[3][3], const float (&before)[3], const float (&after)[3], RayBatch& b) {
   const size_t n = b.Size();
-  const float(&a)[3][3] = s.axes;
+  const float m00 = m[0][0], m01 = m[0][1], m02 = m[0][2], m10 = m[1][0], m11 = m[1][1], m12 = m[1][2], m20 = m[2][0],
+              m21 = m[2][1], m22 = m[2][2];
+  const float b0 = before[0], b1 = before[1], b2 = before[2], a0 = after[0], a1 = after[1], a2 = after[2];
+  float *__restrict ox = b.ox.data(), *__restrict oy = b.oy.data(), *__restrict oz = b.oz.data();
+  float *__restrict dx = b.dx.data(), *__restrict dy = b.dy.data(), *__restrict dz = b.dz.data();
   for (size_t j = 0; j < n; ++j) {
-    const float x = b.ox[j] - s.origin[0], y = b.oy[j] - s.origin[1], z = b.oz[j] - s.origin[2];
-    b.ox[j] = a[0][0] * x + a[0][1] * y + a[0][2] * z;
-    b.oy[j] = a[1][0] * x + a[1][1] * y + a[1][2] * z;
-    b.oz[j] = a[2][0] * x + a[2][1] * y + a[2][2] * z;
-    const float dx = b.dx[j], dy = b.dy[j], dz = b.dz[j];
-    b.dx[j] = a[0][0] * dx + a[0][1] * dy + a[0][2] * dz;
-    b.dy[j] = a[1][0] * dx + a[1][1] * dy + a[1][2] * dz;
-    b.dz[j] = a[2][0] * dx + a[2][1] * dy + a[2][2] * dz;
+    const float x = ox[j] - b0, y = oy[j] - b1, z = oz[j] - b2;
+    ox[j] = a0 + m00 * x + m01 * y + m02 * z;
+    oy[j] = a1 + m10 * x + m11 * y + m12 * z;
+    oz[j] = a2 + m20 * x + m21 * y + m22 * z;
+    const float u = dx[j], v = dy[j], w = dz[j];
+    dx[j] = m00 * u + m01 * v + m02 * w;
+    dy[j] = m10 * u + m11 * v + m12 * w;
+    dz[j] = m20 * u + m21 * v + m22 * w;
   }
 }
 
+}  // namespace
+
+void BatchLensTracer::ToSurfaceFrame(const Surface& s, RayBatch& b) {
+  static constexpr float kZero[3] = {0, 0, 0};
+  MoveRays(s.axes, s.origin, kZero, b);
+}
+
 void BatchLensTracer::FromSurfaceFrame(const Surface& s, RayBatch& b) {
-  const size_t n = b.Size();
-  const float(&a)[3][3] = s.axes;
-  for (size_t j = 0; j < n; ++j) {
-    const float x = b.ox[j], y = b.oy[j], z = b.oz[j];
-    b.ox[j] = s.origin[0] + a[0][0] * x + a[1][0] * y + a[2][0] * z;
-    b.oy[j] = s.origin[1] + a[0][1] * x + a[1][1] * y + a[2][1] * z;
-    b.oz[j] = s.origin[2] + a[0][2] * x + a[1][2] * y + a[2][2] * z;
-    const float dx = b.dx[j], dy = b.dy[j], dz = b.dz[j];
-    b.dx[j] = a[0][0] * dx + a[1][0] * dy + a[2][0] * dz;
-    b.dy[j] = a[0][1] * dx + a[1][1] * dy + a[2][1] * dz;
-    b.dz[j] = a[0][2] * dx + a[1][2] * dy + a[2][2] * dz;
-  }
+  static constexpr float kZero[3] = {0, 0, 0};
+  float transposed[3][3];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) transposed[r][c] = s.axes[c][r];
+  MoveRays(transposed, kZero, s.origin, b);
 }
 
 void BatchLensTracer::Trace(RayBatch& rays, bool from_film, bool transmission) const {

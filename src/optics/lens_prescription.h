@@ -151,9 +151,11 @@ struct LensPrescription {
   bool HasGradients() const;  // a gradient-index medium anywhere
   int CrystalCount() const;   // birefringent media
   bool HasTurnedCrystals() const;  // a crystal whose optic axis is not the lens's axis
-  // Whether every crystal's optic axis, as a line, is its own mirror image under x -> -x and
-  // under y -> -y (along z, x or y): what the pupil grid's quadrant symmetry needs.
-  bool CrystalsMirrorSymmetric() const;
+  // Whether the lens is its own mirror image under x -> -x (axis 0) or y -> -y (axis 1): every
+  // surface's placement (its decentre has no such component, its frame turns only about that
+  // axis or in the plane it is normal to), every crystal's optic axis as a line in lens space,
+  // and no form error. The pupil grid tabulates half the film (or a quadrant) where it holds.
+  bool MirrorSymmetric(int axis) const;
   bool Centred() const;  // no surface decentred or tilted
   // +1 where light leaves surface i toward the film (+z), -1 toward the object (after an odd
   // number of mirrors up to and including i).

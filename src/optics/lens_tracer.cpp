@@ -137,7 +137,7 @@ std::optional<double> IntersectSurface(const LensSurface& s, const Vec3d& o, con
 }
 
 SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, double lambda_nm, bool toward_film,
-                             double gradient_tolerance, std::vector<Vec3d>* curve) {
+                             double gradient_tolerance, std::vector<Vec3d>* curve, bool with_reflectance) {
   SurfaceCrossing c;
   const LensSurface& s = lens.surface(i);
   // The ray in the surface's frame (its vertex at the origin): a rigid motion, so the ray's
@@ -214,7 +214,7 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
   }
   c.eta = n1 / n2;
   if (!c.anisotropic) {
-    c.reflectance = lens.SurfaceReflectance(i, lambda_nm, c.cos_i, toward_film, n_object_side, n_film_side);
+    if (with_reflectance) c.reflectance = lens.SurfaceReflectance(i, lambda_nm, c.cos_i, toward_film, n_object_side, n_film_side);
     return c;
   }
   // Into or out of a crystal: the waves on either side as they are; the reflected and the
@@ -236,7 +236,8 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
   // Fresnel's unpolarised reflectance with each wave's own index (an approximation).
   const double k_after = Length(*k_out);
   c.eta = k_in / k_after;
-  c.reflectance = lens.SurfaceReflectance(i, lambda_nm, c.cos_i, toward_film, toward_film ? k_in : k_after,
+  if (with_reflectance)
+    c.reflectance = lens.SurfaceReflectance(i, lambda_nm, c.cos_i, toward_film, toward_film ? k_in : k_after,
                                           toward_film ? k_after : k_in);
   return c;
 }

@@ -114,9 +114,13 @@ struct SurfaceCrossing {
 // agrees with the exact one to 1e-4 mm at the film).
 inline constexpr double kGradientTolerance = 1e-10, kGradientRenderTolerance = 1e-6;
 // `curve`, if given, receives the points along the way through a gradient-index medium (the
-// crossing's point last), or the crossing's point alone.
+// crossing's point last), or the crossing's point alone. Without `with_reflectance` an
+// interface's reflectance is left 0 (a coating's thin-film stack is most of a step's cost, and
+// tracing for geometry alone, or with tabulated coatings, does not need it); a mirror's and total
+// reflection's are set all the same.
 SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, double lambda_nm, bool toward_film,
-                             double gradient_tolerance = kGradientTolerance, std::vector<Vec3d>* curve = nullptr);
+                             double gradient_tolerance = kGradientTolerance, std::vector<Vec3d>* curve = nullptr,
+                             bool with_reflectance = true);
 // The ray leaving an interface crossing in direction d (SurfaceCrossing::d) reflected, or
 // refracted (nothing beyond the critical angle), with the ray's crystal state: entering a
 // crystal (refracted into it, reflected inside it) takes the next of its wave choices.

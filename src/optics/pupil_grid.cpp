@@ -15,39 +15,57 @@ class PupilGrid::Builder {
  public:
   static constexpr int kMaxDepth = 2;  // a cell is split into 4^kMaxDepth at most
   Builder(PupilGrid& grid, const LensSystem& lens, double film_radius, double plane_z, const PupilBoundsOptions& options)
-      : g_(grid), lens_(lens), fast_(lens), lambdas_(options.wavelengths), plane_z_(plane_z) {
+      : g_(grid), lens_(lens), fast_(lens), lambdas_(options.wavelengths), plane_z_(plane_z), radius_(film_radius) {
     if (!options.rims) fast_.IgnoreRims();
     const PupilSearch search = PupilSearchFor(lens, plane_z, lambdas_.front());  // as the radial table's
     window_ = search.window, tolerance_ = search.tolerance;
     round_ = lens.stop_shape().symmetry().order == 0;
     // Centred toroids are symmetric under x -> -x and y -> -y; so is a round stop. A decentred or
-    // tilted surface is not, nor a form error, nor a crystal whose optic axis leans both ways.
-    g_.quadrant_ = round_ && lens.prescription().Centred() && !lens.prescription().HasFormErrors() &&
-                   lens.prescription().CrystalsMirrorSymmetric();
-    g_.cells_ = g_.quadrant_ ? 8 : 16;
-    g_.x0_ = g_.quadrant_ ? 0 : -film_radius;
-    g_.size_ = g_.quadrant_ ? film_radius : 2 * film_radius;
+    // tilted surface need not be, nor a form error, nor a crystal whose optic axis leans.
+    g_.mirror_x_ = round_ && lens.prescription().MirrorSymmetric(0);
+    g_.mirror_y_ = round_ && lens.prescription().MirrorSymmetric(1);
+    g_.step_ = film_radius / kCellsPerRadius;
+    g_.cells_x_ = (g_.mirror_x_ ? 1 : 2) * kCellsPerRadius, g_.cells_y_ = (g_.mirror_y_ ? 1 : 2) * kCellsPerRadius;
+    g_.x0_ = g_.mirror_x_ ? 0 : -film_radius, g_.y0_ = g_.mirror_y_ ? 0 : -film_radius;
   }
 
   void Build() {
-    const int n = g_.cells_;
-    // The corners (n + 1)^2 and the centres n^2 of the top cells, in parallel.
-    std::vector<PupilRegion> corners((n + 1) * (n + 1)), centres(n * n);
-    tbb::parallel_for(0, (n + 1) * (n + 1) + n * n, [&](int k) {
-      if (k < (n + 1) * (n + 1)) corners[k] = Trace(Film(k % (n + 1), k / (n + 1)));
-      else centres[k - (n + 1) * (n + 1)] = Trace(Film((k - (n + 1) * (n + 1)) % n + 0.5, (k - (n + 1) * (n + 1)) / n + 0.5));
+    const int nx = g_.cells_x_, ny = g_.cells_y_, corner_count = (nx + 1) * (ny + 1);
+    // Only cells that reach into the film's circle are ever asked for (the square's corners lie
+    // outside it, and there the search for light is slowest: none gets through).
+    auto used = [&](int i, int j) {
+      if (i < 0 || j < 0 || i >= nx || j >= ny) return false;
+      const Vec2d lo = Film(i, j), hi = Film(i + 1, j + 1);
+      const double x = std::max({lo.x, -hi.x, 0.0}), y = std::max({lo.y, -hi.y, 0.0});
+      return std::hypot(x, y) <= radius_ * (1 + 1e-9);
+    };
+    // The corners and the centres of the top cells, in parallel.
+    std::vector<PupilRegion> corners(corner_count), centres(nx * ny);
+    tbb::parallel_for(0, corner_count + nx * ny, [&](int k) {
+      if (k < corner_count) {
+        const int i = k % (nx + 1), j = k / (nx + 1);
+        if (used(i - 1, j - 1) || used(i, j - 1) || used(i - 1, j) || used(i, j)) corners[k] = Trace(Film(i, j));
+      } else {
+        const int i = (k - corner_count) % nx, j = (k - corner_count) / nx;
+        if (used(i, j)) centres[k - corner_count] = Trace(Film(i + 0.5, j + 0.5));
+      }
     });
     struct CellOut {
       std::vector<SampledPolygon> regions;
       std::vector<uint32_t> leaves;
       int levels = 0;
     };
-    std::vector<CellOut> out(n * n);
-    tbb::parallel_for(0, n * n, [&](int c) {
-      const int i = c % n, j = c / n;
-      const PupilRegion* corner[4] = {&corners[j * (n + 1) + i], &corners[j * (n + 1) + i + 1],
-                                      &corners[(j + 1) * (n + 1) + i], &corners[(j + 1) * (n + 1) + i + 1]};
+    std::vector<CellOut> out(nx * ny);
+    tbb::parallel_for(0, nx * ny, [&](int c) {
+      const int i = c % nx, j = c / nx;
+      const PupilRegion* corner[4] = {&corners[j * (nx + 1) + i], &corners[j * (nx + 1) + i + 1],
+                                      &corners[(j + 1) * (nx + 1) + i], &corners[(j + 1) * (nx + 1) + i + 1]};
       CellOut& o = out[c];
+      if (!used(i, j)) {
+        o.regions.emplace_back();
+        o.leaves = {0};
+        return;
+      }
       // Sub-cells fill a block of side x side leaves (kMaxDepth levels); flattened below.
       constexpr int side = 1 << kMaxDepth;
       std::vector<int32_t> block(side * side, -1);
@@ -98,10 +116,7 @@ class PupilGrid::Builder {
 
  private:
   // The film point at (i, j) in cell units.
-  Vec2d Film(double i, double j) const {
-    const double step = g_.size_ / g_.cells_;
-    return {g_.x0_ + i * step, g_.x0_ + j * step};
-  }
+  Vec2d Film(double i, double j) const { return {g_.x0_ + i * g_.step_, g_.y0_ + j * g_.step_}; }
   PupilRegion Trace(Vec2d film) const {
     PupilRegionProbe probe{fast_, lens_, lens_.FilmZ(), plane_z_, window_, tolerance_, !round_};
     return TracePupilRegionAt(probe, film, lambdas_);
@@ -122,7 +137,7 @@ class PupilGrid::Builder {
   const LensSystem& lens_;
   BatchLensTracer fast_;
   const std::vector<double>& lambdas_;
-  double plane_z_, window_ = 0, tolerance_ = 0;
+  double plane_z_, radius_, window_ = 0, tolerance_ = 0;
   bool round_ = true;
 };
 
@@ -132,15 +147,13 @@ PupilGrid::PupilGrid(const LensSystem& lens, double film_radius, double plane_z,
 
 PupilGrid::Found PupilGrid::RegionAt(Vec2d film) const {
   Found f{nullptr, Vec2d(1, 1)};
-  if (quadrant_) {
-    if (film.x < 0) film.x = -film.x, f.mirror.x = -1;
-    if (film.y < 0) film.y = -film.y, f.mirror.y = -1;
-  }
-  const double u = (film.x - x0_) / size_ * cells_, v = (film.y - x0_) / size_ * cells_;
+  if (mirror_x_ && film.x < 0) film.x = -film.x, f.mirror.x = -1;
+  if (mirror_y_ && film.y < 0) film.y = -film.y, f.mirror.y = -1;
+  const double u = (film.x - x0_) / step_, v = (film.y - y0_) / step_;
   // The table's far edge belongs to its last cell.
-  if (!(u >= 0 && v >= 0 && u <= cells_ * (1 + 1e-12) && v <= cells_ * (1 + 1e-12))) return f;
-  const int i = std::min(int(u), cells_ - 1), j = std::min(int(v), cells_ - 1);
-  const int cell = j * cells_ + i, levels = levels_[cell], side = 1 << levels;
+  if (!(u >= 0 && v >= 0 && u <= cells_x_ * (1 + 1e-12) && v <= cells_y_ * (1 + 1e-12))) return f;
+  const int i = std::min(int(u), cells_x_ - 1), j = std::min(int(v), cells_y_ - 1);
+  const int cell = j * cells_x_ + i, levels = levels_[cell], side = 1 << levels;
   const int si = std::min(int((u - i) * side), side - 1), sj = std::min(int((v - j) * side), side - 1);
   const SampledPolygon& r = regions_[leaves_[first_[cell] + sj * side + si]];
   if (!r.Empty()) f.region = &r;

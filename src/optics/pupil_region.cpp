@@ -4,37 +4,59 @@
 #include <cmath>
 #include <optional>
 
+#include "optics/dispersion.h"
 #include "optics/lens_tracer.h"
 
 namespace objektiv {
 
 namespace {
 
-// Probing the region of the sampling plane through which light from one film point at one
-// wavelength leaves the lens.
+// What a probe's ray carries: its wavelength and the waves it takes in the lens's birefringent
+// crystals (LensRay::wave_choices).
+struct ProbeLight {
+  double lambda;
+  uint32_t waves;
+};
+
+// Probing the region of the sampling plane through which light from one film point leaves the
+// lens: light of any of several kinds (wavelengths, crystal waves), a point passing where any
+// of them gets through. Each kind's region holding the probe's centre, the points along a
+// line from the centre that pass are those before the farthest of their edges: the bisection
+// finds that edge, and their hull is the hull of all.
 class RegionProbe {
  public:
-  // `wave_choices`: the waves the rays take in the lens's birefringent crystals (LensRay).
   RegionProbe(const BatchLensTracer& fast, const LensSystem& exact, Vec2d film, double film_z, double plane_z,
-              double lambda_nm, uint32_t wave_choices)
-      : fast_(fast), exact_(exact), film_(film), film_z_(film_z), plane_z_(plane_z), lambda_(lambda_nm),
-        wave_choices_(wave_choices) {}
+              std::vector<ProbeLight> lights)
+      : fast_(fast), exact_(exact), film_(film), film_z_(film_z), plane_z_(plane_z), lights_(std::move(lights)) {}
 
-  // Whether the rays aimed at each point get through.
+  // Whether the rays aimed at each point get through (in any light: each further one is traced
+  // only for the points that the ones before did not pass).
   std::vector<uint8_t> Passes(const std::vector<Vec2d>& points) const {
-    batch_.Resize(points.size());
-    for (size_t n = 0; n < points.size(); ++n) {
-      Vec3d d = Normalize(Vec3d(points[n].x - film_.x, points[n].y - film_.y, plane_z_ - film_z_));
-      batch_.ox[n] = float(film_.x), batch_.oy[n] = float(film_.y), batch_.oz[n] = float(film_z_);
-      batch_.dx[n] = float(d.x), batch_.dy[n] = float(d.y), batch_.dz[n] = float(d.z);
-      batch_.lambda[n] = float(lambda_);
-      batch_.wave_choices[n] = wave_choices_;
+    std::vector<uint8_t> passed(points.size(), 0);
+    std::vector<size_t> pending(points.size());
+    for (size_t n = 0; n < points.size(); ++n) pending[n] = n;
+    for (const ProbeLight& light : lights_) {
+      if (pending.empty()) break;
+      batch_.Resize(pending.size());
+      for (size_t m = 0; m < pending.size(); ++m) {
+        const Vec2d q = points[pending[m]];
+        Vec3d d = Normalize(Vec3d(q.x - film_.x, q.y - film_.y, plane_z_ - film_z_));
+        batch_.ox[m] = float(film_.x), batch_.oy[m] = float(film_.y), batch_.oz[m] = float(film_z_);
+        batch_.dx[m] = float(d.x), batch_.dy[m] = float(d.y), batch_.dz[m] = float(d.z);
+        batch_.lambda[m] = float(light.lambda);
+        batch_.wave_choices[m] = light.waves;
+      }
+      fast_.TraceFromFilm(batch_, false);
+      size_t still = 0;
+      for (size_t m = 0; m < pending.size(); ++m)
+        if (batch_.alive[m]) passed[pending[m]] = 1;
+        else pending[still++] = pending[m];
+      pending.resize(still);
     }
-    fast_.TraceFromFilm(batch_, false);
-    return batch_.alive;
+    return passed;
   }
 
-  // The aim point whose ray crosses the stop's centre (the real chief ray), by the secant
+  // The aim point whose ray (in the first light) crosses the stop's centre (the real chief ray), by the secant
   // method from the axis (in the meridional plane, for a film point on +x of a rotationally
   // symmetric lens; else by Newton's method in both coordinates); nothing if the ray does not
   // reach the stop.
@@ -44,7 +66,8 @@ class RegionProbe {
     const double r = film_.x;
     auto stop_x = [&](double a) -> std::optional<double> {
       Vec3d o(r, 0, film_z_);
-      std::optional<Vec3d> hit = StopCrossingFromFilm(exact_, {o, Normalize(Vec3d(a, 0, plane_z_) - o), false, wave_choices_}, lambda_);
+      std::optional<Vec3d> hit =
+          StopCrossingFromFilm(exact_, {o, Normalize(Vec3d(a, 0, plane_z_) - o), false, lights_[0].waves}, lights_[0].lambda);
       return hit ? std::optional<double>(hit->x) : std::nullopt;
     };
     double a0 = 0, a1 = 1e-3 * (1 + std::abs(r));
@@ -63,7 +86,8 @@ class RegionProbe {
   std::optional<Vec2d> ChiefAimSkew() const {
     const Vec3d o(film_.x, film_.y, film_z_);
     auto stop_at = [&](Vec2d a) -> std::optional<Vec2d> {
-      std::optional<Vec3d> hit = StopCrossingFromFilm(exact_, {o, Normalize(Vec3d(a.x, a.y, plane_z_) - o), false, wave_choices_}, lambda_);
+      std::optional<Vec3d> hit = StopCrossingFromFilm(exact_, {o, Normalize(Vec3d(a.x, a.y, plane_z_) - o), false, lights_[0].waves},
+                                                      lights_[0].lambda);
       return hit ? std::optional<Vec2d>(Vec2d(hit->x, hit->y)) : std::nullopt;
     };
     const double h = 1e-4 * (1 + std::hypot(film_.x, film_.y));
@@ -82,10 +106,11 @@ class RegionProbe {
     return std::nullopt;
   }
 
-  // A point inside the region: the chief ray's aim if it passes, else the centroid of the
-  // passing probes of a grid over the window |x|, |y| <= half; nothing if none passes.
-  std::optional<Vec2d> Inside(double half) const {
+  // A point inside the region: the chief ray's aim if it passes, else (`search`) the centroid
+  // of the passing probes of a grid over the window |x|, |y| <= half; nothing if none passes.
+  std::optional<Vec2d> Inside(double half, bool search = true) const {
     if (std::optional<Vec2d> c = ChiefAim(); c && Passes({*c})[0]) return c;
+    if (!search) return std::nullopt;
     const int g = 32;
     std::vector<Vec2d> grid;
     for (int i = 0; i < g; ++i)
@@ -119,10 +144,27 @@ class RegionProbe {
 
   // Distance from c to the region's edge along each direction, at most `limit`, to a relative
   // precision of 1e-4 (bisection, all directions in one batch per step; tiny regions, such as
-  // a pinhole's, take a few more steps).
-  std::vector<double> EdgeDistances(Vec2d c, const std::vector<Vec2d>& dirs, double limit) const {
+  // a pinhole's, take a few more steps). Where `guess` estimates the distances (from the edge
+  // points on either side), the bisection starts between 0.9 and 1.1 times the estimate, once
+  // a probe at each end confirms it (else from what those probes tell).
+  std::vector<double> EdgeDistances(Vec2d c, const std::vector<Vec2d>& dirs, double limit,
+                                    const std::vector<double>* guess = nullptr) const {
     std::vector<double> lo(dirs.size(), 0), hi(dirs.size(), limit);
     std::vector<Vec2d> pts(dirs.size());
+    if (guess) {
+      std::vector<Vec2d> ends;
+      for (size_t k = 0; k < dirs.size(); ++k)
+        for (double f : {0.9, 1.1}) ends.push_back(c + dirs[k] * std::min(f * (*guess)[k], limit));
+      const std::vector<uint8_t> ok = Passes(ends);
+      for (size_t k = 0; k < dirs.size(); ++k) {
+        const double near = std::min(0.9 * (*guess)[k], limit), far = std::min(1.1 * (*guess)[k], limit);
+        if (ok[2 * k]) lo[k] = near;
+        else hi[k] = near;
+        if (ok[2 * k + 1]) lo[k] = std::max(lo[k], far);
+        else hi[k] = std::min(hi[k], far);
+        if (lo[k] >= hi[k]) lo[k] = 0, hi[k] = limit;  // not one edge along the line: search it all
+      }
+    }
     for (int step = 0; step < 60; ++step) {
       bool done = true;
       for (size_t k = 0; k < dirs.size(); ++k) {
@@ -140,8 +182,8 @@ class RegionProbe {
   const BatchLensTracer& fast_;
   const LensSystem& exact_;
   Vec2d film_;
-  double film_z_, plane_z_, lambda_;
-  uint32_t wave_choices_;
+  double film_z_, plane_z_;
+  std::vector<ProbeLight> lights_;
   mutable RayBatch batch_;
 };
 
@@ -154,10 +196,10 @@ std::vector<Vec2d> TraceEdge(const RegionProbe& probe, Vec2d c, double limit, do
     double angle;
     Vec2d p;
   };
-  auto probe_angles = [&](const std::vector<double>& angles) {
+  auto probe_angles = [&](const std::vector<double>& angles, const std::vector<double>* guess) {
     std::vector<Vec2d> dirs;
     for (double a : angles) dirs.push_back({std::cos(a), std::sin(a)});
-    std::vector<double> t = probe.EdgeDistances(c, dirs, limit);
+    std::vector<double> t = probe.EdgeDistances(c, dirs, limit, guess);
     std::vector<EdgePoint> out;
     for (size_t k = 0; k < angles.size(); ++k) out.push_back({angles[k], c + dirs[k] * t[k]});
     return out;
@@ -165,17 +207,19 @@ std::vector<Vec2d> TraceEdge(const RegionProbe& probe, Vec2d c, double limit, do
   const int initial = 32;
   std::vector<double> angles;
   for (int k = 0; k < initial; ++k) angles.push_back(2 * M_PI * k / initial);
-  std::vector<EdgePoint> edge = probe_angles(angles);
+  std::vector<EdgePoint> edge = probe_angles(angles, nullptr);
   std::vector<uint8_t> pending(edge.size(), 1);  // gap k: between edge[k] and edge[k + 1]
   for (int level = 0; level < 6; ++level) {
-    std::vector<double> mids;
+    std::vector<double> mids, guess;  // the farther neighbour's distance: the edge's estimate between them
     for (size_t k = 0; k < edge.size(); ++k)
       if (pending[k]) {
-        double a = edge[k].angle, b = k + 1 < edge.size() ? edge[k + 1].angle : edge[0].angle + 2 * M_PI;
+        const EdgePoint& next = edge[(k + 1) % edge.size()];
+        double a = edge[k].angle, b = k + 1 < edge.size() ? next.angle : next.angle + 2 * M_PI;
         mids.push_back(0.5 * (a + b));
+        guess.push_back(std::max(std::hypot(edge[k].p.x - c.x, edge[k].p.y - c.y), std::hypot(next.p.x - c.x, next.p.y - c.y)));
       }
     if (mids.empty()) break;
-    std::vector<EdgePoint> found = probe_angles(mids);
+    std::vector<EdgePoint> found = probe_angles(mids, &guess);
     std::vector<EdgePoint> merged;
     std::vector<uint8_t> next;
     size_t m = 0;
@@ -219,23 +263,48 @@ PupilRegion TracePupilRegion(const PupilRegionProbe& probe, double r, const std:
 
 PupilRegion TracePupilRegionAt(const PupilRegionProbe& probe, Vec2d film, const std::vector<double>& lambdas,
                                double turn) {
-  const double c = std::cos(turn), s = std::sin(turn);
+  // Light of every wavelength and, through birefringent crystals, of every combination of their
+  // two waves (each crystal is entered once on the way from the film), the first wavelength
+  // nearest the middle of the spectrum (the chief ray's, which finds the centre).
+  std::vector<ProbeLight> lights;
+  const uint32_t combinations = 1u << probe.exact.prescription().CrystalCount();
+  std::vector<double> order = lambdas;
+  std::stable_sort(order.begin(), order.end(), [](double a, double b) { return std::abs(a - kLambdad) < std::abs(b - kLambdad); });
+  for (double lambda : order)
+    for (uint32_t waves = 0; waves < combinations; ++waves) lights.push_back({lambda, waves});
   std::vector<Vec2d> points;
   double size = 0;
-  // Through birefringent crystals, the region of every combination of their two waves (each
-  // crystal is entered once on the way from the film).
-  const uint32_t combinations = 1u << probe.exact.prescription().CrystalCount();
-  for (double lambda : lambdas)
-    for (uint32_t waves = 0; waves < combinations; ++waves) {
-      RegionProbe rays(probe.fast, probe.exact, film, probe.film_z, probe.plane_z, lambda, waves);
-      std::optional<Vec2d> centre = rays.Inside(probe.window);
-      if (!centre) continue;
-      if (probe.recentre) centre = rays.Centred(*centre, 2 * probe.window);
-      for (const Vec2d& q : TraceEdge(rays, *centre, 2 * probe.window, probe.tolerance)) {
-        size = std::max(size, std::hypot(q.x - centre->x, q.y - centre->y));
-        points.push_back(turn == 0 ? q : Vec2d(c * q.x - s * q.y, s * q.x + c * q.y));
-      }
+  auto trace = [&](const RegionProbe& rays, Vec2d centre) {
+    for (const Vec2d& q : TraceEdge(rays, centre, 2 * probe.window, probe.tolerance)) {
+      size = std::max(size, std::hypot(q.x - centre.x, q.y - centre.y));
+      points.push_back(q);
     }
+  };
+  // All lights at once, from a centre inside each one's region; else each from its own.
+  const RegionProbe all(probe.fast, probe.exact, film, probe.film_z, probe.plane_z, lights);
+  std::optional<Vec2d> centre = all.Inside(probe.window);
+  if (centre && probe.recentre) centre = all.Centred(*centre, 2 * probe.window);
+  bool shared = centre.has_value();
+  for (size_t k = 0; shared && k < lights.size() && lights.size() > 1; ++k)
+    shared = RegionProbe(probe.fast, probe.exact, film, probe.film_z, probe.plane_z, {lights[k]}).Passes({*centre})[0];
+  if (shared) {
+    trace(all, *centre);
+  } else {
+    // Where no light passed the grid (outside the image circle), only the chief rays of the
+    // other lights may find a region smaller than its spacing.
+    const bool search = centre.has_value();
+    for (const ProbeLight& light : lights) {
+      const RegionProbe rays(probe.fast, probe.exact, film, probe.film_z, probe.plane_z, {light});
+      std::optional<Vec2d> own = rays.Inside(probe.window, search);
+      if (!own) continue;
+      if (probe.recentre) own = rays.Centred(*own, 2 * probe.window);
+      trace(rays, *own);
+    }
+  }
+  if (turn != 0) {
+    const double c = std::cos(turn), s = std::sin(turn);
+    for (Vec2d& q : points) q = Vec2d(c * q.x - s * q.y, s * q.x + c * q.y);
+  }
   PupilRegion region;
   region.hull = ConvexHull(std::move(points));
   region.grow = 2e-3 * size;
