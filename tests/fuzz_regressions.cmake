@@ -56,3 +56,8 @@ fuzz_test(bmp_claims_13107208x8 1 "12-bmp-claims-13107208x8.bmp: cannot read ima
 # claim is now checked before the file is opened.
 fuzz_test(bmp_rle_claims_50000x50000 1 "13-bmp-rle8-50000x50000.bmp: the image is 50000x50000, more than the limit of 268435456 pixels"
   render ${FUZZ}/06-texture-scene.xml -D texfile=13-bmp-rle8-50000x50000.bmp -o ${FUZZ_OUT}/13.exr)
+# An EXR of 1205 bytes claiming 16777220x2 pixels (within the pixel and byte limits):
+# OpenImageIO's reader decodes 256 rows at a time into a buffer of its own and asked for
+# 51 GB (found by fuzz_image in CI). Rows that wide are refused before reading.
+fuzz_test(exr_rows_too_wide 1 "14-exr-2x16777220.exr: the image's rows are too wide to read"
+  render ${FUZZ}/06-texture-scene.xml -D texfile=14-exr-2x16777220.exr -o ${FUZZ_OUT}/14.exr)

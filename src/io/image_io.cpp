@@ -124,6 +124,15 @@ RawImage ReadRaw(const std::string& path) {
   if (bytes > kMaxImageBytes)
     throw MakeInputError(path, 0, "the {}x{} image with {} channels needs {} MiB as floats, more than the limit of {} MiB",
                          spec.width, spec.height, spec.nchannels, bytes >> 20, kMaxImageBytes >> 20);
+  // OpenImageIO's readers decode up to 256 rows at once (a tiled file: whole rows of tiles)
+  // into a buffer of their own, however few rows the image has: a 2-row EXR 16.8 million
+  // pixels wide asked for 51 GB (found by fuzz_image).
+  const int64_t rows_at_once = std::max<int64_t>(256, spec.tile_width > 0 ? spec.tile_height : 0);
+  const int64_t chunk = int64_t(spec.width) * spec.nchannels * int64_t(sizeof(float)) * rows_at_once;
+  if (chunk > kMaxImageBytes)
+    throw MakeInputError(path, 0, "the image's rows are too wide to read: {} pixels with {} channels, {} MiB for the {} rows "
+                         "its reader decodes at once, more than the limit of {} MiB",
+                         spec.width, spec.nchannels, chunk >> 20, rows_at_once, kMaxImageBytes >> 20);
   RawImage r;
   r.integer_format = !spec.format.is_floating_point();
   r.image.width = spec.width;

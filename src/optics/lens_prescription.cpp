@@ -267,15 +267,17 @@ bool LensPrescription::HasTurnedCrystals() const {
 
 bool LensPrescription::MirrorSymmetric(int axis) const {
   // A direction is its own mirror image, as a line, where its component along the axis is 0
-  // or it lies along the axis (the surfaces themselves are symmetric about both: a frame's axes
-  // may swap); a decentre must have no component along it.
+  // or it lies along the axis (the surfaces themselves are symmetric about their own x and y:
+  // those may swap); a decentre must have no component along it.
   auto own_image = [axis](const Vec3d& v) {
     const double along = axis == 0 ? v.x : v.y, across = std::sqrt(Dot(v, v) - along * along);
     return std::abs(along) <= 1e-12 * across || across <= 1e-12 * std::abs(along);
   };
   return !HasFormErrors() && std::all_of(surfaces.begin(), surfaces.end(), [&](const LensSurface& s) {
     const SurfacePlacement* p = s.placement ? &*s.placement : nullptr;
-    if (p && !(std::abs(axis == 0 ? p->offset.x : p->offset.y) <= 1e-12 && own_image(p->ex) && own_image(p->ey) && own_image(p->ez))) return false;
+    // The surface's own axis must not lean along the mirror's (a surface turned side-on).
+    if (p && !(std::abs(axis == 0 ? p->offset.x : p->offset.y) <= 1e-12 && own_image(p->ex) && own_image(p->ey) &&
+               std::abs(axis == 0 ? p->ez.x : p->ez.y) <= 1e-12)) return false;
     return !s.crystal || own_image(p ? p->FromLocal(s.crystal->axis) : s.crystal->axis);
   });
 }

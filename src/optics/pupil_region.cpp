@@ -143,7 +143,7 @@ class RegionProbe {
   }
 
   // Distance from c to the region's edge along each direction, at most `limit`, to a relative
-  // precision of 1e-4 (bisection, all directions in one batch per step; tiny regions, such as
+  // precision of 4e-4 (bisection, all directions in one batch per step; tiny regions, such as
   // a pinhole's, take a few more steps). Where `guess` estimates the distances (from the edge
   // points on either side), the bisection starts between 0.9 and 1.1 times the estimate, once
   // a probe at each end confirms it (else from what those probes tell).
@@ -169,7 +169,7 @@ class RegionProbe {
       bool done = true;
       for (size_t k = 0; k < dirs.size(); ++k) {
         pts[k] = c + dirs[k] * (0.5 * (lo[k] + hi[k]));
-        done &= hi[k] - lo[k] <= 1e-4 * hi[k];
+        done &= hi[k] - lo[k] <= 4e-4 * hi[k];
       }
       if (done) break;
       std::vector<uint8_t> ok = Passes(pts);
@@ -280,7 +280,10 @@ PupilRegion TracePupilRegionAt(const PupilRegionProbe& probe, Vec2d film, const 
       points.push_back(q);
     }
   };
-  // All lights at once, from a centre inside each one's region; else each from its own.
+  // All lights at once, from a centre inside each one's region; else each from its own. (The
+  // edge refined is then their union's, which finds each light's corners and tips as its own
+  // would where the regions have nearly one shape, shifted a little by dispersion or a
+  // crystal's walk-off: a tip of one light far narrower than the others' could be missed.)
   const RegionProbe all(probe.fast, probe.exact, film, probe.film_z, probe.plane_z, lights);
   std::optional<Vec2d> centre = all.Inside(probe.window);
   if (centre && probe.recentre) centre = all.Centred(*centre, 2 * probe.window);
