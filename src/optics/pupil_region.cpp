@@ -56,10 +56,10 @@ class RegionProbe {
     return passed;
   }
 
-  // The aim point whose ray (in the first light) crosses the stop's centre (the real chief ray), by the secant
-  // method from the axis (in the meridional plane, for a film point on +x of a rotationally
-  // symmetric lens; else by Newton's method in both coordinates); nothing if the ray does not
-  // reach the stop.
+  // The aim point whose ray (in the first light) crosses the stop's centre (the real chief
+  // ray), by the secant method from the axis (in the meridional plane, for a film point on +x
+  // of a rotationally symmetric lens; else by Newton's method in both coordinates); nothing if
+  // the ray does not reach the stop.
   std::optional<Vec2d> ChiefAim() const {
     if (film_.y != 0 || !exact_.prescription().RotationallySymmetric() || (exact_.hood() && exact_.hood()->radius == 0))
       return ChiefAimSkew();
