@@ -477,6 +477,7 @@ void MoveRays(const float (&m)[3][3], const float (&before)[3], const float (&af
   const float b0 = before[0], b1 = before[1], b2 = before[2], a0 = after[0], a1 = after[1], a2 = after[2];
   float *__restrict ox = b.ox.data(), *__restrict oy = b.oy.data(), *__restrict oz = b.oz.data();
   float *__restrict dx = b.dx.data(), *__restrict dy = b.dy.data(), *__restrict dz = b.dz.data();
+#pragma omp simd
   for (size_t j = 0; j < n; ++j) {
     const float x = ox[j] - b0, y = oy[j] - b1, z = oz[j] - b2;
     ox[j] = a0 + m00 * x + m01 * y + m02 * z;
