@@ -56,6 +56,20 @@ class RegionProbe {
     return passed;
   }
 
+  // Whether the ray aimed at c gets through in every light (one batch, a ray per light).
+  bool PassesInEveryLight(Vec2d c) const {
+    const Vec3d d = Normalize(Vec3d(c.x - film_.x, c.y - film_.y, plane_z_ - film_z_));
+    batch_.Resize(lights_.size());
+    for (size_t m = 0; m < lights_.size(); ++m) {
+      batch_.ox[m] = float(film_.x), batch_.oy[m] = float(film_.y), batch_.oz[m] = float(film_z_);
+      batch_.dx[m] = float(d.x), batch_.dy[m] = float(d.y), batch_.dz[m] = float(d.z);
+      batch_.lambda[m] = float(lights_[m].lambda);
+      batch_.wave_choices[m] = lights_[m].waves;
+    }
+    fast_.TraceFromFilm(batch_, false);
+    return std::all_of(batch_.alive.begin(), batch_.alive.end(), [](uint8_t a) { return a != 0; });
+  }
+
   // The aim point whose ray (in the first light) crosses the stop's centre (the real chief
   // ray), by the secant method from the axis (in the meridional plane, for a film point on +x
   // of a rotationally symmetric lens; else by Newton's method in both coordinates); nothing if
@@ -287,10 +301,7 @@ PupilRegion TracePupilRegionAt(const PupilRegionProbe& probe, Vec2d film, const 
   const RegionProbe all(probe.fast, probe.exact, film, probe.film_z, probe.plane_z, lights);
   std::optional<Vec2d> centre = all.Inside(probe.window);
   if (centre && probe.recentre) centre = all.Centred(*centre, 2 * probe.window);
-  bool shared = centre.has_value();
-  for (size_t k = 0; shared && k < lights.size() && lights.size() > 1; ++k)
-    shared = RegionProbe(probe.fast, probe.exact, film, probe.film_z, probe.plane_z, {lights[k]}).Passes({*centre})[0];
-  if (shared) {
+  if (centre && (lights.size() == 1 || all.PassesInEveryLight(*centre))) {
     trace(all, *centre);
   } else {
     // Where no light passed the grid (outside the image circle), only the chief rays of the
