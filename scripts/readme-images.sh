@@ -19,7 +19,8 @@
 # a hood that fits the wide-angle and one too long (docs/images/lens-hood.png), `readme-images.sh
 # calcite` the Tessar without and with a calcite plate (docs/images/lens-calcite.png),
 # `readme-images.sh spectral` the hero wavelength alone against spectral MIS through the Tessar's
-# catalog glasses (docs/images/lens-spectral-mis.png).
+# catalog glasses (docs/images/lens-spectral-mis.png), `readme-images.sh viewer` the interactive
+# viewer's window (docs/images/viewer.png; needs xvfb-run).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/objektiv
@@ -167,6 +168,22 @@ spectral() {
 }
 
 # The Cornell box through the Tessar in air and behind a flat port under water.
+viewer() {
+  # The window under Xvfb, scripted: the double Gauss stopped to f/2.8 with six blades, focused
+  # on the tall box by its pixel, the camera orbited, 64 samples per pixel.
+  cat > "$tmp/viewer.txt" << END
+set fnumber 2.8
+set blades 6
+focus 200 300
+orbit -14 4
+samples 64
+screenshot $tmp/viewer.png
+END
+  xvfb-run -a -s "-screen 0 1280x1024x24" "$bin" view scenes/cornell-box/cornell-box-lens.xml --size 640x480 \
+    -D spp=64 --script "$tmp/viewer.txt" --quiet
+  oiiotool "$tmp/viewer.png" --cut 1040x700+0+0 -o "$out/viewer.png"
+}
+
 underwater() {
   render scenes/cornell-box/cornell-box-underwater.xml -D spp=256 -D res=400 -D lens=tessar.brendel.100mm \
     -D exposure=8.2 -o "$tmp/uw-air.exr"
@@ -175,7 +192,7 @@ underwater() {
 }
 
 case "${1:-}" in
-  flare | caustics | bump | stereo | classic | media | sampling | filter | mirror | underwater | anamorphic | tilt | asphere | dust | hood | calcite | spectral)
+  flare | caustics | bump | stereo | classic | media | sampling | filter | mirror | underwater | anamorphic | tilt | asphere | dust | hood | calcite | spectral | viewer)
     "$1"
     echo "wrote $out/$1-*.png"
     exit 0

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian packages Objektiv needs to build, test and benchmark; with
+# Installs the Debian packages Objektiv needs to build, test and benchmark (the viewer's window:
+# GLFW, Dear ImGui, Mesa's OpenGL, and Xvfb for its tests); with
 # --sanitizers also clang, its sanitizer and libFuzzer runtimes and llvm-symbolizer (for the
 # sanitizer build, the fuzz harnesses and readable reports); with --cluster Slurm and munge
 # (for the test that renders on a one-node Slurm cluster: scripts/slurm-check.sh).
@@ -12,6 +13,7 @@ packages=(
   libpugixml-dev libtinyobjloader-dev libassimp-dev
   libcli11-dev libfmt-dev libspdlog-dev nlohmann-json3-dev libfftw3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libglfw3-dev libimgui-dev libgl1-mesa-dri libglx-mesa0 xvfb xauth xdotool
 )
 [[ ${1:-} == --sanitizers ]] && packages+=(clang libclang-rt-14-dev llvm)
 [[ ${1:-} == --cluster ]] && packages+=(slurm-wlm munge)

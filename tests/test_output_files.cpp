@@ -183,12 +183,14 @@ TEST(Interrupt, StoppedRenderKeepsWholePixelsOnly) {
   EXPECT_FALSE(whole.stats.Partial());
   EXPECT_EQ(whole.stats.pixels_completed, 256u);
   for (int threads : {1, 2}) {
-    // Stopped in the middle of the 41st pixel (8 samples each): that pixel is finished.
+    // Stopped in the middle of the 41st pixel (8 samples each): the batch of camera samples
+    // it is in is finished (64 samples: pixels 41 to 48, as pixels of fewer samples than a
+    // batch holds share one), and each other thread's batch.
     const test::RenderResult part = RenderBox(8 * 40 + 3, threads);
     EXPECT_TRUE(part.stats.Partial());
     EXPECT_EQ(part.stats.pixels, 256u);
-    EXPECT_GE(part.stats.pixels_completed, 41u);
-    EXPECT_LE(part.stats.pixels_completed, 41u + threads);
+    EXPECT_GE(part.stats.pixels_completed, 48u);
+    EXPECT_LE(part.stats.pixels_completed, 48u + 8u * (threads - 1));
     EXPECT_EQ(part.stats.samples, 8 * part.stats.pixels_completed);
     // Every pixel is the whole render's (all its samples) or black (none).
     size_t same = 0;

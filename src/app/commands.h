@@ -12,5 +12,6 @@ std::function<int()> AddRenderCommand(CLI::App& app);
 std::function<int()> AddImgtoolCommand(CLI::App& app);
 std::function<int()> AddLensCommand(CLI::App& app);
 std::function<int()> AddMergeCommand(CLI::App& app);
+std::function<int()> AddViewCommand(CLI::App& app);
 
 }  // namespace objektiv

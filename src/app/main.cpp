@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   auto imgtool = AddImgtoolCommand(app);
   auto lens = AddLensCommand(app);
   auto merge = AddMergeCommand(app);
+  auto view = AddViewCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("imgtool")) return imgtool();
     if (app.got_subcommand("lens")) return lens();
     if (app.got_subcommand("merge")) return merge();
+    if (app.got_subcommand("view")) return view();
   } catch (const CLI::ValidationError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;

@@ -146,6 +146,12 @@ bool Transform::SwapsHandedness() const {
   return det < 0;
 }
 
+Vec3d Transform::Vector(const Vec3d& v) const {
+  const auto& a = m_.m;
+  return {a[0][0] * v.x + a[0][1] * v.y + a[0][2] * v.z, a[1][0] * v.x + a[1][1] * v.y + a[1][2] * v.z,
+          a[2][0] * v.x + a[2][1] * v.y + a[2][2] * v.z};
+}
+
 Vec3d Transform::Point(const Vec3d& p) const {
   const auto& a = m_.m;
   double x = a[0][0] * p.x + a[0][1] * p.y + a[0][2] * p.z + a[0][3];

@@ -42,6 +42,7 @@ class Transform {
   Vec3f Point(const Vec3f& p) const;
   Vec3d Point(const Vec3d& p) const;
   Vec3f Vector(const Vec3f& v) const;
+  Vec3d Vector(const Vec3d& v) const;
   // Normals transform with the inverse transpose.
   Vec3f Normal(const Vec3f& n) const;
 

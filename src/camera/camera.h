@@ -74,6 +74,14 @@ class Camera {
   virtual bool HasImportance() const { return false; }
   int width() const { return width_; }
   int height() const { return height_; }
+  const Transform& to_world() const { return to_world_; }
+  // The same camera moved to another place in the world (the interactive viewer's orbit and
+  // fly): its lens, focus and film stay as set up. False for a camera that cannot be moved so
+  // (a stereo rig, whose eyes' places follow from its own; build it again instead).
+  virtual bool MoveTo(const Transform& to_world) {
+    to_world_ = to_world;
+    return true;
+  }
 
  protected:
   Transform to_world_;

@@ -57,6 +57,11 @@ class LensCamera : public Camera {
   Vec2d PixelSize() const { return {settings_.sensor_width / width_, settings_.sensor_height / height_}; }
   Vec2d FilmOrigin() const { return {-settings_.sensor_width / 2 + settings_.shift.x, -settings_.sensor_height / 2 - settings_.shift.y}; }
   const LensCameraSettings& settings() const { return settings_; }
+  bool MoveTo(const Transform& to_world) override {
+    to_world_ = to_world;
+    SetOriginZ(origin_z_);  // the lens-space to world mapping, from the new place
+    return true;
+  }
 
  protected:
   // The lens-space film point (mm from the axis) for a continuous pixel position. The image

@@ -57,6 +57,7 @@ class StereoCamera final : public Camera {
   // the eye's own weight. The film point is moved into the eye's part of the film.
   std::optional<CameraImportance> SampleImportance(const Vec3f& p, Vec2f u, SampledWavelengths& lambda) const override;
   bool HasImportance() const override { return left_->HasImportance() && right_->HasImportance(); }
+  bool MoveTo(const Transform&) override { return false; }
 
   StereoLayout layout() const { return layout_; }
   const Camera& eye(int i) const { return i == 0 ? *left_ : *right_; }

@@ -13,6 +13,7 @@
 #include "optics/coating_library.h"
 #include "optics/paraxial.h"
 #include "optics/lens_file.h"
+#include "optics/undispersed_lens.h"
 
 namespace objektiv {
 
@@ -213,6 +214,12 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b
   RecoatAsAsked(p, spec.lens);
   spec.tilt = Tilt(p);
   spec.model = p.Choice("lens_model", LensModel::kReal, kLensModels);
+  if (!p.Bool("dispersion", true)) {
+    if (KeepsDispersionWithout(spec.lens))
+      spdlog::warn("{}:{}: dispersion false makes the lens's glasses constant at their d-line index; its gradient-index "
+                   "and crystal media keep their dispersion", p.LocOf("dispersion").file, p.LocOf("dispersion").line);
+    spec.lens = WithoutDispersion(spec.lens);
+  }
   if (p.Has("fnumber") && p.Has("aperture_diameter"))
     throw ErrorAt(p.LocOf("aperture_diameter"), "give either fnumber or aperture_diameter, not both");
   if (p.Has("fnumber")) spec.fnumber = p.FloatIn("fnumber", 0, 0.1, 1e4);
@@ -242,6 +249,9 @@ std::unique_ptr<Camera> BuildLensCamera(const Properties& p, const SensorBase& b
     if (p.Has("coating"))
       spdlog::warn("{}:{}: coating does nothing with lens_model '{}', which has no glass surfaces",
                    p.LocOf("coating").file, p.LocOf("coating").line, model);
+    if (p.Has("dispersion"))
+      spdlog::warn("{}:{}: dispersion does nothing with lens_model '{}', whose rays do not depend on the wavelength",
+                   p.LocOf("dispersion").file, p.LocOf("dispersion").line, model);
     if (p.Has("transmission"))
       spdlog::warn("{}:{}: transmission (the real lens's Fresnel and glass losses) does nothing with lens_model '{}', "
                    "which has no glass",
@@ -325,6 +335,7 @@ SensorRegistry::PluginType RealisticSensorPlugin() {
            {"vignetting", kVignettingModes},
            {"transmission", PropType::kBoolean},
            {"spectral_mis", PropType::kBoolean},
+           {"dispersion", PropType::kBoolean},
            {"coating", PropType::kString},
            {"aperture_mask", PropType::kString},
            {"hood_length", PropType::kFloat},

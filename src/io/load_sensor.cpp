@@ -156,4 +156,13 @@ void BuildSensor(const ObjectNode& node, LoaderContext& ctx, RenderSetup& setup)
   }
 }
 
+std::unique_ptr<Camera> BuildCamera(const ObjectNode& node, int width, int height, const GlassCatalog& glasses) {
+  const SensorRegistry& registry = SensorPlugins();
+  const SensorRegistry::PluginType& plugin = registry.Find(node);
+  Properties p = registry.Open(node, plugin);
+  SensorBase base{p.GetTransform("to_world"), width, height, float(p.FloatIn("far_clip", 1e4, 1e-30, 1e30)), &glasses};
+  CheckWithinSceneLimit(base.to_world.Point(Vec3f(0.f)), p.LocOf("to_world"), "the sensor");
+  return plugin.make(p, base);
+}
+
 }  // namespace objektiv

@@ -88,7 +88,9 @@ void CheckSppmCamera(const RenderSetup& setup, const ObjectNode* integrator) {
                   "'ptracer', or a lens of constant indices", real->lens().prescription().name);
 }
 
-RenderSetup Build(const SceneDocument& doc, const GlassCatalog& glasses) {
+}  // namespace
+
+RenderSetup BuildScene(const SceneDocument& doc, const GlassCatalog& glasses) {
   RenderSetup setup;
   setup.scene = std::make_unique<Scene>();
   LoaderContext ctx{*setup.scene, glasses};
@@ -140,16 +142,14 @@ RenderSetup Build(const SceneDocument& doc, const GlassCatalog& glasses) {
   return setup;
 }
 
-}  // namespace
-
 RenderSetup LoadScene(const std::string& path, const std::map<std::string, std::string>& defines,
                       const GlassCatalog& glasses) {
-  return Build(ParseSceneFile(path, defines), glasses);
+  return BuildScene(ParseSceneFile(path, defines), glasses);
 }
 
 RenderSetup LoadSceneFromString(const std::string& xml, const std::string& name,
                                 const std::map<std::string, std::string>& defines, const GlassCatalog& glasses) {
-  return Build(ParseSceneString(xml, name, defines), glasses);
+  return BuildScene(ParseSceneString(xml, name, defines), glasses);
 }
 
 }  // namespace objektiv

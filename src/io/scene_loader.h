@@ -57,6 +57,15 @@ RenderSetup LoadSceneFromString(const std::string& xml, const std::string& name,
                                 const std::map<std::string, std::string>& defines,
                                 const GlassCatalog& glasses = GlassCatalog::Default());
 
+// What LoadScene does after parsing: the set-up of a parsed scene (the interactive viewer keeps
+// the document, to build the camera again with its sensor's properties changed).
+RenderSetup BuildScene(const SceneDocument& doc, const GlassCatalog& glasses = GlassCatalog::Default());
+// The camera of a <sensor> node (the scene's, or a copy with some properties changed), built
+// again at width x height pixels: its film, sampler and medium are not read (BuildScene did).
+// Throws InputError naming the property at fault.
+std::unique_ptr<Camera> BuildCamera(const ObjectNode& sensor, int width, int height,
+                                    const GlassCatalog& glasses = GlassCatalog::Default());
+
 std::unique_ptr<Sampler> MakeSampler(const SamplerSettings& s);
 
 // Every kind of scene object and its plugins, with the properties each reads: what

@@ -28,6 +28,7 @@ std::string Escape(const std::string& t) {
 }  // namespace
 
 void Svg::Line(Vec2d a, Vec2d b, const std::string& stroke, double width, const std::string& dash) {
+  shapes_.push_back({SvgShape::kPolyline, {a, b}, stroke, "none", width, 1, !dash.empty()});
   items_.push_back(fmt::format(R"(<line x1="{:.3f}" y1="{:.3f}" x2="{:.3f}" y2="{:.3f}" stroke="{}" stroke-width="{}"{}/>)",
                                a.x, a.y, b.x, b.y, stroke, width,
                                dash.empty() ? "" : fmt::format(R"( stroke-dasharray="{}")", dash)));
@@ -35,17 +36,20 @@ void Svg::Line(Vec2d a, Vec2d b, const std::string& stroke, double width, const 
 
 void Svg::Polyline(const std::vector<Vec2d>& pts, const std::string& stroke, double width, double opacity,
                    const std::string& dash) {
+  shapes_.push_back({SvgShape::kPolyline, pts, stroke, "none", width, opacity, !dash.empty()});
   const std::string dashes = dash.empty() ? "" : fmt::format(R"( stroke-dasharray="{}")", dash);
   items_.push_back(fmt::format(R"(<polyline points="{}" fill="none" stroke="{}" stroke-width="{}" stroke-opacity="{}"{}/>)",
                                Points(pts), stroke, width, opacity, dashes));
 }
 
 void Svg::Polygon(const std::vector<Vec2d>& pts, const std::string& fill, const std::string& stroke, double width) {
+  shapes_.push_back({SvgShape::kPolygon, pts, stroke, fill, width});
   items_.push_back(fmt::format(R"(<polygon points="{}" fill="{}" stroke="{}" stroke-width="{}"/>)", Points(pts), fill,
                                stroke, width));
 }
 
 void Svg::Circle(Vec2d c, double r, const std::string& fill, double opacity) {
+  shapes_.push_back({SvgShape::kCircle, {c}, "none", fill, 0, opacity, false, r});
   items_.push_back(fmt::format(R"(<circle cx="{:.2f}" cy="{:.2f}" r="{:.2f}" fill="{}" fill-opacity="{}"/>)", c.x, c.y, r,
                                fill, opacity));
 }
@@ -59,6 +63,7 @@ void Svg::Text(Vec2d at, const std::string& text, double size, const std::string
     const double wide = 0.56 * size * double(glyphs), room = width_ - at.x - 8;
     if (wide > room && room > 0) size = std::max(7.0, std::floor(size * room / wide * 10) / 10);
   }
+  shapes_.push_back({SvgShape::kText, {at}, "none", fill, 0, 1, false, 0, text, anchor, size});
   items_.push_back(fmt::format(R"(<text x="{:.2f}" y="{:.2f}" font-family="sans-serif" font-size="{}" text-anchor="{}" fill="{}">{}</text>)",
                                at.x, at.y, size, anchor, fill, Escape(text)));
 }

@@ -41,6 +41,15 @@ Glass Glass::Constant(double n) {
   return g;
 }
 
+Glass Glass::Undispersed() const {
+  Glass g = *this;
+  g.c_ = {};
+  g.c_[0] = ComputedNd();
+  g.kind_ = Kind::kConstant;
+  g.catalog_vd = 0;
+  return g;
+}
+
 Glass Glass::Named(std::string name, std::string catalog) const {
   Glass g = *this;
   g.name_ = std::move(name);

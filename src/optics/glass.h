@@ -23,6 +23,9 @@ class Glass {
   // formula 2).
   static Glass Sellmeier(const std::array<double, 3>& b, const std::array<double, 3>& c);
   static Glass Constant(double n);
+  // The same glass without dispersion: its index at the d line (587.56 nm) at every wavelength,
+  // its name and its transmittance kept (a lens drawn without its colour errors).
+  Glass Undispersed() const;
   // The same index model under another name (coating materials: "MgF2" in catalog "COATING").
   Glass Named(std::string name, std::string catalog) const;
 

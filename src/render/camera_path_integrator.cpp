@@ -12,7 +12,9 @@
 namespace objektiv {
 
 namespace {
-constexpr int kCameraBatch = 64;  // camera rays of one pixel made together (samples x wavelength sets)
+// Camera rays made together (samples x wavelength sets): of one pixel, or of several where
+// each takes fewer samples than a batch holds (see the pixel loop at the end).
+constexpr int kCameraBatch = 64;
 
 // The slots of one batch, a camera sample's wavelength sets side by side (slot = sample x sets
 // + set); each slot keeps its sampler state so that its path goes on where the camera ray left
@@ -20,7 +22,7 @@ constexpr int kCameraBatch = 64;  // camera rays of one pixel made together (sam
 struct CameraBatch {
   CameraBatch(const Sampler& prototype, int aov_channels)
       : samplers(kCameraBatch, prototype), filter_samples(kCameraBatch), weights(kCameraBatch),
-        lambdas(kCameraBatch), lambdas_emitted(kCameraBatch), camera_samples(kCameraBatch), rays(kCameraBatch),
+        lambdas(kCameraBatch), lambdas_emitted(kCameraBatch), camera_samples(kCameraBatch), pixels(kCameraBatch), rays(kCameraBatch),
         first_rays(kCameraBatch), first_hits(kCameraBatch), L(kCameraBatch), Le(kCameraBatch), xyz(kCameraBatch),
         xyz_emitted(kCameraBatch), aovs(size_t(kCameraBatch) * std::max(aov_channels, 0)) {}
   std::vector<Sampler> samplers;
@@ -29,6 +31,7 @@ struct CameraBatch {
   std::vector<SampledWavelengths> lambdas;
   std::vector<SampledWavelengths> lambdas_emitted;  // as they were before Li (which may drop some)
   std::vector<CameraSample> camera_samples;
+  std::vector<Vec2i> pixels;  // per sample (not slot): the pixel it belongs to
   std::vector<std::optional<CameraRay>> rays;
   std::vector<const Ray*> first_rays;
   std::vector<std::optional<SurfaceInteraction>> first_hits;
@@ -90,10 +93,11 @@ void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
     const Vec2f lens = lens_sample ? sj.Get2D() : Vec2f(0.5f, 0.5f);
     // Through a dispersive lens every wavelength of the sample is weighed with the filter below.
     b.camera_samples[j] = {Vec2f(pixel.x + 0.5f + offset.x, pixel.y + 0.5f + offset.y), lens, pixel, true};
+    b.pixels[j / sets] = pixel;
   };
   // Traces the batch's n samples (started, n x sets slots) and estimates each: b.xyz,
   // b.xyz_emitted, b.aovs.
-  auto trace = [&](Vec2i pixel, int n) {
+  auto trace = [&](int n) {
     const int slots = n * sets;
     camera.GenerateRays(std::span(b.camera_samples.data(), slots), std::span(b.lambdas.data(), slots),
                         std::span(b.rays.data(), slots), ctx.camera_rays());
@@ -125,7 +129,7 @@ void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
       const int k = j / sets;
       if (aov_channels > 0 && cr && j % sets == 0)
         EvaluateAovs(cr->ray, b.first_hits[j], b.lambdas[j],
-                     Hash(pixel.x, pixel.y, b.samplers[j].index(), 0xa0), &b.aovs[size_t(k) * aov_channels]);
+                     Hash(b.pixels[k].x, b.pixels[k].y, b.samplers[j].index(), 0xa0), &b.aovs[size_t(k) * aov_channels]);
       if (cr) b.L[j] = cr->weight * Li(cr->ray, b.first_hits[j], b.lambdas[j], b.samplers[j], ctx);
       if (j % sets == 0) TraceLightPaths(b.samplers[j], ctx);
     }
@@ -190,7 +194,7 @@ void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
                           std::min(float(id / side) / cells, kOneMinusEpsilon));
             for (int set = 0; set < sets; ++set) start(k * sets + set, set, pixel, id, &u, &u_lambda);
           }
-          trace(pixel, n);
+          trace(n);
           for (int k = 0; k < n; ++k) {
             const size_t j0 = size_t(k) * sets;
             LatticeSample ls{b.xyz[k], b.xyz_emitted[k], b.weights[j0], b.rays[j0].has_value(),
@@ -228,17 +232,32 @@ void CameraPathIntegrator::RenderBlock(BlockContext& ctx) const {
     return;
   }
 
+  // Pixels that take fewer samples than a batch holds (a pass of one sample per pixel, a
+  // preview) share batches: a lens traces a batch's rays side by side, and one ray alone
+  // leaves most of its lanes idle (a preview through the double Gauss ran 3x slower so). The
+  // samples are the same, their estimates written once their batch is traced: after their
+  // pixel is counted (ForEachPixel), but within the block (the last batch after the loop,
+  // also when the render stops), so the film still holds whole pixels. Statistical adaptive
+  // sampling looks at a pixel's estimates between its batches: its pixels keep their own.
+  const bool share = ctx.sampler().adaptive().mode == AdaptiveMode::kNone;
+  int pending = 0;
+  auto flush = [&] {
+    if (pending == 0) return;
+    trace(pending);
+    for (int k = 0; k < pending; ++k)
+      write(b.pixels[k], b.xyz[k], b.xyz_emitted[k], b.rays[size_t(k) * sets].has_value(),
+            b.aovs.data() + size_t(k) * aov_channels, b.weights[size_t(k) * sets]);
+    pending = 0;
+  };
   ctx.ForEachPixel([&](Vec2i pixel, SampleRange samples) {
-    for (int s0 = samples.begin; s0 < samples.end; s0 += batch_samples) {
-      const int n = std::min(batch_samples, samples.end - s0);
-      for (int k = 0; k < n; ++k)
-        for (int set = 0; set < sets; ++set) start(k * sets + set, set, pixel, s0 + k, nullptr, nullptr);
-      trace(pixel, n);
-      for (int k = 0; k < n; ++k)
-        write(pixel, b.xyz[k], b.xyz_emitted[k], b.rays[size_t(k) * sets].has_value(),
-              b.aovs.data() + size_t(k) * aov_channels, b.weights[size_t(k) * sets]);
+    for (int s = samples.begin; s < samples.end; ++s) {
+      if (pending == batch_samples) flush();
+      for (int set = 0; set < sets; ++set) start(pending * sets + set, set, pixel, s, nullptr, nullptr);
+      ++pending;
     }
+    if (!share) flush();
   });
+  flush();
 }
 
 }  // namespace objektiv

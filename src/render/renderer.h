@@ -44,8 +44,9 @@ struct RenderOptions {
   bool progress = false;
   Progress* progress_bar = nullptr;  // updated with the pixel samples taken, if given (else one of its own)
   int tile_size = 16;
-  // When this turns true, no pixel is started any more: each thread finishes the pixel it is on
-  // (all its samples); the pixels not started keep what they had.
+  // When this turns true, no pixel is started any more: each thread finishes the pixels it is
+  // on (all their samples: a pixel, or the few whose samples share a batch of camera rays);
+  // the pixels not started keep what they had.
   const std::atomic<bool>* stop = nullptr;
 };
 

@@ -1,0 +1,390 @@
+#include "app/view/view_session.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <spdlog/spdlog.h>
+
+#include "app/render_finish.h"
+#include "base/error.h"
+#include "base/input_files.h"
+#include "camera/realistic_camera.h"
+#include "io/tonemap.h"
+#include "render/integrator.h"
+#include "render/renderer.h"
+#include "app/view/scene_with_camera.h"
+
+namespace objektiv {
+
+namespace {
+
+constexpr int kPreviewDivisors[] = {1, 2, 3, 4, 6, 8, 12};
+// A pass of the integrator takes about this long (so that a change is answered soon).
+constexpr double kPassSeconds = 0.25;
+// The lens's layers are composed again once this many times their last composition's time
+// has passed (so that they take at most about a fifth of the time).
+constexpr double kLayerSpacing = 4;
+
+double Seconds(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+uint8_t Quantise(float v) { return uint8_t(std::clamp(v, 0.f, 1.f) * 255.f + 0.5f); }
+
+std::shared_ptr<const ObjectNode> SensorNode(const SceneDocument& doc) {
+  for (const auto& child : doc.root->children)
+    if (child->tag == "sensor") return child;
+  throw ErrorAt(doc.root->loc, "the scene has no <sensor>");  // (BuildScene says so first)
+}
+
+// The to_world a transform property holds (identity where none).
+Transform ToWorldOf(const SensorOverrides& s) {
+  if (const Property* p = s.Find("to_world"))
+    if (const Transform* t = std::get_if<Transform>(&p->data)) return *t;
+  return Transform();
+}
+
+}  // namespace
+
+const char* ViewLayerName(ViewLayer layer) {
+  switch (layer) {
+    case ViewLayer::kSum: return "picture";
+    case ViewLayer::kPrimary: return "primary";
+    case ViewLayer::kGhosts: return "ghosts";
+    case ViewLayer::kDiffraction: return "diffraction";
+  }
+  return "?";
+}
+
+ViewSession::ViewSession(const std::string& scene_path, const ViewOptions& options)
+    : scene_path_(scene_path), options_(options) {
+  Load();
+  // Orbit about what the middle of the image shows (else 1 scene unit ahead, or the focus).
+  double orbit = 1;
+  if (std::optional<Vec3f> p = PointAt(0.5 * full_width_, 0.5 * full_height_))
+    orbit = Length(Vec3d(*p) - ToWorldOf(sensor_).Point(Vec3d(0, 0, 0)));
+  pose_ = CameraPose::FromToWorld(ToWorldOf(sensor_), orbit);
+}
+
+ViewSession::~ViewSession() = default;
+
+void ViewSession::Load() {
+  SceneDocument doc = ParseSceneFile(scene_path_, options_.defines);
+  RenderSetup setup = BuildScene(doc, GlassCatalog::Default());
+  SensorOverrides sensor = sensor_;
+  if (doc_.root == nullptr) sensor = SensorOverrides(SensorNode(doc));
+  else sensor.Rebase(SensorNode(doc));
+  FilmSettings& film = setup.film;
+  if (!(film.crop == CropWindow{0, 0, film.width, film.height}) && doc_.root == nullptr)
+    spdlog::warn("{}:{}: the viewer shows the whole film: its crop window is left out", film.loc.file, film.loc.line);
+  if (options_.width > 0) film.width = options_.width;
+  if (options_.height > 0) film.height = options_.height;
+  film.crop = CropWindow{0, 0, film.width, film.height};
+  // The camera as the scene has it, unless the viewer changed it or the film's size.
+  if (!sensor.set().empty() || setup.camera->width() != film.width || setup.camera->height() != film.height)
+    setup.camera = MakeCamera(sensor.Node(), film.width, film.height);
+  if (setup.camera->width() != film.width || setup.camera->height() != film.height)
+    throw ErrorAt(sensor.scene_sensor().loc, "the viewer shows one camera's image: a '{}' sensor makes a film of "
+                  "several images, which it does not show", sensor.type());
+  const bool first = doc_.root == nullptr;
+  doc_ = std::move(doc);
+  setup_ = std::move(setup);
+  scene_exposure_ = setup_.film.exposure;
+  if (first) exposure_ = scene_exposure_;
+  setup_.film.exposure = float(exposure_);
+  sensor_ = std::move(sensor);
+  full_width_ = setup_.film.width, full_height_ = setup_.film.height;
+  SamplerSettings s = setup_.sampler;
+  if (options_.max_spp > 0) s.spp = options_.max_spp;
+  setup_.sampler = s;
+  sampler_ = MakeSampler(s);
+  // Passes over the whole image: an integrator whose iterations span it (sppm) is shown by
+  // the path tracer.
+  if (dynamic_cast<const WholeImageIntegrator*>(setup_.integrator.get())) {
+    spdlog::warn("{}: the viewer shows sppm's image by the path tracer (sppm's iterations cannot be shown one by one); "
+                 "objektiv render renders it", scene_path_);
+    setup_.integrator = std::make_unique<PathIntegrator>(*setup_.scene, -1, 5);
+  }
+  preview_integrator_ = std::make_unique<DirectIntegrator>(*setup_.scene, 1, 1);
+  preview_cameras_.clear();
+  watched_.clear();
+  for (const std::string& f : InputFiles()) {
+    std::error_code ec;
+    watched_[f] = std::filesystem::last_write_time(f, ec);
+  }
+  Restart();
+}
+
+std::unique_ptr<Camera> ViewSession::MakeCamera(const ObjectNode& sensor, int width, int height) const {
+  // Quiet after the scene's first load: the lens's set-up is logged once, not at every change.
+  const spdlog::level::level_enum level = spdlog::get_level();
+  if (doc_.root) spdlog::set_level(std::max(level, spdlog::level::warn));
+  try {
+    std::unique_ptr<Camera> camera = BuildCamera(sensor, width, height, GlassCatalog::Default());
+    spdlog::set_level(level);
+    return camera;
+  } catch (...) {
+    spdlog::set_level(level);
+    throw;
+  }
+}
+
+void ViewSession::Restart() {
+  film_.reset();
+  spp_done_ = 0;
+  layers_.reset();
+  still_preview_shown_ = false;
+}
+
+void ViewSession::SetPose(const CameraPose& pose, bool moving) {
+  const Transform before = ToWorldOf(sensor_);
+  // As the scene reader makes it from the saved matrix (app/view/scene_with_camera.h), so that
+  // the saved camera renders the very image.
+  const Transform to_world(pose.ToWorld().Matrix());
+  pose_ = pose;
+  moving_ = moving;
+  // A focus point moves with the camera (its distance ahead stays).
+  if (const Property* p = sensor_.Find("focus_point"))
+    if (const Vec3d* f = std::get_if<Vec3d>(&p->data))
+      sensor_.Set("focus_point", to_world.Point(before.Inverse().Point(*f)), "point");
+  sensor_.Set("to_world", to_world, "transform");
+  // The previews move; the camera of the passes is built again from the node before the next
+  // pass (moving it would round its focus differently from a render of the saved camera).
+  bool moved = true;
+  for (auto& [divisor, camera] : preview_cameras_) moved = moved && camera->MoveTo(to_world);
+  if (!moved) preview_cameras_.clear();
+  full_camera_stale_ = true;
+  Restart();
+}
+
+void ViewSession::SetMoving(bool moving) {
+  if (moving_ == moving) return;
+  moving_ = moving;
+  if (!moving) still_preview_shown_ = false;
+}
+
+void ViewSession::ChangeSensor(const std::function<void(SensorOverrides&)>& change) {
+  SensorOverrides changed = sensor_;
+  change(changed);
+  std::unique_ptr<Camera> camera = MakeCamera(changed.Node(), full_width_, full_height_);  // throws: nothing changes
+  sensor_ = std::move(changed);
+  setup_.camera = std::move(camera);
+  full_camera_stale_ = false;
+  preview_cameras_.clear();
+  Restart();
+}
+
+std::optional<Vec3f> ViewSession::PointAt(double x, double y) const {
+  // Through the middle of the lens, else (a mirror lens's obstruction) points around it.
+  const Vec2f lens_points[] = {{0.5f, 0.5f}, {0.5f, 0.8f}, {0.8f, 0.5f}, {0.5f, 0.2f}, {0.2f, 0.5f}, {0.5f, 0.95f}};
+  for (Vec2f u : lens_points) {
+    CameraSample s;
+    s.p_film = Vec2f(float(x), float(y));
+    s.p_lens = u;
+    SampledWavelengths lambda = SampledWavelengths::SampleVisible(0.5f);
+    std::optional<CameraRay> ray = setup_.camera->GenerateRay(s, lambda);
+    if (!ray) continue;
+    std::optional<SurfaceInteraction> hit = setup_.scene->Intersect(ray->ray);
+    return hit ? std::optional<Vec3f>(hit->p) : std::nullopt;
+  }
+  return std::nullopt;
+}
+
+bool ViewSession::FocusAt(double x, double y) {
+  const std::string& type = sensor_.type();
+  if (type != "realistic" && type != "thinlens") return false;
+  std::optional<Vec3f> p = PointAt(x, y);
+  if (!p) return false;
+  if (type == "realistic") {
+    SetSensorProperty("focus_point", Vec3d(*p), "point");
+    return true;
+  }
+  // The thin lens's plane in focus lies at camera-space depth focus_distance.
+  const double depth = ToWorldOf(sensor_).Inverse().Point(Vec3d(*p)).z;
+  if (!(depth > 0)) return false;
+  SetSensorProperty("focus_distance", depth, "float");
+  return true;
+}
+
+void ViewSession::SetExposure(double stops) {
+  exposure_ = stops;
+  setup_.film.exposure = float(stops);
+  if (film_ && !moving_) ShowFilm();
+}
+
+void ViewSession::SetLayer(ViewLayer layer) {
+  layer_ = layer;
+  if (film_ && !moving_) ShowFilm();
+}
+
+bool ViewSession::HasLensLayers() const {
+  const auto* real = dynamic_cast<const RealisticCamera*>(setup_.camera.get());
+  return real && real->effects().Any();
+}
+
+int ViewSession::PreviewDivisor() const {
+  if (!(preview_seconds_per_pixel_ > 0)) return 4;
+  const double target = 1 / std::max(options_.preview_fps, 1e-3);
+  for (int d : kPreviewDivisors) {
+    const double pixels = double(std::max(1, full_width_ / d)) * std::max(1, full_height_ / d);
+    if (pixels * preview_seconds_per_pixel_ <= target) return d;
+  }
+  return kPreviewDivisors[std::size(kPreviewDivisors) - 1];
+}
+
+const Camera& ViewSession::PreviewCamera(int divisor) {
+  auto it = preview_cameras_.find(divisor);
+  if (it == preview_cameras_.end()) {
+    // Each camera ray with its hero wavelength alone: spectral MIS traces every ray back
+    // through the lens at the sample's other wavelengths (about 3x the lens's work, most of a
+    // preview frame through a dispersive lens) for less colour noise than one sample shows.
+    SensorOverrides preview = sensor_;
+    if (preview.type() == "realistic") preview.SetBoolean("spectral_mis", false);
+    const int w = std::max(1, full_width_ / divisor), h = std::max(1, full_height_ / divisor);
+    it = preview_cameras_.emplace(divisor, MakeCamera(preview.Node(), w, h)).first;
+  }
+  return *it->second;
+}
+
+void ViewSession::PreviewFrame(int divisor, const std::atomic<bool>* stop) {
+  const Camera& camera = PreviewCamera(divisor);
+  const int w = camera.width(), h = camera.height();
+  Film film(w, h, CropWindow{0, 0, w, h}, setup_.film.filter);
+  Sampler sampler(SamplerKind::kIndependent, 1, setup_.sampler.seed);
+  RenderOptions ro;
+  ro.spp_begin = 0, ro.spp_end = 1;
+  ro.threads = options_.threads;
+  ro.stop = stop;
+  const RenderStats stats = Render(camera, *preview_integrator_, sampler, film, ro);
+  if (stats.seconds > 0) preview_seconds_per_pixel_ = stats.seconds / (double(w) * h);
+  ShowXyz(film.Xyz(), w, h);
+  progress_.preview = true;
+  progress_.spp = 0;
+  progress_.width = w, progress_.height = h;
+  progress_.frame_seconds = stats.seconds;
+  progress_.camera_pass_rate = stats.CameraPassRate();
+  progress_.layers = false;
+}
+
+void ViewSession::Pass(const std::atomic<bool>* stop) {
+  if (full_camera_stale_) {
+    setup_.camera = MakeCamera(sensor_.Node(), full_width_, full_height_);
+    full_camera_stale_ = false;
+  }
+  if (!film_) film_ = std::make_unique<Film>(MakeRenderFilm(setup_, 16, options_.threads));
+  const int max_spp = setup_.sampler.spp;
+  const int end = stop_at_ > 0 ? std::min(stop_at_, max_spp) : max_spp;
+  int n = 1;
+  if (spp_done_ > 0 && pass_seconds_per_spp_ > 0) n = int(std::clamp(kPassSeconds / pass_seconds_per_spp_, 1.0, 64.0));
+  n = std::min(n, end - spp_done_);
+  RenderOptions ro;
+  ro.spp_begin = spp_done_, ro.spp_end = spp_done_ + n;
+  ro.threads = options_.threads;
+  ro.stop = stop;
+  const RenderStats stats = Render(*setup_.camera, *setup_.integrator, *sampler_, *film_, ro);
+  if (!stats.Partial()) {
+    spp_done_ += n;
+    pass_seconds_per_spp_ = stats.seconds / n;
+  }
+  if (HasLensLayers() && !stats.Partial() &&
+      (!layers_ || spp_done_ == max_spp || Seconds(layers_time_) >= kLayerSpacing * layers_seconds_)) {
+    const auto start = std::chrono::steady_clock::now();
+    layers_ = ComposeLensLayers(*setup_.scene, *setup_.camera, *film_, setup_.sampler.seed);
+    layers_seconds_ = Seconds(start);
+    layers_time_ = std::chrono::steady_clock::now();
+  }
+  ShowFilm();
+  progress_.preview = false;
+  progress_.spp = spp_done_;
+  progress_.width = full_width_, progress_.height = full_height_;
+  progress_.frame_seconds = stats.seconds;
+  progress_.camera_pass_rate = stats.CameraPassRate();
+  progress_.layers = layers_.has_value();
+}
+
+bool ViewSession::Step(const std::atomic<bool>* stop) {
+  progress_.max_spp = setup_.sampler.spp;
+  if (moving_) {
+    PreviewFrame(PreviewDivisor(), stop);
+    return true;
+  }
+  if (!still_preview_shown_ && spp_done_ == 0) {
+    PreviewFrame(1, stop);
+    still_preview_shown_ = true;
+    return true;
+  }
+  if (spp_done_ >= (stop_at_ > 0 ? std::min(stop_at_, setup_.sampler.spp) : setup_.sampler.spp)) return false;
+  Pass(stop);
+  return true;
+}
+
+void ViewSession::ShowFilm() {
+  if (!layers_) return ShowXyz(film_->Xyz(), full_width_, full_height_);
+  switch (layer_) {
+    case ViewLayer::kSum: return ShowXyz(layers_->Sum(), layers_->width, layers_->height);
+    case ViewLayer::kPrimary: return ShowXyz(layers_->primary, layers_->width, layers_->height);
+    case ViewLayer::kGhosts:
+      if (!layers_->ghosts.empty()) return ShowXyz(layers_->ghosts, layers_->width, layers_->height);
+      break;
+    case ViewLayer::kDiffraction:
+      if (!layers_->diffraction.empty()) return ShowXyz(layers_->diffraction, layers_->width, layers_->height);
+      break;
+  }
+  ShowXyz(std::vector<float>(size_t(3) * layers_->width * layers_->height, 0.f), layers_->width, layers_->height);
+}
+
+void ViewSession::ShowXyz(const std::vector<float>& xyz, int width, int height) {
+  const Image display =
+      ApplyToneMap(XyzToImage(xyz, width, height, *setup_.film.color_space, float(exposure_)), setup_.film.tonemap);
+  display_.width = width, display_.height = height;
+  display_.rgba.resize(size_t(4) * width * height);
+  for (size_t i = 0; i < size_t(width) * height; ++i) {
+    for (int c = 0; c < 3; ++c) display_.rgba[4 * i + c] = Quantise(display.pixels[3 * i + c]);
+    display_.rgba[4 * i + 3] = 255;
+  }
+}
+
+void ViewSession::SaveImage(const std::string& exr_path) const {
+  if (!film_ || spp_done_ == 0)
+    throw InputError(fmt::format("{}: no pass of the integrator has finished yet: nothing to save", exr_path));
+  std::filesystem::path png = std::filesystem::path(exr_path).replace_extension(".png");
+  CheckOutputsAreNotInputs({{"the image", exr_path}, {"the PNG beside it", png.string()}});
+  std::vector<ImageAttribute> header = {{"objektiv:spp", spp_done_}, {"objektiv:scene", scene_path_},
+                                        {"objektiv:saved_by", std::string("objektiv view")}};
+  WriteRenderImages(setup_, *film_, options_.threads, exr_path, png.string(), header);
+}
+
+void ViewSession::SaveScene(const std::string& xml_path) const {
+  CheckOutputsAreNotInputs({{"the scene with the viewer's camera", xml_path}});
+  SceneWithCamera what;
+  what.scene_path = scene_path_;
+  what.sensor = &sensor_;
+  what.defines = options_.defines;
+  if (options_.width > 0 || options_.height > 0) what.film_size = Vec2i(full_width_, full_height_);
+  if (exposure_ != scene_exposure_) what.exposure = exposure_;
+  WriteSceneWithCamera(what, xml_path);
+}
+
+std::optional<std::string> ViewSession::ReloadIfChanged() {
+  bool changed = false;
+  for (const auto& [file, time] : watched_) {
+    std::error_code ec;
+    if (std::filesystem::last_write_time(file, ec) != time) changed = true;
+  }
+  if (!changed) return std::nullopt;
+  try {
+    Load();
+    spdlog::info("{}: read again", scene_path_);
+    return std::string();
+  } catch (const InputError& e) {
+    // Keep the last good scene; try again when a file changes again.
+    for (auto& [file, time] : watched_) {
+      std::error_code ec;
+      time = std::filesystem::last_write_time(file, ec);
+    }
+    return std::string(e.what());
+  }
+}
+
+}  // namespace objektiv
