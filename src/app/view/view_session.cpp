@@ -10,6 +10,7 @@
 #include "base/error.h"
 #include "base/input_files.h"
 #include "camera/realistic_camera.h"
+#include "camera/stereo_camera.h"
 #include "io/tonemap.h"
 #include "render/integrator.h"
 #include "render/renderer.h"
@@ -25,6 +26,7 @@ constexpr double kPassSeconds = 0.25;
 // The lens's layers are composed again once this many times their last composition's time
 // has passed (so that they take at most about a fifth of the time).
 constexpr double kLayerSpacing = 4;
+constexpr double kLayerDelay = 2;
 
 double Seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
@@ -81,12 +83,12 @@ void ViewSession::Load() {
   if (options_.width > 0) film.width = options_.width;
   if (options_.height > 0) film.height = options_.height;
   film.crop = CropWindow{0, 0, film.width, film.height};
+  if (dynamic_cast<const StereoCamera*>(setup.camera.get()))
+    throw ErrorAt(sensor.scene_sensor().loc, "the viewer shows one camera's image: a '{}' sensor makes a film of "
+                  "two, which it does not show (render it with objektiv render)", sensor.type());
   // The camera as the scene has it, unless the viewer changed it or the film's size.
   if (!sensor.set().empty() || setup.camera->width() != film.width || setup.camera->height() != film.height)
     setup.camera = MakeCamera(sensor.Node(), film.width, film.height);
-  if (setup.camera->width() != film.width || setup.camera->height() != film.height)
-    throw ErrorAt(sensor.scene_sensor().loc, "the viewer shows one camera's image: a '{}' sensor makes a film of "
-                  "several images, which it does not show", sensor.type());
   const bool first = doc_.root == nullptr;
   doc_ = std::move(doc);
   setup_ = std::move(setup);
@@ -131,6 +133,7 @@ std::unique_ptr<Camera> ViewSession::MakeCamera(const ObjectNode& sensor, int wi
 }
 
 void ViewSession::Restart() {
+  restarted_ = std::chrono::steady_clock::now();
   film_.reset();
   spp_done_ = 0;
   layers_.reset();
@@ -287,8 +290,12 @@ void ViewSession::Pass(const std::atomic<bool>* stop) {
     spp_done_ += n;
     pass_seconds_per_spp_ = stats.seconds / n;
   }
-  if (HasLensLayers() && !stats.Partial() &&
-      (!layers_ || spp_done_ == max_spp || Seconds(layers_time_) >= kLayerSpacing * layers_seconds_)) {
+  // The lens's layers take seconds (the ghosts' bundles) and cannot be stopped for a change:
+  // not while the controls are in use (the first after the passes have run kLayerDelay
+  // seconds, or at their end), then spaced so that they take a fifth of the time.
+  const bool first = !layers_ && (Seconds(restarted_) >= kLayerDelay || spp_done_ == end);
+  const bool again = layers_ && (spp_done_ == end || Seconds(layers_time_) >= kLayerSpacing * layers_seconds_);
+  if (HasLensLayers() && !stats.Partial() && (first || again)) {
     const auto start = std::chrono::steady_clock::now();
     layers_ = ComposeLensLayers(*setup_.scene, *setup_.camera, *film_, setup_.sampler.seed);
     layers_seconds_ = Seconds(start);
@@ -367,6 +374,12 @@ void ViewSession::SaveScene(const std::string& xml_path) const {
 }
 
 std::optional<std::string> ViewSession::ReloadIfChanged() {
+  // Files read since (a lens file chosen in the panel) are watched from now on.
+  for (const std::string& f : InputFiles())
+    if (!watched_.count(f)) {
+      std::error_code ec;
+      watched_[f] = std::filesystem::last_write_time(f, ec);
+    }
   bool changed = false;
   for (const auto& [file, time] : watched_) {
     std::error_code ec;

@@ -11,8 +11,9 @@
 // count. The passes take the sample indices a render takes, from the same sampler, so the image
 // at the scene's sample count is the one `objektiv render` makes of the saved camera
 // (app/view/scene_with_camera.h), bit for bit. The lens's ghosts and diffraction
-// (render/lens_layers.h), where the sensor asks for them, are composed over the image after the
-// passes that reach 1, 4, 16, 64 ... samples and the last.
+// (render/lens_layers.h), where the sensor asks for them, are composed over the image once the
+// passes have run 2 seconds (or reached their end), then again after the passes that follow
+// 4 times the composition's time, and after the last.
 //
 // Not thread-safe: one thread changes and steps it (app/view/view_worker.h runs it beside a window).
 #pragma once
@@ -160,7 +161,7 @@ class ViewSession {
   double pass_seconds_per_spp_ = 0;
   std::optional<LensLayers> layers_;
   double layers_seconds_ = 0;  // the last composition's time
-  std::chrono::steady_clock::time_point layers_time_;
+  std::chrono::steady_clock::time_point layers_time_, restarted_;
 
   DisplayImage display_;
   ViewProgress progress_;
