@@ -110,6 +110,14 @@ TEST(SensorOverrides, ValuesReplaceTheScenesAndWhatContradictsThem) {
   EXPECT_FALSE(o.Float("focus_distance"));
   o.Reset("focus_distance");
   EXPECT_EQ(o.Float("focus_distance"), 3);
+  // A focus point replaces the scene's focus distance; reset, the scene's comes back.
+  o.Set("focus_point", Vec3d(0, 1, 0), "point");
+  EXPECT_FALSE(o.Float("focus_distance"));
+  o.Reset("focus_distance");  // (the point still replaces it)
+  EXPECT_FALSE(o.Float("focus_distance"));
+  o.Reset("focus_point");
+  EXPECT_EQ(o.Float("focus_distance"), 3);
+  EXPECT_FALSE(o.Find("focus_point"));
 }
 
 TEST(SensorOverrides, TextIsReadAsThePropertyIsDeclared) {
@@ -160,6 +168,36 @@ TEST(ViewSession, ClickFocusesOnThePointUnderThePixel) {
   EXPECT_EQ(std::get<Vec3d>(f->data), Vec3d(*ball));
   EXPECT_FALSE(s.sensor().Find("focus_distance"));  // replaced
   EXPECT_FALSE(s.FocusAt(18, -50));                 // off the film: nothing there
+}
+
+// Another lens that does not open as far as the f-number set: taken wide open. A lens file
+// beside the scene is found by its name, as the scene would name it.
+TEST(ViewSession, LensesChangeAsAPhotographerChangesThem) {
+  const fs::path dir = TempDir("lenses");
+  WriteFile(dir / "scene.xml", LensScene());
+  fs::copy_file(fs::path(OBJEKTIV_SCENES_DIR) / "cornell-box" / "tessar-yellow-filter.lens", dir / "mine.lens");
+  fs::copy_file(fs::path(OBJEKTIV_SCENES_DIR) / "cornell-box" / "tessar-yellow-filter.glass", dir / "mine.glass");
+  ViewSession s((dir / "scene.xml").string(), {});
+  s.SetSensorProperty("fnumber", 2.8, "float");
+  s.SetSensorProperty("lens", std::string("telephoto.250mm"), "string");  // opens to f/5.6 only
+  EXPECT_FALSE(s.sensor().Find("fnumber"));
+  EXPECT_EQ(s.sensor().String("lens"), "telephoto.250mm");
+  s.SetSensorProperty("lens", std::string("mine.lens"), "string");
+  const auto* real = dynamic_cast<const RealisticCamera*>(&s.camera());
+  ASSERT_TRUE(real);
+  EXPECT_NE(real->lens().prescription().name.find("Tessar"), std::string::npos) << real->lens().prescription().name;
+}
+
+// Saving over a file the scene reads is refused with the viewer's error, not a crash.
+TEST(ViewSession, SavesNeverReplaceTheScenesFiles) {
+  const fs::path dir = TempDir("inputs");
+  WriteFile(dir / "scene.xml", LensScene());
+  ViewSession s((dir / "scene.xml").string(), {});
+  while (s.Step()) {
+  }
+  EXPECT_THROW(s.SaveScene((dir / "scene.xml").string()), InputError);
+  EXPECT_THROW(s.SaveImage((dir / "picture.jpg").string()), InputError);  // an .exr (and its PNG)
+  EXPECT_THROW(s.SaveImage((dir / "no-such-folder" / "x.exr").string()), InputError);
 }
 
 TEST(ViewSession, RefusedValuesLeaveTheCameraAsItWas) {
@@ -273,6 +311,13 @@ TEST(ViewScript, CommandsRunAndErrorsNameTheLine) {
   }
   EXPECT_EQ(shot, (dir / "shot.png").string());
   EXPECT_EQ(s.progress().spp, 2);
+  // After a change, samples start again from none (they were reached before the change).
+  WriteFile(dir / "again.txt", "samples 2\norbit 30 10  # around\nsamples 2\nsave " + (dir / "again.exr").string() + "\n");
+  ViewScript again((dir / "again.txt").string(), ReadViewScript((dir / "again.txt").string()));
+  while (again.Step(s).kind != ViewScript::Action::kDone) {
+  }
+  EXPECT_EQ(s.progress().spp, 2);
+  EXPECT_TRUE(fs::exists(dir / "again.exr"));
   EXPECT_EQ(s.sensor().Float("fnumber"), 4);  // the line after quit did not run
   EXPECT_TRUE(s.sensor().Find("focus_point"));
 

@@ -23,7 +23,9 @@ void DrawLensSection(const Svg& plot, float width) {
   const float height = float(plot.height()) * scale;
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImDrawList* draw = ImGui::GetWindowDrawList();
-  draw->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + height), IM_COL32(255, 255, 255, 255));
+  const ImVec2 corner(origin.x + width, origin.y + height);
+  draw->AddRectFilled(origin, corner, IM_COL32(255, 255, 255, 255));
+  draw->PushClipRect(origin, corner, true);  // rays traced beyond the drawing stay in it
   auto at = [&](const Vec2d& p) { return ImVec2(origin.x + float(p.x) * scale, origin.y + float(p.y) * scale); };
   for (const SvgShape& s : plot.shapes()) {
     std::vector<ImVec2> pts;
@@ -51,6 +53,7 @@ void DrawLensSection(const Svg& plot, float width) {
       }
     }
   }
+  draw->PopClipRect();
   ImGui::Dummy(ImVec2(width, height));
 }
 

@@ -98,6 +98,8 @@ int RunView(const ViewArgs& a) {
   options.max_spp = a.spp;
   options.threads = a.threads;
   options.preview_fps = a.fps;
+  if (a.benchmark > 0 && !a.script.empty())
+    throw CLI::ValidationError("--benchmark", "runs without a script: give --benchmark or --script");
   if (a.headless && a.script.empty() && a.benchmark == 0)
     throw CLI::ValidationError("--headless", "needs --script or --benchmark: without a window, a script says what to do");
   std::optional<ViewScript> script;

@@ -70,8 +70,12 @@ void ViewPanel::Draw(const ViewSnapshot& s, ViewWorker* worker, float x, float y
     ImGui::Text("%d of %d spp%s", p.spp, p.max_spp, p.layers ? " + lens layers" : "");
   ImGui::Text("%.1f frames/s, last frame %.0f ms", fps, p.frame_seconds * 1e3);
   if (p.camera_pass_rate) ImGui::Text("camera pass rate %.1f%%", *p.camera_pass_rate * 100);
-  if (!s.error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.35f, 1), "%s", s.error.c_str());
-  else if (!s.notice.empty()) ImGui::TextColored(ImVec4(0.6f, 0.9f, 0.6f, 1), "%s", s.notice.c_str());
+  // The last error (until a change or a reload succeeds) or notice, wrapped to the panel.
+  if (!s.error.empty() || !s.notice.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, s.error.empty() ? ImVec4(0.6f, 0.9f, 0.6f, 1) : ImVec4(1, 0.4f, 0.35f, 1));
+    ImGui::TextWrapped("%s", s.error.empty() ? s.notice.c_str() : s.error.c_str());
+    ImGui::PopStyleColor();
+  }
   ImGui::Separator();
   if (!worker) ImGui::BeginDisabled();  // a scripted run: the controls show only
   float exposure = float(s.exposure);
@@ -117,11 +121,13 @@ void ViewPanel::LensControls(const ViewSnapshot& s, ViewWorker* worker) {
   const char* format = picked ? "on the point clicked" : std::isfinite(focus) ? "%.3f m" : "infinity";
   if (ImGui::SliderFloat("focus", &shown, 0.05f, 1000, format, ImGuiSliderFlags_Logarithmic))
     PostSet(worker, "focus_distance", double(shown), "float");
-  ImGui::SameLine();
-  if (real && ImGui::SmallButton("inf"))
-    Post(worker, [](ViewSession& v) {
-      v.ChangeSensor([](SensorOverrides& o) { o.Unset("focus_distance"), o.Unset("focus_point"); });
-    });
+  if (real) {
+    ImGui::SameLine();
+    if (ImGui::SmallButton("inf"))
+      Post(worker, [](ViewSession& v) {
+        v.ChangeSensor([](SensorOverrides& o) { o.Unset("focus_distance"), o.Unset("focus_point"); });
+      });
+  }
   // Aperture.
   const std::optional<double> n = sensor.Float("fnumber");
   float fnumber = float(n.value_or(0));

@@ -283,7 +283,9 @@ int RunViewWindow(std::unique_ptr<ViewSession> session, std::optional<ViewScript
       if (worker) {
         controls.Update(window, picture, film_w, film_h, *worker, pose);
         if (keys.save) panel.SaveBoth(*worker);
-        if (keys.close) glfwSetWindowShouldClose(window, GLFW_TRUE);
+        // (Escape in an open list or menu closes that, not the window.)
+        if (keys.close && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel))
+          glfwSetWindowShouldClose(window, GLFW_TRUE);
         keys = KeyPresses();
       }
       ImGui::Render();

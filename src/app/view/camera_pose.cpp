@@ -70,7 +70,9 @@ void CameraPose::Move(double right, double up, double forward) {
 void CameraPose::Dolly(double factor) {
   if (!(factor > 0) || !std::isfinite(factor)) return;
   const Vec3d centre = Centre();
-  orbit_distance_ *= factor;
+  // Within a factor 1e6 of a unit either way: farther, the pose's position would lose the
+  // centre in rounding; nearer, it would stand on it.
+  orbit_distance_ = std::clamp(orbit_distance_ * factor, 1e-6, 1e6);
   position_ = centre - forward_ * orbit_distance_;
 }
 

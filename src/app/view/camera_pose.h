@@ -25,7 +25,8 @@ class CameraPose {
   void Turn(double yaw_deg, double pitch_deg);   // in place (the centre moves along)
   // Along the camera's own axes as the viewer sees them: right, up, forward (scene units).
   void Move(double right, double up, double forward);
-  // The distance to the centre times `factor` (> 0), the centre staying.
+  // The distance to the centre times `factor` (> 0), the centre staying; the distance kept
+  // within 1e-6 to 1e6 scene units.
   void Dolly(double factor);
   // Turn to look at `point` and orbit about it (a point picked in the image).
   void LookAt(const Vec3d& point);

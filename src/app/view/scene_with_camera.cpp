@@ -97,6 +97,17 @@ void WriteSceneWithCamera(const SceneWithCamera& what, const std::string& xml_pa
   }
   for (const std::string& name : what.sensor->removed()) RemoveNamed(sensor, name);
   for (const Property& p : what.sensor->set()) WriteProperty(sensor, p);
+  if (what.sample_count) {
+    pugi::xml_node sampler = sensor.child("sampler");
+    if (!sampler) {
+      sampler = sensor.append_child("sampler");
+      sampler.append_attribute("type") = "independent";
+    }
+    AddProperty(sampler, "integer", "sample_count").append_attribute("value") = *what.sample_count;
+  }
+  if (what.whole_film)
+    for (const char* crop : {"crop_offset_x", "crop_offset_y", "crop_width", "crop_height"})
+      RemoveNamed(sensor.child("film"), crop);
   if (what.film_size || what.exposure) {
     pugi::xml_node film = sensor.child("film");
     if (!film) {

@@ -40,35 +40,46 @@ std::optional<T> As(const Property* p) {
 }  // namespace
 
 void SensorOverrides::Set(const std::string& name, PropertyData value, const std::string& type_name) {
-  auto same = [&name](const Property& p) { return p.name == name; };
-  auto it = std::find_if(set_.begin(), set_.end(), same);
-  Property p{name, std::move(value), type_name, Location{"(viewer)", 0}};
+  Property p{name, std::move(value), type_name, Location{sensor_->loc.file, 0}};
+  auto it = std::find_if(set_.begin(), set_.end(), [&name](const Property& q) { return q.name == name; });
   if (it != set_.end()) *it = std::move(p);
   else set_.push_back(std::move(p));
-  std::erase(removed_, name);
+  std::erase(unset_, name);
+  // A value set drops the values set that contradict it (the scene's are left out by removed()).
   if (auto c = Contradicted().find(name); c != Contradicted().end())
-    for (const std::string& other : c->second) {
-      std::erase_if(set_, [&other](const Property& q) { return q.name == other; });
-      if (std::find(removed_.begin(), removed_.end(), other) == removed_.end()) removed_.push_back(other);
-    }
+    for (const std::string& other : c->second) std::erase_if(set_, [&other](const Property& q) { return q.name == other; });
 }
 
 void SensorOverrides::Reset(const std::string& name) {
   std::erase_if(set_, [&name](const Property& p) { return p.name == name; });
-  std::erase(removed_, name);
+  std::erase(unset_, name);
 }
 
 void SensorOverrides::Unset(const std::string& name) {
   Reset(name);
-  if (std::find(removed_.begin(), removed_.end(), name) == removed_.end()) removed_.push_back(name);
+  unset_.push_back(name);
+}
+
+bool SensorOverrides::Removed(const std::string& name) const {
+  if (std::find(unset_.begin(), unset_.end(), name) != unset_.end()) return true;
+  for (const Property& p : set_)
+    if (auto c = Contradicted().find(p.name); c != Contradicted().end())
+      if (std::find(c->second.begin(), c->second.end(), name) != c->second.end()) return true;
+  return false;
+}
+
+std::vector<std::string> SensorOverrides::removed() const {
+  std::vector<std::string> names;
+  for (const Property& p : sensor_->props)
+    if (Removed(p.name) && std::find(names.begin(), names.end(), p.name) == names.end()) names.push_back(p.name);
+  return names;
 }
 
 ObjectNode SensorOverrides::Node() const {
   ObjectNode node = *sensor_;
   for (Property& p : node.props) p.used = false;
   std::erase_if(node.props, [this](const Property& p) {
-    return std::find(removed_.begin(), removed_.end(), p.name) != removed_.end() ||
-           std::any_of(set_.begin(), set_.end(), [&p](const Property& q) { return q.name == p.name; });
+    return Removed(p.name) || std::any_of(set_.begin(), set_.end(), [&p](const Property& q) { return q.name == p.name; });
   });
   for (const Property& p : set_) node.props.push_back(p);
   return node;
@@ -77,7 +88,7 @@ ObjectNode SensorOverrides::Node() const {
 const Property* SensorOverrides::Find(const std::string& name) const {
   for (const Property& p : set_)
     if (p.name == name) return &p;
-  if (std::find(removed_.begin(), removed_.end(), name) != removed_.end()) return nullptr;
+  if (Removed(name)) return nullptr;
   for (const Property& p : sensor_->props)
     if (p.name == name) return &p;
   return nullptr;

@@ -20,6 +20,9 @@ namespace objektiv {
 
 class SensorOverrides {
  public:
+  // `sensor`: the scene's <sensor> node. The values set are located at the scene file (line
+  // 0), so that a relative file name in them (a lens file) resolves from the scene's folder,
+  // as in the scene and in the saved camera.
   explicit SensorOverrides(std::shared_ptr<const ObjectNode> sensor) : sensor_(std::move(sensor)) {}
 
   // `type_name`: the tag the value would be written with (float, integer, boolean, string,
@@ -29,7 +32,8 @@ class SensorOverrides {
   void SetInteger(const std::string& name, int64_t v) { Set(name, v, "integer"); }
   void SetBoolean(const std::string& name, bool v) { Set(name, v, "boolean"); }
   void SetString(const std::string& name, const std::string& v) { Set(name, v, "string"); }
-  // Back to the scene's value (or its default).
+  // Back to the scene's value (or its default), and the scene's properties it had replaced
+  // back too (unless another value set replaces them).
   void Reset(const std::string& name);
   // Left out: the property's default, whatever the scene says (focus at infinity, wide open).
   void Unset(const std::string& name);
@@ -51,13 +55,15 @@ class SensorOverrides {
   const ObjectNode& scene_sensor() const { return *sensor_; }
   // The values set, in the order they were first set.
   const std::vector<Property>& set() const { return set_; }
-  // Names of the scene's properties the values set removed.
-  const std::vector<std::string>& removed() const { return removed_; }
+  // Names of the scene's properties left out: unset, or replaced by a value set that
+  // contradicts them.
+  std::vector<std::string> removed() const;
 
  private:
+  bool Removed(const std::string& name) const;
   std::shared_ptr<const ObjectNode> sensor_;
   std::vector<Property> set_;
-  std::vector<std::string> removed_;
+  std::vector<std::string> unset_;
 };
 
 // The declaration of a property that a sensor type reads (the scene reader's registry), if it

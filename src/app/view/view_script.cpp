@@ -24,12 +24,12 @@ const std::map<std::string, std::pair<size_t, size_t>>& Verbs() {
   return kVerbs;
 }
 
-double Number(const ScriptCommand& c, size_t i, const std::string& file) {
+double Number(const ScriptCommand& c, size_t i, const std::string&) {
   const std::string& t = c.args[i];
   double v = 0;
   auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
   if (ec != std::errc() || ptr != t.data() + t.size() || !std::isfinite(v))
-    throw MakeInputError(file, c.line, "{}: '{}' is not a number", c.verb, t);
+    throw InputError(fmt::format("'{}' is not a number", t));
   return v;
 }
 
@@ -40,10 +40,11 @@ std::vector<ScriptCommand> ReadViewScript(const std::string& path) {
   std::vector<ScriptCommand> commands;
   std::string text;
   for (int line = 1; std::getline(in, text); ++line) {
+    text = text.substr(0, text.find('#'));  // a comment, whole line or after the command
     std::istringstream words(text);
     ScriptCommand c;
     c.line = line;
-    if (!(words >> c.verb) || c.verb[0] == '#') continue;
+    if (!(words >> c.verb)) continue;
     // `set NAME VALUE`: the value is the rest of the line (a point's "x, y, z").
     std::string w;
     if (c.verb == "set") {
@@ -88,10 +89,15 @@ ViewScript::Action ViewScript::Step(ViewSession& session) {
     }
     ++next_;
     CameraPose pose = session.pose();
+    // A change is shown at once (a preview frame), so that a screenshot after it shows it.
+    const bool change = v == "set" || v == "reset" || v == "focus" || v == "orbit" || v == "turn" || v == "move" ||
+                        v == "dolly" || v == "look-at";
     if (v == "set") {
       SensorValue value = ParseSensorValue(session.sensor().type(), c.args[0], c.args[1]);
       session.SetSensorProperty(c.args[0], value.data, value.type_name);
     } else if (v == "reset") {
+      if (!SensorPropertyDecl(session.sensor().type(), c.args[0]))
+        throw InputError(fmt::format("a '{}' sensor has no property '{}'", session.sensor().type(), c.args[0]));
       session.ResetSensorProperty(c.args[0]);
     } else if (v == "focus") {
       if (!session.FocusAt(Number(c, 0, path_), Number(c, 1, path_)))
@@ -121,6 +127,8 @@ ViewScript::Action ViewScript::Step(ViewSession& session) {
       for (ViewLayer l : {ViewLayer::kSum, ViewLayer::kPrimary, ViewLayer::kGhosts, ViewLayer::kDiffraction})
         if (name == ViewLayerName(l)) session.SetLayer(l), found = true;
       if (!found) throw InputError(fmt::format("'{}' is not picture, primary, ghosts or diffraction", name));
+      if (!session.HasLensLayers())
+        throw InputError("the sensor makes no lens layers (its ghosts and diffraction are off)");
     } else if (v == "preview") {
       if (!c.args.empty() && c.args[0] != "moving") throw InputError(fmt::format("'{}' is not 'moving'", c.args[0]));
       const bool moving = !c.args.empty();
@@ -132,11 +140,13 @@ ViewScript::Action ViewScript::Step(ViewSession& session) {
     } else if (v == "save-camera") {
       session.SaveScene(c.args[0]);
     } else if (v == "screenshot") {
+      if (session.display().width == 0) session.Step();  // nothing shown yet: the first frame
       return {Action::kScreenshot, c.args[0]};
     } else if (v == "quit") {
       next_ = commands_.size();
       return {Action::kDone, ""};
     }
+    if (change) session.Step();
   } catch (const InputError& e) {
     throw at(e);
   }

@@ -17,8 +17,9 @@
 //   save-camera FILE.xml    the scene with this camera (beside the scene)
 //   screenshot FILE.png     the window as shown; without a window, the image shown
 //   quit
-// Blank lines and lines starting with # are skipped. Relative file names are relative to the
-// working directory, as on the command line.
+// A change is shown at once (a preview frame). Text after # is a comment. Relative file names
+// are relative to the working directory, as on the command line (save-camera's must lie beside
+// the scene); names hold no spaces.
 #pragma once
 #include <string>
 #include <vector>

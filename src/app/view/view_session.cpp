@@ -78,8 +78,10 @@ void ViewSession::Load() {
   if (doc_.root == nullptr) sensor = SensorOverrides(SensorNode(doc));
   else sensor.Rebase(SensorNode(doc));
   FilmSettings& film = setup.film;
-  if (!(film.crop == CropWindow{0, 0, film.width, film.height}) && doc_.root == nullptr)
-    spdlog::warn("{}:{}: the viewer shows the whole film: its crop window is left out", film.loc.file, film.loc.line);
+  const bool cropped = !(film.crop == CropWindow{0, 0, film.width, film.height});
+  if (cropped && doc_.root == nullptr)
+    spdlog::warn("{}:{}: the viewer shows the whole film: its crop window is left out (and so is it from the camera "
+                 "the viewer saves)", film.loc.file, film.loc.line);
   if (options_.width > 0) film.width = options_.width;
   if (options_.height > 0) film.height = options_.height;
   film.crop = CropWindow{0, 0, film.width, film.height};
@@ -96,6 +98,7 @@ void ViewSession::Load() {
   if (first) exposure_ = scene_exposure_;
   setup_.film.exposure = float(exposure_);
   sensor_ = std::move(sensor);
+  scene_cropped_ = cropped;
   full_width_ = setup_.film.width, full_height_ = setup_.film.height;
   SamplerSettings s = setup_.sampler;
   if (options_.max_spp > 0) s.spp = options_.max_spp;
@@ -108,7 +111,13 @@ void ViewSession::Load() {
                  "objektiv render renders it", scene_path_);
     setup_.integrator = std::make_unique<PathIntegrator>(*setup_.scene, -1, 5);
   }
-  preview_integrator_ = std::make_unique<DirectIntegrator>(*setup_.scene, 1, 1);
+  // Direct light (one emitter and one BSDF sample) in the preview; the path tracer where the
+  // scene has media (direct lighting does not cross their null boundaries: a room lit through
+  // fog would be black).
+  if (setup_.scene->HasMedia())
+    preview_integrator_ = std::make_unique<PathIntegrator>(*setup_.scene, 8, 3);
+  else
+    preview_integrator_ = std::make_unique<DirectIntegrator>(*setup_.scene, 1, 1);
   preview_cameras_.clear();
   watched_.clear();
   for (const std::string& f : InputFiles()) {
@@ -134,6 +143,8 @@ std::unique_ptr<Camera> ViewSession::MakeCamera(const ObjectNode& sensor, int wi
 
 void ViewSession::Restart() {
   restarted_ = std::chrono::steady_clock::now();
+  progress_.spp = 0;
+  stalled_.clear();
   film_.reset();
   spp_done_ = 0;
   layers_.reset();
@@ -162,9 +173,44 @@ void ViewSession::SetPose(const CameraPose& pose, bool moving) {
 }
 
 void ViewSession::SetMoving(bool moving) {
+  stalled_.clear();
   if (moving_ == moving) return;
   moving_ = moving;
   if (!moving) still_preview_shown_ = false;
+}
+
+void ViewSession::SetSensorProperty(const std::string& name, PropertyData value, const std::string& type_name) {
+  // The same value again (a slider let go where it was): the image goes on.
+  if (const Property* now = sensor_.Find(name); now && now->data.index() == value.index()) {
+    const bool same = std::visit(
+        [&](const auto& a) {
+          using T = std::decay_t<decltype(a)>;
+          if constexpr (std::is_same_v<T, double> || std::is_same_v<T, int64_t> || std::is_same_v<T, bool> ||
+                        std::is_same_v<T, std::string> || std::is_same_v<T, Vec3d>)
+            return a == std::get<T>(value);
+          return false;
+        },
+        now->data);
+    if (same) return;
+  }
+  // A file named from the working directory (a lens file typed in the panel or a script) by
+  // its absolute path; else as given (a shipped lens, or a file beside the scene).
+  if (const std::string* file = std::get_if<std::string>(&value); file && (name == "lens" || name == "aperture_mask")) {
+    std::error_code ec;
+    if (std::filesystem::path(*file).is_relative() && std::filesystem::is_regular_file(*file, ec))
+      value = std::filesystem::absolute(*file, ec).lexically_normal().string();
+  }
+  try {
+    ChangeSensor([&](SensorOverrides& s) { s.Set(name, value, type_name); });
+  } catch (const InputError&) {
+    // Another lens that does not open as far as the f-number asks: wide open instead.
+    if (name != "lens" || !(sensor_.Find("fnumber") || sensor_.Find("aperture_diameter"))) throw;
+    ChangeSensor([&](SensorOverrides& s) {
+      s.Set(name, value, type_name);
+      s.Unset("fnumber"), s.Unset("aperture_diameter");
+    });
+    spdlog::warn("{} does not open as far as the f-number asked: wide open", std::get<std::string>(value));
+  }
 }
 
 void ViewSession::ChangeSensor(const std::function<void(SensorOverrides&)>& change) {
@@ -294,10 +340,11 @@ void ViewSession::Pass(const std::atomic<bool>* stop) {
   // not while the controls are in use (the first after the passes have run kLayerDelay
   // seconds, or at their end), then spaced so that they take a fifth of the time.
   const bool first = !layers_ && (Seconds(restarted_) >= kLayerDelay || spp_done_ == end);
-  const bool again = layers_ && (spp_done_ == end || Seconds(layers_time_) >= kLayerSpacing * layers_seconds_);
+  const bool again = layers_ && Seconds(layers_time_) >= kLayerSpacing * layers_seconds_;
   if (HasLensLayers() && !stats.Partial() && (first || again)) {
     const auto start = std::chrono::steady_clock::now();
     layers_ = ComposeLensLayers(*setup_.scene, *setup_.camera, *film_, setup_.sampler.seed);
+    layers_film_ = film_->Xyz();
     layers_seconds_ = Seconds(start);
     layers_time_ = std::chrono::steady_clock::now();
   }
@@ -312,6 +359,18 @@ void ViewSession::Pass(const std::atomic<bool>* stop) {
 
 bool ViewSession::Step(const std::atomic<bool>* stop) {
   progress_.max_spp = setup_.sampler.spp;
+  // A camera that cannot be built again (a lens file broken on disk since): nothing to do
+  // until the next change or reload, rather than the same error twice a second.
+  if (!stalled_.empty()) return false;
+  try {
+    return Frame(stop);
+  } catch (const InputError& e) {
+    stalled_ = e.what();
+    throw;
+  }
+}
+
+bool ViewSession::Frame(const std::atomic<bool>* stop) {
   if (moving_) {
     PreviewFrame(PreviewDivisor(), stop);
     return true;
@@ -328,9 +387,16 @@ bool ViewSession::Step(const std::atomic<bool>* stop) {
 
 void ViewSession::ShowFilm() {
   if (!layers_) return ShowXyz(film_->Xyz(), full_width_, full_height_);
+  // The picture and the primary layer with the film as it is now: the layers' film part
+  // replaced by the film's later passes (the ghosts and the diffraction as last composed).
+  auto with_film_now = [&](std::vector<float> xyz) {
+    const std::vector<float> now = film_->Xyz();
+    for (size_t i = 0; i < xyz.size() && i < now.size() && i < layers_film_.size(); ++i) xyz[i] += now[i] - layers_film_[i];
+    return xyz;
+  };
   switch (layer_) {
-    case ViewLayer::kSum: return ShowXyz(layers_->Sum(), layers_->width, layers_->height);
-    case ViewLayer::kPrimary: return ShowXyz(layers_->primary, layers_->width, layers_->height);
+    case ViewLayer::kSum: return ShowXyz(with_film_now(layers_->Sum()), layers_->width, layers_->height);
+    case ViewLayer::kPrimary: return ShowXyz(with_film_now(layers_->primary), layers_->width, layers_->height);
     case ViewLayer::kGhosts:
       if (!layers_->ghosts.empty()) return ShowXyz(layers_->ghosts, layers_->width, layers_->height);
       break;
@@ -352,24 +418,39 @@ void ViewSession::ShowXyz(const std::vector<float>& xyz, int width, int height) 
   }
 }
 
+// The output checks' refusals (CLI::ValidationError, a command-line error elsewhere) as the
+// viewer's InputError.
+void CheckOutputs(const std::vector<Output>& outputs) {
+  try {
+    CheckOutputsWritable(outputs);
+    CheckOutputsAreNotInputs(outputs);
+  } catch (const CLI::ValidationError& e) {
+    throw InputError(e.what());
+  }
+}
+
 void ViewSession::SaveImage(const std::string& exr_path) const {
+  if (std::filesystem::path(exr_path).extension() != ".exr")
+    throw InputError(fmt::format("{}: the image is saved as an .exr (the PNG is written beside it)", exr_path));
   if (!film_ || spp_done_ == 0)
     throw InputError(fmt::format("{}: no pass of the integrator has finished yet: nothing to save", exr_path));
   std::filesystem::path png = std::filesystem::path(exr_path).replace_extension(".png");
-  CheckOutputsAreNotInputs({{"the image", exr_path}, {"the PNG beside it", png.string()}});
+  CheckOutputs({{"the image", exr_path}, {"the PNG beside it", png.string()}});
   std::vector<ImageAttribute> header = {{"objektiv:spp", spp_done_}, {"objektiv:scene", scene_path_},
                                         {"objektiv:saved_by", std::string("objektiv view")}};
   WriteRenderImages(setup_, *film_, options_.threads, exr_path, png.string(), header);
 }
 
 void ViewSession::SaveScene(const std::string& xml_path) const {
-  CheckOutputsAreNotInputs({{"the scene with the viewer's camera", xml_path}});
+  CheckOutputs({{"the scene with the viewer's camera", xml_path}});
   SceneWithCamera what;
   what.scene_path = scene_path_;
   what.sensor = &sensor_;
   what.defines = options_.defines;
   if (options_.width > 0 || options_.height > 0) what.film_size = Vec2i(full_width_, full_height_);
   if (exposure_ != scene_exposure_) what.exposure = exposure_;
+  what.whole_film = scene_cropped_;
+  if (options_.max_spp > 0) what.sample_count = options_.max_spp;
   WriteSceneWithCamera(what, xml_path);
 }
 

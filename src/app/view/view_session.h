@@ -12,8 +12,10 @@
 // at the scene's sample count is the one `objektiv render` makes of the saved camera
 // (app/view/scene_with_camera.h), bit for bit. The lens's ghosts and diffraction
 // (render/lens_layers.h), where the sensor asks for them, are composed over the image once the
-// passes have run 2 seconds (or reached their end), then again after the passes that follow
-// 4 times the composition's time, and after the last.
+// passes have run 2 seconds (or reached their end), then again once 4 times the composition's
+// time has passed (they cannot be stopped for a change); between, the picture shows the
+// film's later passes with the ghosts and diffraction as last composed. A saved image
+// composes them anew.
 //
 // Not thread-safe: one thread changes and steps it (app/view/view_worker.h runs it beside a window).
 #pragma once
@@ -79,9 +81,9 @@ class ViewSession {
   // and the property keeps its value.
   const SensorOverrides& sensor() const { return sensor_; }
   void ChangeSensor(const std::function<void(SensorOverrides&)>& change);
-  void SetSensorProperty(const std::string& name, PropertyData value, const std::string& type_name) {
-    ChangeSensor([&](SensorOverrides& s) { s.Set(name, value, type_name); });
-  }
+  // The same value again changes nothing; another lens that does not open as far as the
+  // f-number set asks is taken wide open (warned).
+  void SetSensorProperty(const std::string& name, PropertyData value, const std::string& type_name);
   void ResetSensorProperty(const std::string& name) {
     ChangeSensor([&](SensorOverrides& s) { s.Reset(name); });
   }
@@ -102,6 +104,8 @@ class ViewSession {
   // One frame: a preview, or a pass of the integrator. False when there is nothing to do (the
   // passes have every sample). `stop` (the window's, when a change arrives) ends a pass early:
   // the pixels begun finish, the others wait for the next.
+  // A camera that cannot be built (a lens file broken on disk since it was read): InputError,
+  // then nothing (false) until the next change or reload.
   bool Step(const std::atomic<bool>* stop = nullptr);
   const DisplayImage& display() const { return display_; }
   const ViewProgress& progress() const { return progress_; }
@@ -129,6 +133,7 @@ class ViewSession {
  private:
   void Load();  // (scene_path_, options_) -> doc_, setup_, sensor_ (keeping pose and values set)
   void Restart();
+  bool Frame(const std::atomic<bool>* stop);
   std::unique_ptr<Camera> MakeCamera(const ObjectNode& sensor, int width, int height) const;
   const Camera& PreviewCamera(int divisor);
   int PreviewDivisor() const;
@@ -144,7 +149,9 @@ class ViewSession {
   SensorOverrides sensor_{nullptr};
   CameraPose pose_;
   double exposure_ = 0, scene_exposure_ = 0;
-  bool full_camera_stale_ = false;  // the pose changed since the camera of the passes was built
+  bool full_camera_stale_ = false;
+  bool scene_cropped_ = false;  // the scene's film has a crop window (the viewer leaves it out)
+  std::string stalled_;         // why Step does nothing until the next change  // the pose changed since the camera of the passes was built
   ViewLayer layer_ = ViewLayer::kSum;
   bool moving_ = false;
   int full_width_ = 0, full_height_ = 0;
@@ -160,6 +167,7 @@ class ViewSession {
   int stop_at_ = 0;
   double pass_seconds_per_spp_ = 0;
   std::optional<LensLayers> layers_;
+  std::vector<float> layers_film_;  // the film's XYZ the layers were composed with
   double layers_seconds_ = 0;  // the last composition's time
   std::chrono::steady_clock::time_point layers_time_, restarted_;
 

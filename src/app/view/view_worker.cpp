@@ -3,6 +3,8 @@
 #include <chrono>
 #include <cmath>
 
+#include <spdlog/spdlog.h>
+
 #include "base/error.h"
 #include "camera/realistic_camera.h"
 #include "io/lens_plot.h"
@@ -91,19 +93,27 @@ void ViewWorker::Run() {
       stop_frame_ = false;
     }
     std::string error, notice;
+    bool reloaded = false;
     for (auto& [change, what] : changes) {
       try {
         change(*session_);
         if (!what.empty()) notice = what;
       } catch (const InputError& e) {
         error = e.what();
+      } catch (const std::exception& e) {
+        error = std::string("error: ") + e.what();
       }
     }
     if (Clock::now() - polled > std::chrono::milliseconds(500)) {
       polled = Clock::now();
       if (std::optional<std::string> reload = session_->ReloadIfChanged()) {
-        if (reload->empty()) notice = session_->scene_path() + ": read again";
-        else error = *reload;
+        if (reload->empty()) {
+          notice = session_->scene_path() + ": read again";
+          reloaded = true;  // (an earlier error is over)
+        } else {
+          error = *reload;
+          spdlog::error("{} (the last good scene stays)", error);
+        }
       }
     }
     bool worked = false;
@@ -111,8 +121,10 @@ void ViewWorker::Run() {
       worked = session_->Step(&stop_frame_);
     } catch (const InputError& e) {
       error = e.what();
+    } catch (const std::exception& e) {  // (a bug: said, not a lost session)
+      error = std::string("error: ") + e.what();
     }
-    if (worked || !changes.empty() || !error.empty() || !notice.empty()) Publish(error, notice, !changes.empty());
+    if (worked || !changes.empty() || !error.empty() || !notice.empty()) Publish(error, notice, !changes.empty() || reloaded);
     if (!worked) {
       std::unique_lock<std::mutex> lock(mutex_);
       wake_.wait_for(lock, std::chrono::milliseconds(500), [this] { return quit_ || !changes_.empty(); });
