@@ -17,6 +17,7 @@
 #include "app/view/view_worker.h"
 #include "base/error.h"
 #include "camera/realistic_camera.h"
+#include "io/lens_plot.h"
 #include "render/renderer.h"
 
 namespace objektiv {
@@ -168,6 +169,32 @@ TEST(ViewSession, ClickFocusesOnThePointUnderThePixel) {
   EXPECT_EQ(std::get<Vec3d>(f->data), Vec3d(*ball));
   EXPECT_FALSE(s.sensor().Find("focus_distance"));  // replaced
   EXPECT_FALSE(s.FocusAt(18, -50));                 // off the film: nothing there
+}
+
+// The panel's lens section draws the fans from the plane the lens is focused on: focused at
+// half a metre, the axial fan meets on the film (from infinity it would not).
+TEST(ViewSession, LensSectionFansComeFromThePlaneInFocus) {
+  const fs::path dir = TempDir("section");
+  WriteFile(dir / "scene.xml", LensScene());
+  ViewSession s((dir / "scene.xml").string(), {});
+  s.SetSensorProperty("focus_distance", 0.5, "float");
+  s.SetSensorProperty("fnumber", 4.0, "float");
+  const auto* real = dynamic_cast<const RealisticCamera*>(&s.camera());
+  ASSERT_TRUE(real);
+  // The axial fan's (the first colour's) ends on the film, in the drawing's pixels.
+  auto spread = [](const Svg& plot) {
+    double lo = INFINITY, hi = -INFINITY;
+    int rays = 0;
+    for (const SvgShape& shape : plot.shapes())
+      if (shape.kind == SvgShape::kPolyline && shape.stroke == "#1f5fd1" && shape.points.size() > 2) {
+        lo = std::min(lo, shape.points.back().y), hi = std::max(hi, shape.points.back().y);
+        ++rays;
+      }
+    EXPECT_EQ(rays, 5);
+    return hi - lo;
+  };
+  EXPECT_LT(spread(PlotLensLayoutAsFocused(real->lens(), {0, 5})), 1.0);
+  EXPECT_GT(spread(PlotLensLayout(real->lens(), {0, 5})), 5.0);
 }
 
 // Another lens that does not open as far as the f-number set: taken wide open. A lens file

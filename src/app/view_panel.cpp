@@ -68,14 +68,8 @@ void ViewPanel::Draw(const ViewSnapshot& s, ViewWorker* worker, float x, float y
     ImGui::Text("preview %dx%d, direct light, 1 spp", p.width, p.height);
   else
     ImGui::Text("%d of %d spp%s", p.spp, p.max_spp, p.layers ? " + lens layers" : "");
-  ImGui::Text("%.1f frames/s, last frame %.0f ms", fps, p.frame_seconds * 1e3);
+  ImGui::Text("%.1f pictures/s, last %.0f ms", fps, p.frame_seconds * 1e3);
   if (p.camera_pass_rate) ImGui::Text("camera pass rate %.1f%%", *p.camera_pass_rate * 100);
-  // The last error (until a change or a reload succeeds) or notice, wrapped to the panel.
-  if (!s.error.empty() || !s.notice.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, s.error.empty() ? ImVec4(0.6f, 0.9f, 0.6f, 1) : ImVec4(1, 0.4f, 0.35f, 1));
-    ImGui::TextWrapped("%s", s.error.empty() ? s.notice.c_str() : s.error.c_str());
-    ImGui::PopStyleColor();
-  }
   ImGui::Separator();
   if (!worker) ImGui::BeginDisabled();  // a scripted run: the controls show only
   float exposure = float(s.exposure);
@@ -91,6 +85,13 @@ void ViewPanel::Draw(const ViewSnapshot& s, ViewWorker* worker, float x, float y
   if (!worker) ImGui::EndDisabled();
   if (s.lens_plot && ImGui::CollapsingHeader("lens in cross-section", ImGuiTreeNodeFlags_DefaultOpen))
     DrawLensSection(*s.lens_plot, ImGui::GetContentRegionAvail().x);
+  // The last error (until a change or a reload succeeds) or notice, wrapped, below the
+  // controls (which it would otherwise push down under the mouse).
+  if (!s.error.empty() || !s.notice.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, s.error.empty() ? ImVec4(0.6f, 0.9f, 0.6f, 1) : ImVec4(1, 0.4f, 0.35f, 1));
+    ImGui::TextWrapped("%s", s.error.empty() ? s.notice.c_str() : s.error.c_str());
+    ImGui::PopStyleColor();
+  }
   ImGui::End();
 }
 

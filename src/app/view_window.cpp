@@ -262,15 +262,14 @@ int RunViewWindow(std::unique_ptr<ViewSession> session, std::optional<ViewScript
         worker->Latest(snapshot);
         if (!have_pose || (!controls.busy() && controls.TakePoseFromSession())) pose = snapshot.pose, have_pose = true;
       }
-      if (snapshot.generation != shown) {
+      if (snapshot.display.frame != shown) {  // a new picture
         texture.Upload(snapshot.display);
-        shown = snapshot.generation;
+        shown = snapshot.display.frame;
         shown_times.push_back(now());
-        while (shown_times.size() > 1 && shown_times.back() - shown_times.front() > 2) shown_times.pop_front();
       }
-      const double fps = shown_times.size() > 1
-                             ? (shown_times.size() - 1) / std::max(1e-6, shown_times.back() - shown_times.front())
-                             : 0;
+      while (shown_times.size() > 1 && now() - shown_times.front() > 2) shown_times.pop_front();
+      // Pictures shown in the last two seconds, per second.
+      const double fps = shown_times.size() > 1 ? (shown_times.size() - 1) / std::max(1e-6, now() - shown_times.front()) : 0;
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();

@@ -17,7 +17,11 @@ std::vector<double> DefaultFields(const LensSystem& lens, double lambda_nm) {
   return {0.0, 0.7 * max_field, max_field};
 }
 
-Svg PlotLensLayout(const LensSystem& lens, const std::vector<double>& fields, double lambda_nm) {
+namespace {
+
+// `object_mm`: the distance of the object plane before the entrance pupil (infinity: parallel
+// fans, aimed by the chief ray).
+Svg Layout(const LensSystem& lens, const std::vector<double>& fields, double lambda_nm, double object_mm) {
   const LensPrescription& rx = lens.prescription();
   const int n = int(rx.surfaces.size());
   ParaxialData p = lens.Paraxial(lambda_nm);
@@ -114,16 +118,26 @@ Svg PlotLensLayout(const LensSystem& lens, const std::vector<double>& fields, do
   const char* colours[] = {"#1f5fd1", "#1a9e3a", "#d12f1f", "#a31fd1", "#d18a1f"};
   for (size_t f = 0; f < fields.size(); ++f) {
     double theta = fields[f] * M_PI / 180;
-    std::optional<LensRay> chief = ChiefRay(lens, fields[f], lambda_nm);
-    if (!chief) continue;
-    Vec3d dir(0, std::sin(theta), std::cos(theta));
+    std::optional<LensRay> chief;
+    if (!std::isfinite(object_mm)) {
+      chief = ChiefRay(lens, fields[f], lambda_nm);
+      if (!chief) continue;
+    }
+    const double z_pupil = lens.VertexZ(0) + p.entrance_pupil_position;
+    const Vec3d object(0, -object_mm * std::tan(theta), z_pupil - object_mm);
     for (double frac : {-1.0, -0.5, 0.0, 0.5, 1.0}) {
-      // Across the entrance pupil, perpendicular to the beam, measured at the chief ray's start.
-      double y0 = chief->o.y + 0.98 * frac * p.entrance_pupil_diameter / 2 / std::cos(theta);
-      LensRay r{{0, y0, chief->o.z}, dir};
-      // Begin the drawn ray at the left edge of the plot.
-      double back = (chief->o.z - z_start) / dir.z;
-      r.o = r.o - dir * back;
+      LensRay r;
+      if (chief) {
+        // Across the entrance pupil, perpendicular to the beam, measured at the chief ray's start.
+        const Vec3d dir(0, std::sin(theta), std::cos(theta));
+        r = LensRay{{0, chief->o.y + 0.98 * frac * p.entrance_pupil_diameter / 2 / std::cos(theta), chief->o.z}, dir};
+      } else {
+        // From the object point to a point across the paraxial entrance pupil.
+        r = LensRay{object, Normalize(Vec3d(0, 0.98 * frac * p.entrance_pupil_diameter / 2, z_pupil) - object)};
+      }
+      // Begin the drawn ray at the left edge of the plot (or at the object, if nearer).
+      const double back = (r.o.z - z_start) / r.d.z;
+      if (back > 0) r.o = r.o - r.d * back;
       // Through birefringent crystals, the ordinary waves' rays and, dashed, the extraordinary ones'.
       for (int pass = 0; pass < (crystals ? 2 : 1); ++pass) {
         const uint32_t waves = pass ? ~0u : 0u;
@@ -143,7 +157,29 @@ Svg PlotLensLayout(const LensSystem& lens, const std::vector<double>& fields, do
   }
   if (crystals)
     svg.Text({W - margin, 24.0 + 16 * (fields.size() + 1)}, "dashed: the crystals' extraordinary waves", 12, "end");
+  if (std::isfinite(object_mm))
+    svg.Text({W - margin, 24.0 + 16 * (fields.size() + 1 + crystals)},
+             fmt::format("from {:.3g} m before the entrance pupil", object_mm * 1e-3), 12, "end");
   return svg;
+}
+
+}  // namespace
+
+Svg PlotLensLayout(const LensSystem& lens, const std::vector<double>& fields, double lambda_nm) {
+  return Layout(lens, fields, lambda_nm, INFINITY);
+}
+
+Svg PlotLensLayoutAsFocused(const LensSystem& lens, const std::vector<double>& fields, double lambda_nm) {
+  const ParaxialData p = lens.Paraxial(lambda_nm);
+  const double beyond_focus = lens.BackFocus() - p.bfl;  // x': the film beyond the back focal point
+  double object = INFINITY;
+  if (beyond_focus > 1e-9 * std::abs(p.efl)) {
+    // x = -n0 f^2 / x' from the front focal point; the distance from the entrance pupil.
+    const double x = -p.object_index * p.efl * p.efl / beyond_focus;
+    const double z_object = lens.VertexZ(0) + p.ffl + x, z_pupil = lens.VertexZ(0) + p.entrance_pupil_position;
+    if (z_pupil - z_object > 0) object = z_pupil - z_object;
+  }
+  return Layout(lens, fields, lambda_nm, object);
 }
 
 }  // namespace objektiv

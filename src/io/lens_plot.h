@@ -12,6 +12,11 @@ namespace objektiv {
 // meridional fans of real rays (five per field, across the entrance pupil) for each field
 // angle in degrees. Rays stop where an aperture blocks them.
 Svg PlotLensLayout(const LensSystem& lens, const std::vector<double>& fields_deg, double lambda_nm = kLambdad);
+// The same with the fans from the plane the lens is focused on (the viewer's lens, set up as
+// its camera is): the object plane paraxially conjugate to the film (Newton's x x' = -f^2), its
+// points at each field angle seen from the entrance pupil, each fan aimed across the paraxial
+// entrance pupil; from infinity where the film lies at or before the back focus.
+Svg PlotLensLayoutAsFocused(const LensSystem& lens, const std::vector<double>& fields_deg, double lambda_nm = kLambdad);
 
 // A default set of fields: on axis, 70% and 100% of the field that covers a full-frame
 // half-diagonal (21.6 mm) or the largest the lens can trace, whichever is smaller.

@@ -127,10 +127,10 @@ void ViewSession::Load() {
   Restart();
 }
 
-std::unique_ptr<Camera> ViewSession::MakeCamera(const ObjectNode& sensor, int width, int height) const {
+std::unique_ptr<Camera> ViewSession::MakeCamera(const ObjectNode& sensor, int width, int height, bool quiet) const {
   // Quiet after the scene's first load: the lens's set-up is logged once, not at every change.
   const spdlog::level::level_enum level = spdlog::get_level();
-  if (doc_.root) spdlog::set_level(std::max(level, spdlog::level::warn));
+  if (doc_.root) spdlog::set_level(std::max(level, quiet ? spdlog::level::err : spdlog::level::warn));
   try {
     std::unique_ptr<Camera> camera = BuildCamera(sensor, width, height, GlassCatalog::Default());
     spdlog::set_level(level);
@@ -291,7 +291,7 @@ const Camera& ViewSession::PreviewCamera(int divisor) {
     SensorOverrides preview = sensor_;
     if (preview.type() == "realistic") preview.SetBoolean("spectral_mis", false);
     const int w = std::max(1, full_width_ / divisor), h = std::max(1, full_height_ / divisor);
-    it = preview_cameras_.emplace(divisor, MakeCamera(preview.Node(), w, h)).first;
+    it = preview_cameras_.emplace(divisor, MakeCamera(preview.Node(), w, h, /*quiet=*/true)).first;
   }
   return *it->second;
 }
@@ -411,6 +411,7 @@ void ViewSession::ShowXyz(const std::vector<float>& xyz, int width, int height) 
   const Image display =
       ApplyToneMap(XyzToImage(xyz, width, height, *setup_.film.color_space, float(exposure_)), setup_.film.tonemap);
   display_.width = width, display_.height = height;
+  display_.frame++;
   display_.rgba.resize(size_t(4) * width * height);
   for (size_t i = 0; i < size_t(width) * height; ++i) {
     for (int c = 0; c < 3; ++c) display_.rgba[4 * i + c] = Quantise(display.pixels[3 * i + c]);

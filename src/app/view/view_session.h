@@ -41,6 +41,7 @@ namespace objektiv {
 struct DisplayImage {
   int width = 0, height = 0;
   std::vector<uint8_t> rgba;
+  uint64_t frame = 0;  // grows with each picture made
 };
 
 // The lens's layers (render/lens_layers.h) the picture can show alone.
@@ -134,7 +135,8 @@ class ViewSession {
   void Load();  // (scene_path_, options_) -> doc_, setup_, sensor_ (keeping pose and values set)
   void Restart();
   bool Frame(const std::atomic<bool>* stop);
-  std::unique_ptr<Camera> MakeCamera(const ObjectNode& sensor, int width, int height) const;
+  // `quiet`: no warnings either (a preview's camera: the camera of the passes says them).
+  std::unique_ptr<Camera> MakeCamera(const ObjectNode& sensor, int width, int height, bool quiet = false) const;
   const Camera& PreviewCamera(int divisor);
   int PreviewDivisor() const;
   void PreviewFrame(int divisor, const std::atomic<bool>* stop);

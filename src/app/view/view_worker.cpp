@@ -28,7 +28,7 @@ std::vector<double> FieldsOf(const RealisticCamera& camera) {
 void TakeSnapshot(const ViewSession& s, ViewSnapshot& out, const Camera*& plotted) {
   const auto* real = dynamic_cast<const RealisticCamera*>(&s.camera());
   if (&s.camera() != plotted) {
-    out.lens_plot = real ? std::make_shared<const Svg>(PlotLensLayout(real->lens(), FieldsOf(*real))) : nullptr;
+    out.lens_plot = real ? std::make_shared<const Svg>(PlotLensLayoutAsFocused(real->lens(), FieldsOf(*real))) : nullptr;
     plotted = &s.camera();
   }
   out.generation++;
@@ -78,7 +78,7 @@ void ViewWorker::Publish(const std::string& error, const std::string& notice, bo
   std::lock_guard<std::mutex> lock(mutex_);
   TakeSnapshot(*session_, latest_, plotted_);
   if (!error.empty() || changed) latest_.error = error;
-  if (!notice.empty()) latest_.notice = notice;
+  if (!notice.empty() || changed) latest_.notice = notice;
 }
 
 void ViewWorker::Run() {

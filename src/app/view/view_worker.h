@@ -33,7 +33,7 @@ struct ViewSnapshot {
   // ray fans (io/lens_plot.h: what `objektiv lens plot` draws); null for the others.
   std::shared_ptr<const Svg> lens_plot;
   std::string error;      // the last change's or reload's that failed ("" when none since)
-  std::string notice;     // the last event worth saying (saved a file, read the scene again)
+  std::string notice;     // the last event worth saying (saved a file, read the scene again), until a change
 };
 
 // The session's state into `out` (generation + 1), the lens plot made again where the camera
