@@ -304,7 +304,10 @@ void ViewSession::PreviewFrame(int divisor, const std::atomic<bool>* stop) {
   RenderOptions ro;
   ro.spp_begin = 0, ro.spp_end = 1;
   ro.threads = options_.threads;
-  ro.stop = stop;
+  // A moving preview's frame is short (its resolution is cut for that) and finishes: stopped
+  // at each of a drag's steps, its frames would show black where they stopped. The still one,
+  // at full resolution, stops for a change.
+  ro.stop = moving_ ? nullptr : stop;
   const RenderStats stats = Render(camera, *preview_integrator_, sampler, film, ro);
   if (stats.seconds > 0) preview_seconds_per_pixel_ = stats.seconds / (double(w) * h);
   ShowXyz(film.Xyz(), w, h);
