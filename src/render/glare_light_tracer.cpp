@@ -205,6 +205,7 @@ GlareImage TraceGlare(const Scene& scene, const RealisticCamera& camera, const C
     while (first < settings.paths) {
       // Ctrl-C: stop after the chunk in progress; the paths traced stand for all (below).
       if (InterruptRequested().load(std::memory_order_relaxed)) break;
+      if (settings.stop && settings.stop->load(std::memory_order_relaxed)) break;
       // The learning paths, then the guided ones (chunks never straddle the phases).
       const bool learning = first < learn;
       const int64_t end = first < learn_lights ? learn_lights : learning ? learn : settings.paths;

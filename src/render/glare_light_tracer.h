@@ -32,6 +32,7 @@
 // Deterministic on any number of threads: every path's random numbers come from its index,
 // and paths are splatted in index order.
 #pragma once
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -46,6 +47,8 @@ struct GlareSettings {
   bool delta_light_ghosts = false;  // keep point, spot and directional lights' two-reflection paths
   int max_reflections = 8;     // walks reflecting more often are dropped (they carry R^10 and less)
   uint64_t seed = 0;
+  // Turned true: stop after the chunk in progress, as for Ctrl-C (the interactive viewer's change).
+  const std::atomic<bool>* stop = nullptr;
 };
 
 struct GlareImage {

@@ -183,6 +183,10 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
   const int bands = (out.height + kBandRows - 1) / kBandRows;
   std::vector<Traced> traced(kChunk);
   for (size_t first = 0; first < tasks.size(); first += kChunk) {
+    if (settings.stop && settings.stop->load(std::memory_order_relaxed)) {
+      out.stopped = true;
+      break;
+    }
     const size_t count = std::min(kChunk, tasks.size() - first);
     tbb::parallel_for(size_t(0), count, [&](size_t k) {
       const Task& t = tasks[first + k];

@@ -19,6 +19,7 @@
 // camera's transmission off, the lights' own images leave out the lens's losses as the camera
 // rays do.
 #pragma once
+#include <atomic>
 #include <vector>
 
 #include "render/film.h"
@@ -32,6 +33,9 @@ struct FlareSettings {
   int grid = 32;              // rays per side of each bundle (edges subdivided further)
   int wavelengths = 16;
   double cull = 1e-3;
+  // Turned true: no further chunk of bundles is traced (the interactive viewer's change);
+  // FlareImages::stopped says so, the images then partial.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 struct FlareImages {
@@ -41,6 +45,7 @@ struct FlareImages {
   // Ghosts per source, summed over sources: traced, culled as too dim, and those whose light
   // does not reach the film at all.
   int sources = 0, ghosts_traced = 0, ghosts_culled = 0, ghosts_dark = 0;
+  bool stopped = false;  // by FlareSettings::stop, before every bundle was traced
   double seconds = 0;
 };
 

@@ -69,7 +69,8 @@ void PrepareFilmForLensEffects(const Camera& camera, Film& film) {
     if (real->effects().diffraction == DiffractionScope::kEmitters) film.KeepEmitted();
 }
 
-LensLayers ComposeLensLayers(const Scene& scene, const Camera& camera, const Film& film, uint64_t seed) {
+LensLayers ComposeLensLayers(const Scene& scene, const Camera& camera, const Film& film, uint64_t seed,
+                             const std::atomic<bool>* stop) {
   LensLayers out;
   const CropWindow& crop = film.crop();
   out.width = crop.Width(), out.height = crop.Height();
@@ -84,7 +85,9 @@ LensLayers ComposeLensLayers(const Scene& scene, const Camera& camera, const Fil
   flare.grid = e.ghost_grid;
   flare.wavelengths = e.wavelengths;
   flare.cull = e.ghost_cull;
+  flare.stop = stop;
   FlareImages f = RenderFlare(scene, *real, crop, flare);
+  out.stopped = f.stopped;
   for (const std::unique_ptr<Light>& light : scene.lights()) out.other_lights += !light->IsDelta();
   out.flare_sources = f.sources, out.ghosts_traced = f.ghosts_traced, out.ghosts_culled = f.ghosts_culled;
   out.ghosts_dark = f.ghosts_dark;
@@ -97,15 +100,20 @@ LensLayers ComposeLensLayers(const Scene& scene, const Camera& camera, const Fil
     GlareSettings g;
     g.paths = int64_t(e.glare_samples) * real->width() * real->height();
     g.seed = seed;
+    g.stop = stop;
     spdlog::debug("ghosts and glare by light tracing: {} paths", g.paths);
     const GlareImage glare = TraceGlare(scene, *real, crop, g);
+    out.stopped = out.stopped || glare.paths < g.paths;
     Add(out.ghosts, glare.xyz);
     out.glare_paths = glare.paths, out.glare_landed = glare.landed, out.glare_paths_asked = g.paths;
     out.glare_median_landings = glare.median_landings;
     out.glare_seconds = glare.seconds;
   }
 
-  if (e.diffraction == DiffractionScope::kOff) return out;
+  if (e.diffraction == DiffractionScope::kOff || (stop && stop->load())) {
+    out.stopped = out.stopped || (stop && stop->load());
+    return out;
+  }
   const auto start = std::chrono::steady_clock::now();
   // The light to spread: what came straight from emitters (the bright points' images with
   // it), or everything.

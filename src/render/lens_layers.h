@@ -9,6 +9,7 @@
 // - their sum: the picture.
 // Without effects, primary is the film's image and the others are empty.
 #pragma once
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -30,6 +31,7 @@ struct LensLayers {
   int64_t glare_paths = 0, glare_landed = 0, glare_paths_asked = 0;
   double glare_median_landings = 0;
   double ghost_seconds = 0, glare_seconds = 0, diffraction_seconds = 0;
+  bool stopped = false;  // by ComposeLensLayers' stop: partial
 };
 
 // The memory the effects take beyond the film (the layers, the passes' images per thread, the
@@ -40,6 +42,9 @@ uint64_t LensEffectsBytes(const Camera& camera, const CropWindow& crop, int thre
 void PrepareFilmForLensEffects(const Camera& camera, Film& film);
 
 // `seed`: the sampler's, so that renders with different seeds have independent glare noise.
-LensLayers ComposeLensLayers(const Scene& scene, const Camera& camera, const Film& film, uint64_t seed = 0);
+// `stop` (the interactive viewer's): once true, the passes end early and `stopped` says the
+// layers are not whole.
+LensLayers ComposeLensLayers(const Scene& scene, const Camera& camera, const Film& film, uint64_t seed = 0,
+                             const std::atomic<bool>* stop = nullptr);
 
 }  // namespace objektiv

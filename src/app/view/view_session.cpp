@@ -339,17 +339,20 @@ void ViewSession::Pass(const std::atomic<bool>* stop) {
     spp_done_ += n;
     pass_seconds_per_spp_ = stats.seconds / n;
   }
-  // The lens's layers take seconds (the ghosts' bundles) and cannot be stopped for a change:
-  // not while the controls are in use (the first after the passes have run kLayerDelay
-  // seconds, or at their end), then spaced so that they take a fifth of the time.
+  // The lens's layers take seconds (the ghosts' bundles; a change stops them between chunks
+  // of bundles): not while the controls are in use (the first after the passes have run
+  // kLayerDelay seconds, or at their end), then spaced so that they take a fifth of the time.
   const bool first = !layers_ && (Seconds(restarted_) >= kLayerDelay || spp_done_ == end);
   const bool again = layers_ && Seconds(layers_time_) >= kLayerSpacing * layers_seconds_;
   if (HasLensLayers() && !stats.Partial() && (first || again)) {
     const auto start = std::chrono::steady_clock::now();
-    layers_ = ComposeLensLayers(*setup_.scene, *setup_.camera, *film_, setup_.sampler.seed);
-    layers_film_ = film_->Xyz();
-    layers_seconds_ = Seconds(start);
-    layers_time_ = std::chrono::steady_clock::now();
+    LensLayers layers = ComposeLensLayers(*setup_.scene, *setup_.camera, *film_, setup_.sampler.seed, stop);
+    if (!layers.stopped) {  // (stopped for a change: the image starts again anyway)
+      layers_ = std::move(layers);
+      layers_film_ = film_->Xyz();
+      layers_seconds_ = Seconds(start);
+      layers_time_ = std::chrono::steady_clock::now();
+    }
   }
   ShowFilm();
   progress_.preview = false;

@@ -13,7 +13,7 @@
 // (app/view/scene_with_camera.h), bit for bit. The lens's ghosts and diffraction
 // (render/lens_layers.h), where the sensor asks for them, are composed over the image once the
 // passes have run 2 seconds (or reached their end), then again once 4 times the composition's
-// time has passed (they cannot be stopped for a change); between, the picture shows the
+// time has passed (a change stops them); between, the picture shows the
 // film's later passes with the ghosts and diffraction as last composed. A saved image
 // composes them anew.
 //
