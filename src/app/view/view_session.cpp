@@ -71,14 +71,33 @@ ViewSession::ViewSession(const std::string& scene_path, const ViewOptions& optio
 
 ViewSession::~ViewSession() = default;
 
+// The viewer's film in the scene's document, before it is built: the whole film (its crop
+// window left out), at the size asked for (so that the camera is set up once, at that size).
+// Returns whether the film had a crop window.
+bool WholeFilmOfSize(const SceneDocument& doc, int width, int height) {
+  bool cropped = false;
+  for (const auto& sensor : doc.root->children)
+    if (sensor->tag == "sensor")
+      for (const auto& film : sensor->children)
+        if (film->tag == "film") {
+          cropped = std::erase_if(film->props, [](const Property& p) { return p.name.rfind("crop_", 0) == 0; }) > 0;
+          for (auto [name, value] : {std::pair<const char*, int>{"width", width}, {"height", height}}) {
+            if (value <= 0) continue;
+            std::erase_if(film->props, [name](const Property& p) { return p.name == name; });
+            film->props.push_back(Property{name, int64_t(value), "integer", film->loc});
+          }
+        }
+  return cropped;
+}
+
 void ViewSession::Load() {
   SceneDocument doc = ParseSceneFile(scene_path_, options_.defines);
+  const bool cropped = WholeFilmOfSize(doc, options_.width, options_.height);
   RenderSetup setup = BuildScene(doc, GlassCatalog::Default());
   SensorOverrides sensor = sensor_;
   if (doc_.root == nullptr) sensor = SensorOverrides(SensorNode(doc));
   else sensor.Rebase(SensorNode(doc));
   FilmSettings& film = setup.film;
-  const bool cropped = !(film.crop == CropWindow{0, 0, film.width, film.height});
   if (cropped && doc_.root == nullptr)
     spdlog::warn("{}:{}: the viewer shows the whole film: its crop window is left out (and so is it from the camera "
                  "the viewer saves)", film.loc.file, film.loc.line);
