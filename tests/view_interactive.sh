@@ -23,9 +23,16 @@ if [[ ${1:-} == --inside ]]; then  # (within Xvfb)
   # Focus: a click on the picture.
   xdotool mousemove --window "$wid" 40 60 click 1
   sleep 3
-  xdotool key --window "$wid" ctrl+s
-  for _ in $(seq 200); do [[ -s $work/cornell-box-lens-view.xml ]] && break; sleep 0.1; done
+  # ctrl + S, again every 2 s until both are saved and the image has its 2 samples per pixel
+  # (a loaded machine may take a while to render them).
+  for _ in $(seq 30); do
+    xdotool key --window "$wid" ctrl+s
+    sleep 2
+    [[ -s $work/cornell-box-lens-view.xml && -s $work/cornell-box-lens-view.exr ]] &&
+      oiiotool --info -v "$work/cornell-box-lens-view.exr" | grep -q 'objektiv:spp: 2$' && break
+  done
   [[ -s $work/cornell-box-lens-view.xml ]] || fail "ctrl + S saved no camera: $(cat "$work/view.log")"
+  [[ -s $work/cornell-box-lens-view.exr ]] || fail "ctrl + S saved no image: $(cat "$work/view.log")"
   sleep 1
   xdotool key --window "$wid" Escape
   for _ in $(seq 100); do kill -0 "$pid" 2> /dev/null || break; sleep 0.1; done

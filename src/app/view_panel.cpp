@@ -162,11 +162,10 @@ void ViewPanel::LensControls(const ViewSnapshot& s, ViewWorker* worker) {
 }
 
 void ViewPanel::SaveBoth(ViewWorker& worker) const {
+  // Apart: the camera is saved even before the image has a pass to save.
   const std::string image = image_path_, camera = camera_path_;
-  worker.Post([image, camera](ViewSession& s) {
-    s.SaveImage(image);
-    s.SaveScene(camera);
-  }, "saved " + image + " and " + camera);
+  worker.Post([camera](ViewSession& s) { s.SaveScene(camera); }, "saved " + camera);
+  worker.Post([image](ViewSession& s) { s.SaveImage(image); }, "saved " + image + " and the camera");
 }
 
 void ViewPanel::Files(ViewWorker* worker) {
