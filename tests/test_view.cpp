@@ -227,6 +227,26 @@ TEST(ViewSession, SavesNeverReplaceTheScenesFiles) {
   EXPECT_THROW(s.SaveImage((dir / "no-such-folder" / "x.exr").string()), InputError);
 }
 
+// A click right after a move looks through the camera where it stands now; an exposure
+// change shows the picture already shown (a preview's) again.
+TEST(ViewSession, ClicksAndExposureFollowTheLatestChange) {
+  const fs::path dir = TempDir("latest");
+  WriteFile(dir / "scene.xml", LensScene());
+  ViewSession s((dir / "scene.xml").string(), {});
+  const std::optional<Vec3f> before = s.PointAt(18, 12);
+  CameraPose p = s.pose();
+  p.Move(0.6, 0, 0);
+  s.SetPose(p, false);
+  const std::optional<Vec3f> moved = s.PointAt(18, 12);  // no frame rendered since the move
+  ASSERT_TRUE(before && moved);
+  EXPECT_GT(moved->x - before->x, 0.3);  // the camera moved right: so did what it sees ahead
+  ASSERT_TRUE(s.Step());
+  ASSERT_TRUE(s.progress().preview);
+  const std::vector<uint8_t> shown = s.display().rgba;
+  s.SetExposure(s.exposure() + 2);
+  EXPECT_NE(s.display().rgba, shown);
+}
+
 TEST(ViewSession, RefusedValuesLeaveTheCameraAsItWas) {
   const fs::path dir = TempDir("refused");
   WriteFile(dir / "scene.xml", LensScene());

@@ -246,8 +246,13 @@ int RunViewWindow(std::unique_ptr<ViewSession> session, std::optional<ViewScript
     std::deque<double> shown_times;  // when the last pictures were shown (for frames per second)
     const auto start = std::chrono::steady_clock::now();
     auto now = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    bool idle = false;  // the last frame showed nothing new and no control was in use
+    uint64_t last_generation = 0;  // the snapshot's in the last frame
     while (!glfwWindowShouldClose(window)) {
-      glfwPollEvents();
+      // Idle, the window waits for input (or a tenth of a second: a new picture) instead of
+      // drawing as fast as it can (with software OpenGL, a core's worth).
+      if (idle) glfwWaitEventsTimeout(0.1);
+      else glfwPollEvents();
       ViewScript::Action action;
       if (scripted) {
         try {
@@ -267,6 +272,9 @@ int RunViewWindow(std::unique_ptr<ViewSession> session, std::optional<ViewScript
         shown = snapshot.display.frame;
         shown_times.push_back(now());
       }
+      idle = !scripted && snapshot.generation == last_generation && !controls.busy() &&
+             !ImGui::GetIO().WantCaptureMouse && !ImGui::IsAnyItemActive();
+      last_generation = snapshot.generation;
       while (shown_times.size() > 1 && now() - shown_times.front() > 2) shown_times.pop_front();
       // Pictures shown in the last two seconds, per second.
       const double fps = shown_times.size() > 1 ? (shown_times.size() - 1) / std::max(1e-6, now() - shown_times.front()) : 0;

@@ -159,7 +159,8 @@ Svg Layout(const LensSystem& lens, const std::vector<double>& fields, double lam
     svg.Text({W - margin, 24.0 + 16 * (fields.size() + 1)}, "dashed: the crystals' extraordinary waves", 12, "end");
   if (std::isfinite(object_mm))
     svg.Text({W - margin, 24.0 + 16 * (fields.size() + 1 + crystals)},
-             fmt::format("from {:.3g} m before the entrance pupil", object_mm * 1e-3), 12, "end");
+             fmt::format("from {:.3g} m before the entrance pupil (paraxially conjugate to the film)", object_mm * 1e-3),
+             12, "end");
   return svg;
 }
 

@@ -243,7 +243,12 @@ void ViewSession::ChangeSensor(const std::function<void(SensorOverrides&)>& chan
   Restart();
 }
 
-std::optional<Vec3f> ViewSession::PointAt(double x, double y) const {
+std::optional<Vec3f> ViewSession::PointAt(double x, double y) {
+  // Through the camera where it stands now (moved since the last pass: built there first).
+  if (full_camera_stale_) {
+    setup_.camera = MakeCamera(sensor_.Node(), full_width_, full_height_);
+    full_camera_stale_ = false;
+  }
   // Through the middle of the lens, else (a mirror lens's obstruction) points around it.
   const Vec2f lens_points[] = {{0.5f, 0.5f}, {0.5f, 0.8f}, {0.8f, 0.5f}, {0.5f, 0.2f}, {0.2f, 0.5f}, {0.5f, 0.95f}};
   for (Vec2f u : lens_points) {
@@ -278,7 +283,7 @@ bool ViewSession::FocusAt(double x, double y) {
 void ViewSession::SetExposure(double stops) {
   exposure_ = stops;
   setup_.film.exposure = float(stops);
-  if (film_ && !moving_) ShowFilm();
+  if (!shown_xyz_.empty()) ShowXyz(shown_xyz_, display_.width, display_.height);
 }
 
 void ViewSession::SetLayer(ViewLayer layer) {
@@ -433,6 +438,7 @@ void ViewSession::ShowFilm() {
 }
 
 void ViewSession::ShowXyz(const std::vector<float>& xyz, int width, int height) {
+  if (&xyz != &shown_xyz_) shown_xyz_ = xyz;  // (for another exposure of the same picture)
   const Image display =
       ApplyToneMap(XyzToImage(xyz, width, height, *setup_.film.color_space, float(exposure_)), setup_.film.tonemap);
   display_.width = width, display_.height = height;

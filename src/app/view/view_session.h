@@ -93,8 +93,9 @@ class ViewSession {
   // changed) where the ray meets nothing or the camera cannot focus (a pinhole).
   bool FocusAt(double x, double y);
   // The scene point the middle of the lens sees through a pixel, if any.
-  std::optional<Vec3f> PointAt(double x, double y) const;
-  // Display exposure in stops (the film's `exposure` to begin with); does not restart.
+  std::optional<Vec3f> PointAt(double x, double y);
+  // Display exposure in stops (the film's `exposure` to begin with); does not restart: the
+  // picture shown (a preview's too) is shown again at once.
   double exposure() const { return exposure_; }
   void SetExposure(double stops);
   ViewLayer layer() const { return layer_; }
@@ -174,6 +175,7 @@ class ViewSession {
   std::chrono::steady_clock::time_point layers_time_, restarted_;
 
   DisplayImage display_;
+  std::vector<float> shown_xyz_;  // the picture shown, before the exposure and the tone curve
   ViewProgress progress_;
   std::map<std::string, std::filesystem::file_time_type> watched_;
 };
