@@ -209,6 +209,9 @@ TEST(ViewSession, LensesChangeAsAPhotographerChangesThem) {
   s.SetSensorProperty("lens", std::string("telephoto.250mm"), "string");  // opens to f/5.6 only
   EXPECT_FALSE(s.sensor().Find("fnumber"));
   EXPECT_EQ(s.sensor().String("lens"), "telephoto.250mm");
+  EXPECT_NE(s.TakeNotice().find("wide open"), std::string::npos);
+  s.SetSensorProperty("lens", std::string("dgauss.50mm"), "string");  // opens to f/2: f/2.8 again
+  EXPECT_EQ(s.sensor().Float("fnumber"), 2.8);
   s.SetSensorProperty("lens", std::string("mine.lens"), "string");
   const auto* real = dynamic_cast<const RealisticCamera*>(&s.camera());
   ASSERT_TRUE(real);

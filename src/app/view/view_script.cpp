@@ -1,5 +1,6 @@
 #include "app/view/view_script.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <map>
@@ -31,6 +32,13 @@ double Number(const ScriptCommand& c, size_t i, const std::string&) {
   if (ec != std::errc() || ptr != t.data() + t.size() || !std::isfinite(v))
     throw InputError(fmt::format("'{}' is not a number", t));
   return v;
+}
+
+// A film position (continuous pixel coordinates) on the film.
+void CheckPixel(const ViewSession& session, double x, double y) {
+  const int w = session.setup().film.width, h = session.setup().film.height;
+  if (x < 0 || y < 0 || x >= w || y >= h)
+    throw InputError(fmt::format("({:g}, {:g}) is outside the {}x{} film", x, y, w, h));
 }
 
 }  // namespace
@@ -76,7 +84,9 @@ ViewScript::Action ViewScript::Step(ViewSession& session) {
   auto at = [&](const std::exception& e) { return MakeInputError(path_, c.line, "{}: {}", v, e.what()); };
   try {
     if (v == "samples") {
-      const int n = int(Number(c, 0, path_));
+      const double count = Number(c, 0, path_);
+      if (count != std::floor(count)) throw InputError(fmt::format("'{}' is not a whole number", c.args[0]));
+      const int n = int(std::clamp(count, -1.0, 1e9));
       if (n < 1 || n > session.setup().sampler.spp)
         throw InputError(fmt::format("{} is not between 1 and the scene's {} samples per pixel (view --spp sets it)", n,
                                      session.setup().sampler.spp));
@@ -100,6 +110,7 @@ ViewScript::Action ViewScript::Step(ViewSession& session) {
         throw InputError(fmt::format("a '{}' sensor has no property '{}'", session.sensor().type(), c.args[0]));
       session.ResetSensorProperty(c.args[0]);
     } else if (v == "focus") {
+      CheckPixel(session, Number(c, 0, path_), Number(c, 1, path_));
       if (!session.FocusAt(Number(c, 0, path_), Number(c, 1, path_)))
         throw InputError("nothing to focus on there (no surface under the pixel, or a camera without focus)");
     } else if (v == "orbit" || v == "turn") {
@@ -115,6 +126,7 @@ ViewScript::Action ViewScript::Step(ViewSession& session) {
       pose.Dolly(f);
       session.SetPose(pose, false);
     } else if (v == "look-at") {
+      CheckPixel(session, Number(c, 0, path_), Number(c, 1, path_));
       std::optional<Vec3f> p = session.PointAt(Number(c, 0, path_), Number(c, 1, path_));
       if (!p) throw InputError("no surface under that pixel");
       pose.LookAt(Vec3d(*p));
@@ -127,7 +139,7 @@ ViewScript::Action ViewScript::Step(ViewSession& session) {
       for (ViewLayer l : {ViewLayer::kSum, ViewLayer::kPrimary, ViewLayer::kGhosts, ViewLayer::kDiffraction})
         if (name == ViewLayerName(l)) session.SetLayer(l), found = true;
       if (!found) throw InputError(fmt::format("'{}' is not picture, primary, ghosts or diffraction", name));
-      if (!session.HasLensLayers())
+      if (!session.HasLensLayers() && name != "picture")
         throw InputError("the sensor makes no lens layers (its ghosts and diffraction are off)");
     } else if (v == "preview") {
       if (!c.args.empty() && c.args[0] != "moving") throw InputError(fmt::format("'{}' is not 'moving'", c.args[0]));

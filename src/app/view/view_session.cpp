@@ -219,17 +219,39 @@ void ViewSession::SetSensorProperty(const std::string& name, PropertyData value,
     if (std::filesystem::path(*file).is_relative() && std::filesystem::is_regular_file(*file, ec))
       value = std::filesystem::absolute(*file, ec).lexically_normal().string();
   }
+  if (name != "lens") {
+    if (name == "fnumber" || name == "aperture_diameter") wanted_fnumber_.reset();
+    return ChangeSensor([&](SensorOverrides& s) { s.Set(name, value, type_name); });
+  }
+  // Another lens: the f-number asked for (before a slower lens took it wide open) if this one
+  // opens so far, else wide open (said).
+  if (wanted_fnumber_) {
+    try {
+      const double n = *wanted_fnumber_;
+      ChangeSensor([&](SensorOverrides& s) { s.Set(name, value, type_name), s.SetFloat("fnumber", n); });
+      wanted_fnumber_.reset();
+      return;
+    } catch (const InputError&) {
+    }
+  }
   try {
     ChangeSensor([&](SensorOverrides& s) { s.Set(name, value, type_name); });
   } catch (const InputError&) {
-    // Another lens that does not open as far as the f-number asks: wide open instead.
-    if (name != "lens" || !(sensor_.Find("fnumber") || sensor_.Find("aperture_diameter"))) throw;
+    if (!(sensor_.Find("fnumber") || sensor_.Find("aperture_diameter"))) throw;
+    if (!wanted_fnumber_) wanted_fnumber_ = sensor_.Float("fnumber");
     ChangeSensor([&](SensorOverrides& s) {
       s.Set(name, value, type_name);
       s.Unset("fnumber"), s.Unset("aperture_diameter");
     });
-    spdlog::warn("{} does not open as far as the f-number asked: wide open", std::get<std::string>(value));
+    notice_ = fmt::format("{} does not open as far as the f-number asked: wide open", std::get<std::string>(value));
+    spdlog::warn("{}", notice_);
   }
+}
+
+std::string ViewSession::TakeNotice() {
+  std::string n;
+  n.swap(notice_);
+  return n;
 }
 
 void ViewSession::ChangeSensor(const std::function<void(SensorOverrides&)>& change) {

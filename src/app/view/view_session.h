@@ -83,8 +83,11 @@ class ViewSession {
   const SensorOverrides& sensor() const { return sensor_; }
   void ChangeSensor(const std::function<void(SensorOverrides&)>& change);
   // The same value again changes nothing; another lens that does not open as far as the
-  // f-number set asks is taken wide open (warned).
+  // f-number set asks is taken wide open (warned, and a notice), and the next lens that does
+  // gets that f-number back.
   void SetSensorProperty(const std::string& name, PropertyData value, const std::string& type_name);
+  // What the last changes had to say beside errors (a lens taken wide open), once.
+  std::string TakeNotice();
   void ResetSensorProperty(const std::string& name) {
     ChangeSensor([&](SensorOverrides& s) { s.Reset(name); });
   }
@@ -154,7 +157,9 @@ class ViewSession {
   double exposure_ = 0, scene_exposure_ = 0;
   bool full_camera_stale_ = false;
   bool scene_cropped_ = false;  // the scene's film has a crop window (the viewer leaves it out)
-  std::string stalled_;         // why Step does nothing until the next change  // the pose changed since the camera of the passes was built
+  std::string stalled_;         // why Step does nothing until the next change
+  std::optional<double> wanted_fnumber_;  // the f-number a slower lens could not take
+  std::string notice_;  // the pose changed since the camera of the passes was built
   ViewLayer layer_ = ViewLayer::kSum;
   bool moving_ = false;
   int full_width_ = 0, full_height_ = 0;

@@ -98,6 +98,7 @@ void ViewWorker::Run() {
       try {
         change(*session_);
         if (!what.empty()) notice = what;
+        if (std::string said = session_->TakeNotice(); !said.empty()) notice = said;
       } catch (const InputError& e) {
         error = e.what();
       } catch (const std::exception& e) {
