@@ -81,10 +81,11 @@ bool WholeFilmOfSize(const SceneDocument& doc, int width, int height) {
       for (const auto& film : sensor->children)
         if (film->tag == "film") {
           cropped = std::erase_if(film->props, [](const Property& p) { return p.name.rfind("crop_", 0) == 0; }) > 0;
-          for (auto [name, value] : {std::pair<const char*, int>{"width", width}, {"height", height}}) {
-            if (value <= 0) continue;
-            std::erase_if(film->props, [name](const Property& p) { return p.name == name; });
-            film->props.push_back(Property{name, int64_t(value), "integer", film->loc});
+          for (const std::pair<const char*, int>& size : {std::pair<const char*, int>{"width", width}, {"height", height}}) {
+            if (size.second <= 0) continue;
+            const std::string name = size.first;
+            std::erase_if(film->props, [&name](const Property& p) { return p.name == name; });
+            film->props.push_back(Property{name, int64_t(size.second), "integer", film->loc});
           }
         }
   return cropped;
