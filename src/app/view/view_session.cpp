@@ -267,11 +267,7 @@ void ViewSession::ChangeSensor(const std::function<void(SensorOverrides&)>& chan
 }
 
 std::optional<Vec3f> ViewSession::PointAt(double x, double y) {
-  // Through the camera where it stands now (moved since the last pass: built there first).
-  if (full_camera_stale_) {
-    setup_.camera = MakeCamera(sensor_.Node(), full_width_, full_height_);
-    full_camera_stale_ = false;
-  }
+  BuildCameraWhereItStands();  // (moved since the last pass)
   // Through the middle of the lens, else (a mirror lens's obstruction) points around it.
   const Vec2f lens_points[] = {{0.5f, 0.5f}, {0.5f, 0.8f}, {0.8f, 0.5f}, {0.5f, 0.2f}, {0.2f, 0.5f}, {0.5f, 0.95f}};
   for (Vec2f u : lens_points) {
@@ -366,11 +362,14 @@ void ViewSession::PreviewFrame(int divisor, const std::atomic<bool>* stop) {
   progress_.layers = false;
 }
 
+void ViewSession::BuildCameraWhereItStands() {
+  if (!full_camera_stale_) return;
+  setup_.camera = MakeCamera(sensor_.Node(), full_width_, full_height_);
+  full_camera_stale_ = false;
+}
+
 void ViewSession::Pass(const std::atomic<bool>* stop) {
-  if (full_camera_stale_) {
-    setup_.camera = MakeCamera(sensor_.Node(), full_width_, full_height_);
-    full_camera_stale_ = false;
-  }
+  BuildCameraWhereItStands();
   if (!film_) film_ = std::make_unique<Film>(MakeRenderFilm(setup_, 16, options_.threads));
   const int max_spp = setup_.sampler.spp;
   const int end = stop_at_ > 0 ? std::min(stop_at_, max_spp) : max_spp;

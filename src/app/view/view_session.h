@@ -139,6 +139,8 @@ class ViewSession {
   void Load();  // (scene_path_, options_) -> doc_, setup_, sensor_ (keeping pose and values set)
   void Restart();
   bool Frame(const std::atomic<bool>* stop);
+  // The camera of the passes built again from the node if the pose changed since it was.
+  void BuildCameraWhereItStands();
   // `quiet`: no warnings either (a preview's camera: the camera of the passes says them).
   std::unique_ptr<Camera> MakeCamera(const ObjectNode& sensor, int width, int height, bool quiet = false) const;
   const Camera& PreviewCamera(int divisor);
