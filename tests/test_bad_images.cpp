@@ -6,6 +6,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -96,6 +97,29 @@ TEST(BadImages, SizesBeyondTheLimitsAreRefused) {
   fs::path wide = dir / "five.tif";
   WriteTiffClaiming(wide, 16384, 16384, 5);
   ExpectImageError([&] { ReadImageAny(wide.string()); }, wide, "needs 5120 MiB as floats, more than the limit of 4096 MiB");
+}
+
+// Finite values near the float maximum overflowed the environment map's sums and bilinear
+// blends into Inf and NaN (found by fuzz_image): refused as not finite values are.
+TEST(BadImages, PixelValuesBeyondTheLimitAreRefused) {
+  fs::path dir = TempDir("values");
+  for (float v : {3.4e38f, -2e21f, INFINITY}) {
+    fs::path p = dir / "big.exr";
+    auto out = OIIO::ImageOutput::create(p.string());
+    ASSERT_TRUE(out);
+    ASSERT_TRUE(out->open(p.string(), OIIO::ImageSpec(2, 1, 3, OIIO::TypeDesc::FLOAT)));
+    const float pixels[6] = {0.5f, 0.5f, 0.5f, 1, v, 2};
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels));
+    ASSERT_TRUE(out->close());
+    ExpectImageError([&] { ReadImageRgb(p.string()); }, p, std::isinf(v) ? "pixel (1, 0) is not finite" : "pixel (1, 0) holds");
+  }
+  fs::path p = dir / "fine.exr";
+  auto out = OIIO::ImageOutput::create(p.string());
+  ASSERT_TRUE(out->open(p.string(), OIIO::ImageSpec(1, 1, 3, OIIO::TypeDesc::FLOAT)));
+  const float pixels[3] = {1e20f, -1e20f, 1.6e9f};
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels));
+  ASSERT_TRUE(out->close());
+  EXPECT_EQ(ReadImageRgb(p.string()).At(0, 0, 0), 1e20f);
 }
 
 TEST(BadImages, AShortFileClaimingAHugeImageFailsEarly) {

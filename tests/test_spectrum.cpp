@@ -2,6 +2,8 @@
 // wavelength sampling and the film's XYZ estimator.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "base/cie.h"
 #include "base/color_space.h"
 #include "base/rng.h"
@@ -89,6 +91,17 @@ TEST(RgbToSpectrum, EmissionRecordsItsRgb) {
   EXPECT_NEAR(back.x, 17, 0.02);
   EXPECT_NEAR(back.y, 12, 0.02);
   EXPECT_NEAR(back.z, 4, 0.02);
+}
+
+// A NaN colour (a texture looked up at a NaN coordinate) is NaN at every wavelength; it
+// indexed the table with a NaN cast to int (undefined behaviour, found by fuzz_image).
+TEST(RgbToSpectrum, NanColourGivesNanSamples) {
+  SampledWavelengths lambda = SampledWavelengths::SampleVisible(0.3f);
+  for (Vec3f c : {Vec3f(NAN, 0.2f, 0.5f), Vec3f(0.1f, NAN, 0.f), Vec3f(NAN)}) {
+    SampledSpectrum s = RgbToSigmoid(c).Sample(lambda);
+    for (int i = 0; i < kSpectrumSamples; ++i) EXPECT_TRUE(std::isnan(s[i])) << i;
+  }
+  EXPECT_TRUE(std::isnan(Spectrum::RgbIlluminant(Vec3f(INFINITY, 1.f, 0.f))(550)));
 }
 
 TEST(Illuminants, BlackbodyPeaksAtOneAndFollowsWien) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace objektiv {
 
@@ -23,6 +24,9 @@ SigmoidPolynomial RgbToSigmoid(Vec3f rgb) {
     for (int i = 0; i < kRgbTableRes; ++i) z[i] = RgbTableZ(i);
     return z;
   }();
+  // A NaN (a texture looked up at a NaN coordinate, Inf / Inf) stays NaN in every sample
+  // rather than indexing the table with it.
+  if (std::isnan(rgb.x) || std::isnan(rgb.y) || std::isnan(rgb.z)) return {0, 0, NAN};
   rgb = Vec3f(Clamp(rgb.x, 0, 1), Clamp(rgb.y, 0, 1), Clamp(rgb.z, 0, 1));
   // Grey: the constant sigmoid, solved in closed form.
   if (rgb.x == rgb.y && rgb.y == rgb.z) {

@@ -164,6 +164,9 @@ Image ToRgb(const RawImage& r, bool raw, const std::string& path) {
       for (int c = 0; c < 3; ++c) {
         float v = src.At(x, y, n >= 3 ? c : 0);
         if (!std::isfinite(v)) throw MakeInputError(path, 0, "pixel ({}, {}) is not finite", x, y);
+        if (std::abs(v) > kMaxPixelValue)
+          throw MakeInputError(path, 0, "pixel ({}, {}) holds {:g}, beyond the largest value read ({:g})", x, y, v,
+                               kMaxPixelValue);
         out.At(x, y, c) = decode ? SrgbToLinear(v) : v;
       }
   return out;

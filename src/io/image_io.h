@@ -14,11 +14,17 @@ namespace objektiv {
 // they are decoded a strip at a time, so a short file claiming a huge image fails early.
 inline constexpr int64_t kMaxImagePixels = int64_t(1) << 28;
 inline constexpr int64_t kMaxImageBytes = int64_t(4) << 30;
+// Largest pixel value read, in magnitude. No scene's radiance or reflectance comes near it
+// (the Sun's disc is about 1.6e9 cd/m^2), and beyond it the sums and products a renderer
+// forms (an environment map's importance over all its texels, bilinear blends, radiance over
+// a small pdf) overflow single precision into Inf and NaN.
+inline constexpr float kMaxPixelValue = 1e20f;
 
 // Linear RGB (3 channels). Grey images are replicated, alpha is dropped. Integer-encoded
 // files (PNG, JPEG, 8/16-bit TIFF) are taken as sRGB and decoded to linear unless `raw`.
 // Throws InputError naming the file if it cannot be read (missing, not a regular file, beyond
-// the limits above, truncated or corrupt, or too large for the memory left). Records the file
+// the limits above, a pixel value not finite or beyond kMaxPixelValue, truncated or corrupt,
+// or too large for the memory left). Records the file
 // as an input of this run (base/input_files.h), as the mesh readers do.
 Image ReadImageRgb(const std::string& path, bool raw = false);
 // Every channel as stored (float), for comparisons.
