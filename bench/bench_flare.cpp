@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "camera/realistic_camera.h"
 #include "io/lens_psf.h"
@@ -58,17 +59,19 @@ void BM_DiffractionPsf(benchmark::State& state) {
 BENCHMARK(BM_DiffractionPsf)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // A point light 12 degrees right of the view axis, 10 m away, seen by the double Gauss.
-RenderSetup FlareScene() {
-  return LoadSceneFromString(R"(<scene version="3.0.0">
+RenderSetup FlareScene(int width = 1280, int height = 720) {
+  std::string xml = R"(<scene version="3.0.0">
   <sensor type="realistic">
     <string name="lens" value="dgauss.50mm"/><float name="fnumber" value="2.8"/><integer name="blades" value="6"/>
     <boolean name="ghosts" value="true"/><float name="ghost_cull" value="0"/>
     <transform name="to_world"><lookat origin="0, 0, 0" target="0, 0, -1" up="0, 1, 0"/></transform>
-    <film type="hdrfilm"><integer name="width" value="1280"/><integer name="height" value="720"/></film>
+    <film type="hdrfilm"><integer name="width" value="WIDTH"/><integer name="height" value="HEIGHT"/></film>
   </sensor>
   <emitter type="point"><point name="position" x="2.07" y="0.5" z="-9.78"/><rgb name="intensity" value="1"/></emitter>
-</scene>)",
-                             "flare.xml", {});
+</scene>)";
+  xml.replace(xml.find("WIDTH"), 5, std::to_string(width));
+  xml.replace(xml.find("HEIGHT"), 6, std::to_string(height));
+  return LoadSceneFromString(xml, "flare.xml", {});
 }
 
 void BM_FlareLayer(benchmark::State& state) {
@@ -110,6 +113,42 @@ void BM_FlareLayer(benchmark::State& state) {
                              f.ghosts_traced, settings.grid, settings.wavelengths));
 }
 BENCHMARK(BM_FlareLayer)->Args({16, 8})->Args({32, 16})->Args({64, 16})->Args({64, 8})->Args({80, 8})->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+// The ghosts of one point light at preview quality (FlareSettings::Preview) at 640 x 480, on
+// every core: what the live viewer composes while the camera moves. Counters as
+// BM_FlareLayer's, against the same finer layer at 640 x 480.
+void BM_GhostPreview(benchmark::State& state) {
+  spdlog::set_level(spdlog::level::warn);
+  const RenderSetup setup = FlareScene(640, 480);
+  const auto& camera = dynamic_cast<const RealisticCamera&>(*setup.camera);
+  const CropWindow crop = setup.film.crop;
+  FlareSettings settings = FlareSettings::Preview();
+  settings.ghosts = true;
+  FlareImages f;
+  for (auto _ : state) {
+    f = RenderFlare(*setup.scene, camera, crop, settings);
+    benchmark::DoNotOptimize(f.ghosts.data());
+  }
+  static const FlareImages r = [&] {
+    FlareSettings fine;
+    fine.ghosts = true, fine.cull = 0, fine.grid = 128, fine.wavelengths = 32;
+    return RenderFlare(*setup.scene, camera, crop, fine);
+  }();
+  double peak = 0, sum_r = 0, sum_f = 0;
+  for (size_t i = 1; i < r.ghosts.size(); i += 3) peak = std::max<double>(peak, r.ghosts[i]);
+  std::vector<double> diffs;
+  for (size_t i = 1; i < r.ghosts.size(); i += 3) {
+    sum_r += r.ghosts[i], sum_f += f.ghosts[i];
+    if (r.ghosts[i] > 0.01 * peak) diffs.push_back(std::abs(f.ghosts[i] - r.ghosts[i]) / r.ghosts[i]);
+  }
+  std::sort(diffs.begin(), diffs.end());
+  state.counters["median_rel_diff"] = diffs.empty() ? 0 : diffs[diffs.size() / 2];
+  state.counters["p95_rel_diff"] = diffs.empty() ? 0 : diffs[diffs.size() * 95 / 100];
+  state.counters["total_Y_ratio"] = sum_r > 0 ? sum_f / sum_r : 0;
+  state.SetLabel(fmt::format("one point light, dgauss f/2.8, {} ghosts ({} culled), grid {}, {} wavelengths, 640x480, all cores",
+                             f.ghosts_traced, f.ghosts_culled, settings.grid, settings.wavelengths));
+}
+BENCHMARK(BM_GhostPreview)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_DiffractionPass(benchmark::State& state) {
   const StopShape iris = StopShape::Iris(6, 0, 0);

@@ -225,3 +225,53 @@ TEST(Ghosts, SplatTakesSliversWithFlatEdges) {
 
 }  // namespace
 }  // namespace objektiv
+
+namespace objektiv {
+namespace {
+
+// A preview's region search (grid 8, narrowed by a second) finds every ghost's light as the
+// full search (grid 32) does, and its bundles with one level of edge cells carry the same
+// flux within 2%.
+TEST(Ghosts, PreviewSearchAndEdgesKeepTheLight) {
+  const LensSystem lens = Set(LoadLens("dgauss.50mm", GlassCatalog::Default()), 2.8);
+  const PointSource source = PointSource::Distant({-std::sin(0.2), 0.05, std::cos(0.2)});
+  int compared = 0;
+  for (const Ghost& g : TwoReflectionGhosts(lens)) {
+    const std::optional<BundleRegion> full = GhostRegion(lens, g, source, 550), preview = GhostRegion(lens, g, source, 550, 8);
+    ASSERT_EQ(full.has_value(), preview.has_value()) << g.first << " " << g.second;
+    if (!full) continue;
+    BundleOptions o;
+    o.grid = 32, o.region = &*full;
+    double want = 0, got = 0;
+    for (const FilmTriangle& t : GhostBundle(lens, g, source, 550, o)) want += t.flux;
+    o.grid = 16, o.region = &*preview, o.edge_levels = 1;
+    for (const FilmTriangle& t : GhostBundle(lens, g, source, 550, o)) got += t.flux;
+    EXPECT_NEAR(got, want, 0.02 * want) << g.first << " " << g.second;
+    ++compared;
+  }
+  EXPECT_GT(compared, 35);
+}
+
+// Taking a varying irradiance at pixel centres (a preview's splat) keeps each ghost's total
+// and changes its pixels little.
+TEST(Ghosts, SplatAtPixelCentresKeepsTheFlux) {
+  const LensSystem lens = Set(LoadLens("dgauss.50mm", GlassCatalog::Default()), 2.8);
+  const PointSource source = PointSource::Distant({-std::sin(0.17), 0, std::cos(0.17)});
+  const FilmRaster raster{320, 240, -18, -13.5, 36.0 / 320, 27.0 / 240};
+  const std::vector<Ghost> ghosts = TwoReflectionGhosts(lens);
+  for (const Ghost& g : {ghosts[3], ghosts[17], ghosts[40]}) {
+    const std::vector<FilmTriangle> bundle = GhostBundle(lens, g, source, 550, 16);
+    std::vector<float> exact(size_t(320) * 240 * 3, 0.f), centres = exact;
+    SplatColour(bundle, raster, Vec3d(1, 1, 1), exact.data());
+    SplatColour(bundle, raster, Vec3d(1, 1, 1), centres.data(), true);
+    double sum_exact = 0, sum_centres = 0, peak = 0, worst = 0;
+    for (size_t i = 0; i < exact.size(); i += 3) sum_exact += exact[i], sum_centres += centres[i], peak = std::max<double>(peak, exact[i]);
+    for (size_t i = 0; i < exact.size(); i += 3) worst = std::max<double>(worst, std::abs(centres[i] - exact[i]));
+    EXPECT_GT(sum_exact, 0);
+    EXPECT_NEAR(sum_centres, sum_exact, 0.01 * sum_exact) << g.first << " " << g.second;
+    EXPECT_LT(worst, 0.1 * peak) << g.first << " " << g.second;
+  }
+}
+
+}  // namespace
+}  // namespace objektiv

@@ -4,6 +4,9 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <utility>
+
+#include "optics/compiled_sequence.h"
 
 namespace objektiv {
 
@@ -41,7 +44,8 @@ class BundleTracer {
  public:
   BundleTracer(const LensSystem& lens, std::span<const SurfaceVisit> path, const PointSource& source, double lambda_nm,
                const BundleOptions& options = {})
-      : lens_(lens), path_(path), source_(source), options_(options), lambda_(lambda_nm) {
+      : lens_(lens), path_(path), source_(source), options_(options), lambda_(lambda_nm),
+        compiled_(CompiledSequence::Compile(lens, path, lambda_nm)) {
     for (const SurfaceVisit& v : path)
       if (const SurfaceDirt* dirt = lens.surface(v.surface).dirt.get()) mean_dirt_ *= dirt->MeanTransmittance();
     const LensSurface& front = lens.surface(0);
@@ -79,18 +83,32 @@ class BundleTracer {
     thread_local std::vector<Vec3d> points;
     points.clear();
     const bool masked = bool(options_.stop_transmittance);
-    TraceResult r = TraceSequence(lens_, {at, d}, lambda_, path_, masked ? &points : nullptr);
-    if (!r.ray || !(r.ray->d.z > 0)) return c;  // (r.dirt, the corner's own, gives way to mean_dirt_)
-    const double t = (lens_.FilmZ() - r.ray->o.z) / r.ray->d.z;
+    // Where the ray crossed the stop (each time: a ghost's path may cross it three times).
+    thread_local std::vector<Vec3d> stop_points;
+    stop_points.clear();
+    std::optional<LensRay> out;
+    double transmittance = 1;
+    if (compiled_) {
+      const CompiledSequence::Result r = compiled_->Trace({at, d}, masked ? &stop_points : nullptr);
+      if (r.alive) out = r.ray;
+      transmittance = r.surface_transmittance * r.internal_transmittance;
+    } else {
+      const TraceResult r = TraceSequence(lens_, {at, d}, lambda_, path_, masked ? &points : nullptr);
+      out = r.ray;  // (r.dirt, the corner's own, gives way to mean_dirt_)
+      transmittance = r.surface_transmittance * r.internal_transmittance;
+      for (size_t k = 0; k < points.size() && k < path_.size(); ++k)
+        if (path_[k].surface == lens_.StopIndex()) stop_points.push_back(points[k]);
+    }
+    if (!out || !(out->d.z > 0)) return c;
+    const double t = (lens_.FilmZ() - out->o.z) / out->d.z;
     c.alive = true;
-    c.film = {r.ray->o.x + t * r.ray->d.x, r.ray->o.y + t * r.ray->d.y};
+    c.film = {out->o.x + t * out->d.x, out->o.y + t * out->d.y};
     // Dust and scratches by the share of each surface they leave clear: the grid's cells are
     // far coarser than the particles, which a corner ray would take for whole cells.
-    c.transmittance = (options_.lossless ? 1.0 : r.surface_transmittance * r.internal_transmittance) * mean_dirt_;
+    c.transmittance = (options_.lossless ? 1.0 : transmittance) * mean_dirt_;
     if (masked) {
       const double inv = 1 / lens_.StopSemiDiameter();
-      for (size_t k = 0; k < points.size() && k < path_.size(); ++k)
-        if (path_[k].surface == lens_.StopIndex()) c.transmittance *= options_.stop_transmittance(points[k].x * inv, points[k].y * inv);
+      for (const Vec3d& p : stop_points) c.transmittance *= options_.stop_transmittance(p.x * inv, p.y * inv);
     }
     return c;
   }
@@ -104,30 +122,45 @@ class BundleTracer {
   }
 
   // The part of the start square [-reach, reach]^2 whose rays get through: found on a coarse
-  // grid, widened by one coarse step. Empty: none do. A grid of 32 has a step finer than a
-  // quarter of the entrance pupil unless the stop is small; then a finer grid, with the step
-  // a quarter of the pupil's diameter, makes sure (the light of any path crosses the stop).
-  bool Region(Vec2d& lo, Vec2d& hi) const {
+  // grid of `coarse` cells a side, widened by one coarse step. Empty: none do. A grid of 32 has
+  // a step finer than a quarter of the entrance pupil unless the stop is small; then a finer
+  // grid, with the step a quarter of the pupil's diameter, makes sure (the light of any path
+  // crosses the stop). A coarser grid than 32 (a preview's) is followed by a second one of the
+  // same size over what the first found, which narrows the region to its finer step.
+  bool Region(Vec2d& lo, Vec2d& hi, int coarse = 32) const {
     const double pupil = lens_.paraxial().entrance_pupil_diameter;
     const int fine = pupil > 0 ? int(std::clamp(std::ceil(8 * reach_ / pupil), 32.0, 256.0)) : 256;
-    for (int n : {32, fine}) {
-      const double step = 2 * reach_ / n;
-      lo = Vec2d(INFINITY, INFINITY), hi = Vec2d(-INFINITY, -INFINITY);
-      for (int j = 0; j <= n; ++j)
-        for (int i = 0; i <= n; ++i) {
-          const Vec2d p(centre_.x - reach_ + i * step, centre_.y - reach_ + j * step);
-          if (!Trace(p).alive) continue;
-          lo = Vec2d(std::min(lo.x, p.x), std::min(lo.y, p.y));
-          hi = Vec2d(std::max(hi.x, p.x), std::max(hi.y, p.y));
-        }
-      if (lo.x <= hi.x) {
-        lo = Vec2d(std::max(centre_.x - reach_, lo.x - step), std::max(centre_.y - reach_, lo.y - step));
-        hi = Vec2d(std::min(centre_.x + reach_, hi.x + step), std::min(centre_.y + reach_, hi.y + step));
-        return true;
+    const Vec2d square = centre_ - Vec2d(reach_, reach_);
+    for (int n : {coarse, fine}) {
+      if (!Search(square, Vec2d(2 * reach_, 2 * reach_), n, lo, hi)) {
+        if (fine == n) break;  // the coarse grid was fine enough
+        continue;
       }
-      if (fine == 32) break;  // the coarse grid was fine enough
+      if (n < 32) {
+        const Vec2d first_lo = lo, first_hi = hi;
+        if (!Search(first_lo, first_hi - first_lo, n, lo, hi)) lo = first_lo, hi = first_hi;
+      }
+      return true;
     }
     return false;
+  }
+
+  // The rays of an (n + 1) x (n + 1) grid over the rectangle from `from` of `size` that get
+  // through: their bounds, widened by one step within the rectangle. False: none does.
+  bool Search(Vec2d from, Vec2d size, int n, Vec2d& lo, Vec2d& hi) const {
+    const Vec2d step(size.x / n, size.y / n), to(from.x + size.x, from.y + size.y);
+    lo = Vec2d(INFINITY, INFINITY), hi = Vec2d(-INFINITY, -INFINITY);
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) {
+        const Vec2d p(from.x + i * step.x, from.y + j * step.y);
+        if (!Trace(p).alive) continue;
+        lo = Vec2d(std::min(lo.x, p.x), std::min(lo.y, p.y));
+        hi = Vec2d(std::max(hi.x, p.x), std::max(hi.y, p.y));
+      }
+    if (!(lo.x <= hi.x)) return false;
+    lo = Vec2d(std::max(from.x, lo.x - step.x), std::max(from.y, lo.y - step.y));
+    hi = Vec2d(std::min(to.x, hi.x + step.x), std::min(to.y, hi.y + step.y));
+    return true;
   }
 
   std::vector<FilmTriangle> Bundle(int grid, const BundleRegion* region) const {
@@ -175,7 +208,7 @@ class BundleTracer {
         const Corner* c = &corners[size_t(j) * w + i];
         const double* e = &corner_e[size_t(j) * w + i];
         const std::array<double, 4> ce = {e[0], e[1], e[w + 1], e[w]};
-        Cell(Vec2d(lo.x + i * du, lo.y + j * dv), du, dv, {c[0], c[1], c[w + 1], c[w]}, kSubdivisions, out,
+        Cell(Vec2d(lo.x + i * du, lo.y + j * dv), du, dv, {c[0], c[1], c[w + 1], c[w]}, options_.edge_levels, out,
              cell_e[size_t(j) * grid + i] > 0 ? &ce : nullptr);
       }
     return out;
@@ -184,9 +217,8 @@ class BundleTracer {
  private:
   // A cell whose corners (counter-clockwise from its low corner) all get through becomes two
   // triangles on the film; one where only some do lies across the edge of what gets through
-  // (a rim, the stop's blades): it is split in four, down to kSubdivisions levels, so that the
-  // bundle's edge follows the opening.
-  static constexpr int kSubdivisions = 3;
+  // (a rim, the stop's blades): it is split in four, down to BundleOptions::edge_levels
+  // levels, so that the bundle's edge follows the opening.
   // `e`: the irradiance at the corners of a whole cell of the grid (a smooth picture); none:
   // uniform over each triangle.
   void Cell(Vec2d p, double du, double dv, const std::array<Corner, 4>& c, int depth, std::vector<FilmTriangle>& out,
@@ -251,6 +283,7 @@ class BundleTracer {
   BundleOptions options_;
   double lambda_, start_z_, reach_;
   Vec2d centre_{0, 0};  // of the start square
+  std::optional<CompiledSequence> compiled_;  // the path at lambda_, where it can be compiled
 };
 
 }  // namespace
@@ -264,9 +297,9 @@ std::vector<SurfaceVisit> DirectPath(const LensSystem& lens) {
 }
 
 std::optional<BundleRegion> FindRegion(const LensSystem& lens, std::span<const SurfaceVisit> path,
-                                       const PointSource& source, double lambda_nm) {
+                                       const PointSource& source, double lambda_nm, int search_grid) {
   BundleRegion r;
-  if (!BundleTracer(lens, path, source, lambda_nm).Region(r.lo, r.hi)) return std::nullopt;
+  if (!BundleTracer(lens, path, source, lambda_nm).Region(r.lo, r.hi, search_grid)) return std::nullopt;
   // Other wavelengths' light gets through a region a little moved (the pupils' chromatic
   // shift, far less than the search's step, which the region is already widened by): 2% more.
   const Vec2d margin = (r.hi - r.lo) * 0.02;
@@ -277,12 +310,13 @@ std::optional<BundleRegion> FindRegion(const LensSystem& lens, std::span<const S
 }  // namespace
 
 std::optional<BundleRegion> GhostRegion(const LensSystem& lens, const Ghost& ghost, const PointSource& source,
-                                        double lambda_nm) {
-  return FindRegion(lens, GhostPath(lens, ghost), source, lambda_nm);
+                                        double lambda_nm, int search_grid) {
+  return FindRegion(lens, GhostPath(lens, ghost), source, lambda_nm, search_grid);
 }
 
-std::optional<BundleRegion> DirectRegion(const LensSystem& lens, const PointSource& source, double lambda_nm) {
-  return FindRegion(lens, DirectPath(lens), source, lambda_nm);
+std::optional<BundleRegion> DirectRegion(const LensSystem& lens, const PointSource& source, double lambda_nm,
+                                         int search_grid) {
+  return FindRegion(lens, DirectPath(lens), source, lambda_nm, search_grid);
 }
 
 std::vector<FilmTriangle> GhostBundle(const LensSystem& lens, const Ghost& ghost, const PointSource& source,
@@ -367,8 +401,10 @@ Overlap OverlapOf(const Vec2d& a, const Vec2d& b, const Vec2d& c, int x, int y) 
 // p -> q adds, row by row, the signed area it sweeps to its right into the cells it crosses,
 // so that the running sum along a row is the covered share of each pixel (its sign the
 // polygon's orientation). `acc` has rows of `width` cells, the polygon within x in [0,
-// width - 1); only rows [0, rows) are kept (the polygon may reach beyond them).
-void AccumulateEdge(Vec2d p, Vec2d q, int width, int rows, double* acc) {
+// width - 1); only rows [0, rows) are kept (the polygon may reach beyond them). `span`, per
+// row, the first and the last cell written so far (widened here): a row's sum is 0 outside
+// them (a thin triangle across the image covers a few pixels of each row).
+void AccumulateEdge(Vec2d p, Vec2d q, int width, int rows, double* acc, std::pair<int, int>* span) {
   if (p.y == q.y) return;
   double direction = 1;
   if (p.y > q.y) {
@@ -390,6 +426,8 @@ void AccumulateEdge(Vec2d p, Vec2d q, int width, int rows, double* acc) {
     const double lo = std::min(x, x_next), hi = std::max(x, x_next);
     const double lo_floor = std::floor(lo);
     const int i0 = int(lo_floor), i1 = int(std::ceil(hi));
+    span[y].first = std::min(span[y].first, i0);
+    span[y].second = std::max(span[y].second, std::max(i1, i0 + 1));
     if (i1 <= i0 + 1) {
       // Within one column: the part of the cell right of the segment's mean x.
       const double mean = 0.5 * (x + x_next) - lo_floor;
@@ -452,12 +490,14 @@ namespace {
 
 // The rasterisation of Splat: add(pixel index, irradiance) for every pixel a triangle covers.
 template <class Add>
-void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, double weight, Add&& add_at) {
+void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, double weight, bool pixel_centres,
+               Add&& add_at) {
   const double pixel_area = r.w * r.h;
   auto add = [&](int x, int y, double v) {
     if (x >= 0 && y >= 0 && x < r.width && y < r.height) add_at(size_t(y) * r.width + x, v);
   };
   std::vector<double> coverage;
+  std::vector<std::pair<int, int>> spans;
   for (const FilmTriangle& t : triangles) {
     // Pixel coordinates.
     const Vec2d a((t.a.x - r.x0) / r.w, (t.a.y - r.y0) / r.h), b((t.b.x - r.x0) / r.w, (t.b.y - r.y0) / r.h),
@@ -481,11 +521,6 @@ void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, dou
     // centroid of the part of the triangle in a pixel (where a linear function has its mean).
     const double mean_e = (t.ea + t.eb + t.ec) / 3;
     const double det = (b.y - c.y) * (a.x - c.x) + (c.x - b.x) * (a.y - c.y);
-    auto relative = [&](Vec2d p) {
-      const double la = ((b.y - c.y) * (p.x - c.x) + (c.x - b.x) * (p.y - c.y)) / det;
-      const double lb = ((c.y - a.y) * (p.x - c.x) + (a.x - c.x) * (p.y - c.y)) / det;
-      return std::max(0.0, (la * t.ea + lb * t.eb + (1 - la - lb) * t.ec) / mean_e);
-    };
     // Its change per pixel: where the centroid of a partial pixel's part (within half a pixel
     // of the pixel's centre each way) would change the value by less than kCentroidTolerance,
     // the pixel's centre does (clipping the triangle to the pixel cost half the splat); and
@@ -494,9 +529,12 @@ void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, dou
     constexpr double kCentroidTolerance = 2e-3;
     const double gx = ((t.ea - t.ec) * (b.y - c.y) + (t.eb - t.ec) * (c.y - a.y)) / (det * mean_e);
     const double gy = ((t.ea - t.ec) * (c.x - b.x) + (t.eb - t.ec) * (a.x - c.x)) / (det * mean_e);
+    // The relative value is linear: its value at c plus the gradient's share.
+    const double at_c = t.ec / mean_e;
+    auto relative = [&](Vec2d p) { return std::max(0.0, at_c + gx * (p.x - c.x) + gy * (p.y - c.y)); };
     const double spread = (std::max({t.ea, t.eb, t.ec}) - std::min({t.ea, t.eb, t.ec})) / mean_e;
     const bool uniform = spread < 1e-3 || (x1 - x0 <= 1 && y1 - y0 <= 1);
-    const bool centres = 0.5 * (std::abs(gx) + std::abs(gy)) < kCentroidTolerance;
+    const bool centres = pixel_centres || 0.5 * (std::abs(gx) + std::abs(gy)) < kCentroidTolerance;
     // The value of pixel (x, y) given the share of it the triangle covers.
     auto value = [&](int x, int y, double share) {
       if (uniform) return per_area * share;
@@ -509,13 +547,15 @@ void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, dou
     if (x0 >= 0 && x1 < r.width) {
       const int row0 = std::max(y0, 0), bw = x1 - x0 + 2, bh = std::min(y1, r.height - 1) - row0 + 1;
       coverage.assign(size_t(bw) * bh, 0.0);
+      spans.assign(size_t(bh), {bw, -1});
       const Vec2d o(x0, row0);
-      for (const auto& [p, q] : {std::pair{a, b}, {b, c}, {c, a}}) AccumulateEdge(p - o, q - o, bw, bh, coverage.data());
+      for (const auto& [p, q] : {std::pair{a, b}, {b, c}, {c, a}})
+        AccumulateEdge(p - o, q - o, bw, bh, coverage.data(), spans.data());
       for (int y = 0; y < bh; ++y) {
         double sum = 0;
         const double* row = &coverage[size_t(y) * bw];
         const size_t start = size_t(row0 + y) * r.width + x0;
-        for (int x = 0; x < bw - 1; ++x) {
+        for (int x = spans[y].first, end = std::min(spans[y].second, bw - 2); x <= end; ++x) {
           sum += row[x];
           const double share = std::min(std::abs(sum), 1.0);
           if (share > 1e-12) add_at(start + x, value(x0 + x, row0 + y, share));
@@ -550,11 +590,12 @@ void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, dou
 }  // namespace
 
 void Splat(std::span<const FilmTriangle> triangles, const FilmRaster& r, double weight, float* image, int stride) {
-  Rasterise(triangles, r, weight, [&](size_t i, double v) { image[i * stride] += float(v); });
+  Rasterise(triangles, r, weight, false, [&](size_t i, double v) { image[i * stride] += float(v); });
 }
 
-void SplatColour(std::span<const FilmTriangle> triangles, const FilmRaster& r, const Vec3d& weight, float* xyz) {
-  Rasterise(triangles, r, 1.0, [&](size_t i, double v) {
+void SplatColour(std::span<const FilmTriangle> triangles, const FilmRaster& r, const Vec3d& weight, float* xyz,
+                 bool pixel_centres) {
+  Rasterise(triangles, r, 1.0, pixel_centres, [&](size_t i, double v) {
     float* p = xyz + 3 * i;
     p[0] += float(weight.x * v), p[1] += float(weight.y * v), p[2] += float(weight.z * v);
   });

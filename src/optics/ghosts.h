@@ -13,7 +13,7 @@
 // quadrilateral's area (the bundle's change of cross-section: where a ghost is focused, it is
 // bright). The grid first spans the front element coarsely, then, finer, only the part whose
 // rays get through; cells that lie across the edge of what gets through are split in four,
-// three times over, so that the ghost's outline follows the stop's.
+// BundleOptions::edge_levels times over, so that the ghost's outline follows the stop's.
 #pragma once
 #include <functional>
 #include <optional>
@@ -62,14 +62,15 @@ struct FilmTriangle {
 };
 
 // The part of the start square (a plane just in front of the lens) whose rays get through a
-// path, found at one wavelength (a coarse grid of rays, then a finer one if the pupil is
-// small) and widened to hold the other wavelengths' too: a bundle's grid spans it. Nothing
-// where no light gets through.
+// path, found at one wavelength (a coarse grid of `search_grid` rays a side, then a finer one
+// if the pupil is small; a grid below 32, a preview's, narrowed by a second of its size over
+// what the first found) and widened to hold the other wavelengths' too: a bundle's grid spans
+// it. Nothing where no light gets through.
 struct BundleRegion {
   Vec2d lo, hi;
 };
 std::optional<BundleRegion> GhostRegion(const LensSystem& lens, const Ghost& ghost, const PointSource& source,
-                                        double lambda_nm);
+                                        double lambda_nm, int search_grid = 32);
 
 // The ghost's bundle at one wavelength: `grid` x `grid` cells over the part of the front
 // element its light gets through (each cell split in two triangles): `region` (from
@@ -78,12 +79,14 @@ std::optional<BundleRegion> GhostRegion(const LensSystem& lens, const Ghost& gho
 std::vector<FilmTriangle> GhostBundle(const LensSystem& lens, const Ghost& ghost, const PointSource& source,
                                       double lambda_nm, int grid = 64, const BundleRegion* region = nullptr);
 
-// Everything a bundle can be asked for: the grid, the region (see GhostBundle), the stop's
+// Everything a bundle can be asked for: the grid, the levels of splitting cells across the
+// edge of what gets through (3: an eighth of a cell; a preview's 1), the region (see GhostBundle), the stop's
 // transmittance at (u, v) in stop radii where its opening lets light through (an aperture
 // mask's grey levels; none: 1), applied at each crossing of the stop, and whether to leave
 // out the surfaces' and glasses' losses (the camera's `transmission false`).
 struct BundleOptions {
   int grid = 64;
+  int edge_levels = 3;
   const BundleRegion* region = nullptr;
   std::function<double(double u, double v)> stop_transmittance;
   bool lossless = false;
@@ -95,7 +98,8 @@ std::vector<FilmTriangle> GhostBundle(const LensSystem& lens, const Ghost& ghost
 // for comparison (a ghost's share of the light is its flux over this one's).
 std::vector<FilmTriangle> DirectBundle(const LensSystem& lens, const PointSource& source, double lambda_nm,
                                        const BundleOptions& options);
-std::optional<BundleRegion> DirectRegion(const LensSystem& lens, const PointSource& source, double lambda_nm);
+std::optional<BundleRegion> DirectRegion(const LensSystem& lens, const PointSource& source, double lambda_nm,
+                                         int search_grid = 32);
 std::vector<FilmTriangle> DirectBundle(const LensSystem& lens, const PointSource& source, double lambda_nm, int grid = 64,
                                        const BundleRegion* region = nullptr);
 
@@ -118,7 +122,11 @@ struct FilmRaster {
   double x0 = 0, y0 = 0, w = 1, h = 1;  // mm
 };
 void Splat(std::span<const FilmTriangle> triangles, const FilmRaster& raster, double weight, float* image, int stride = 1);
-// The same into three interleaved channels at once, each with its own weight.
-void SplatColour(std::span<const FilmTriangle> triangles, const FilmRaster& raster, const Vec3d& weight, float* image);
+// The same into three interleaved channels at once, each with its own weight. With
+// `pixel_centres` (a preview's) a varying irradiance is taken at the centre of every pixel,
+// also of those the triangle covers only in part (no clipping for the part's centroid: up to
+// half a pixel's change of the irradiance off there).
+void SplatColour(std::span<const FilmTriangle> triangles, const FilmRaster& raster, const Vec3d& weight, float* image,
+                 bool pixel_centres = false);
 
 }  // namespace objektiv

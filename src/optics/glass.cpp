@@ -80,21 +80,20 @@ void Glass::AddTransmission(double lambda_um, double tau, double thickness_mm) {
   absorption_.insert(it, {lambda_um, std::max(alpha, 0.0)});
 }
 
+double Glass::AbsorptionCoefficient(double lambda_nm) const {
+  if (absorption_.empty()) return 0;
+  const double l = lambda_nm * 1e-3;
+  if (l <= absorption_.front().first) return absorption_.front().second;
+  if (l >= absorption_.back().first) return absorption_.back().second;
+  auto hi = std::upper_bound(absorption_.begin(), absorption_.end(), l, [](double v, const auto& a) { return v < a.first; });
+  auto lo = hi - 1;
+  const double t = (l - lo->first) / (hi->first - lo->first);
+  return lo->second + t * (hi->second - lo->second);
+}
+
 double Glass::InternalTransmittance(double lambda_nm, double thickness_mm) const {
   if (absorption_.empty() || thickness_mm <= 0) return 1;
-  double l = lambda_nm * 1e-3, alpha;
-  if (l <= absorption_.front().first) {
-    alpha = absorption_.front().second;
-  } else if (l >= absorption_.back().first) {
-    alpha = absorption_.back().second;
-  } else {
-    auto hi = std::upper_bound(absorption_.begin(), absorption_.end(), l,
-                               [](double v, const auto& a) { return v < a.first; });
-    auto lo = hi - 1;
-    double t = (l - lo->first) / (hi->first - lo->first);
-    alpha = lo->second + t * (hi->second - lo->second);
-  }
-  return std::exp(-alpha * thickness_mm);
+  return std::exp(-AbsorptionCoefficient(lambda_nm) * thickness_mm);
 }
 
 }  // namespace objektiv

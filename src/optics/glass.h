@@ -33,6 +33,8 @@ class Glass {
   // Internal transmittance through `thickness_mm` of glass (1 where the catalog has no data):
   // Beer-Lambert with the absorption coefficient interpolated between the catalog's IT rows.
   double InternalTransmittance(double lambda_nm, double thickness_mm) const;
+  // That absorption coefficient, 1/mm (0 where the catalog has no data).
+  double AbsorptionCoefficient(double lambda_nm) const;
   double ComputedNd() const { return Index(kLambdad); }
   double ComputedVd() const { return (Index(kLambdad) - 1) / (Index(kLambdaF) - Index(kLambdaC)); }
   // nd and Vd as the glass's source states them (the catalog's NM line), else as computed.

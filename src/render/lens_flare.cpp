@@ -33,13 +33,14 @@ struct LitGhost {
   FlarePath path;
   std::array<double, 3> level{};
 };
+// Without culling (`levels` false) the levels are left 0.
 std::vector<LitGhost> LitGhosts(const LensSystem& lens, const std::vector<Ghost>& ghosts, const PointSource& source,
-                                const BundleOptions& options, Vec2d lo, Vec2d hi) {
+                                const BundleOptions& options, int region_grid, bool levels, Vec2d lo, Vec2d hi) {
   std::vector<std::optional<BundleRegion>> regions(ghosts.size());
   std::vector<std::array<double, 3>> level(ghosts.size());
   tbb::parallel_for(size_t(0), ghosts.size(), [&](size_t g) {
-    regions[g] = GhostRegion(lens, ghosts[g], source, kRegionLambda);
-    if (!regions[g]) return;
+    regions[g] = GhostRegion(lens, ghosts[g], source, kRegionLambda, region_grid);
+    if (!regions[g] || !levels) return;
     BundleOptions coarse = options;
     coarse.grid = 8, coarse.region = &*regions[g];
     for (size_t b = 0; b < kCullLambdas.size(); ++b)
@@ -90,6 +91,17 @@ std::vector<std::vector<bool>> Culled(const std::vector<std::vector<LitGhost>>& 
 
 }  // namespace
 
+FlareSettings FlareSettings::Preview() {
+  FlareSettings s;
+  s.grid = 16;
+  s.edge_levels = 1;
+  s.region_grid = 8;
+  s.wavelengths = 3;
+  s.cull = 0;
+  s.pixel_centres = true;
+  return s;
+}
+
 FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const CropWindow& crop,
                         const FlareSettings& settings) {
   const auto start = std::chrono::steady_clock::now();
@@ -131,6 +143,7 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
   // transmission off leaves the lights' own images without losses (ghosts need reflections).
   BundleOptions options;
   options.grid = settings.grid;
+  options.edge_levels = settings.edge_levels;
   if (const ApertureMask* mask = camera.settings().aperture_mask.get())
     options.stop_transmittance = [mask](double u, double v) { return double(mask->Transmittance(float(u), float(v))); };
   BundleOptions direct_options = options;
@@ -145,7 +158,7 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
       film_hi(std::max(film_a.x, film_b.x), std::max(film_a.y, film_b.y));
   if (settings.ghosts)
     for (size_t s = 0; s < sources.size(); ++s) {
-      lit[s] = LitGhosts(lens, all, sources[s].source, options, film_lo, film_hi);
+      lit[s] = LitGhosts(lens, all, sources[s].source, options, settings.region_grid, settings.cull > 0, film_lo, film_hi);
       out.ghosts_dark += int(all.size() - lit[s].size());
       for (LitGhost& g : lit[s])
         for (size_t b = 0; b < kCullLambdas.size(); ++b)
@@ -162,7 +175,7 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
       }
     }
     if (settings.light_images)
-      if (std::optional<BundleRegion> r = DirectRegion(lens, sources[s].source, kRegionLambda))
+      if (std::optional<BundleRegion> r = DirectRegion(lens, sources[s].source, kRegionLambda, settings.region_grid))
         paths[s].push_back({std::nullopt, *r});
   }
   for (size_t s = 0; s < sources.size(); ++s)
@@ -211,7 +224,7 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
       const size_t offset = size_t(y0) * out.width * 3;
       for (size_t k = 0; k < count; ++k)
         SplatColour(traced[k].bundle, rows, traced[k].weight,
-                    (traced[k].ghost ? out.ghosts.data() : out.lights.data()) + offset);
+                    (traced[k].ghost ? out.ghosts.data() : out.lights.data()) + offset, settings.pixel_centres);
     });
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -31,11 +31,17 @@ struct FlareSettings {
   bool ghosts = false;        // the two-reflection ghosts
   bool light_images = false;  // the lights' own images
   int grid = 32;              // rays per side of each bundle (edges subdivided further)
+  int edge_levels = 3;        // BundleOptions::edge_levels
+  int region_grid = 32;       // the region search's grid (GhostRegion)
+  bool pixel_centres = false;  // SplatColour's
   int wavelengths = 16;
   double cull = 1e-3;
   // Turned true: no further chunk of bundles is traced (the interactive viewer's change);
   // FlareImages::stopped says so, the images then partial.
   const std::atomic<bool>* stop = nullptr;
+  // Preview quality, for the live viewer while the camera moves: what a frame of 33 ms
+  // affords (bench/bench_flare.cpp, BM_GhostPreview).
+  static FlareSettings Preview();
 };
 
 struct FlareImages {

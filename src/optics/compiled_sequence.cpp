@@ -1,0 +1,95 @@
+#include "optics/compiled_sequence.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace objektiv {
+
+namespace {
+
+// What CrossSurface traces beyond a centred surface between homogeneous isotropic media.
+bool Plain(const LensSurface& s) {
+  return !s.placement && !s.fresnel && !s.toroidal && !s.form_error && !s.gradient && !s.crystal && !s.mirror;
+}
+
+}  // namespace
+
+std::optional<CompiledSequence> CompiledSequence::Compile(const LensSystem& lens, std::span<const SurfaceVisit> visits,
+                                                          double lambda_nm) {
+  if (lens.hood()) return std::nullopt;
+  CompiledSequence c;
+  c.lens_ = &lens;
+  c.lambda_ = lambda_nm;
+  int previous = -1;
+  for (const SurfaceVisit& v : visits) {
+    const LensSurface& s = lens.surface(v.surface);
+    // The medium before the surface too (a gradient or a crystal there bends the ray into it).
+    if (!Plain(s) || (v.surface > 0 && !Plain(lens.surface(v.surface - 1)))) return std::nullopt;
+    Step step;
+    step.surface = &s;
+    step.index = v.surface;
+    step.vertex_z = lens.VertexZ(v.surface);
+    step.reflect = v.reflect, step.toward_film = v.toward_film;
+    step.is_stop = s.is_stop;
+    step.n_object = lens.prescription().IndexBefore(size_t(v.surface), lambda_nm);
+    step.n_film = s.IndexAfter(lambda_nm);
+    step.interface = step.n_object != step.n_film;
+    step.eta = v.toward_film ? step.n_object / step.n_film : step.n_film / step.n_object;
+    step.alpha = 0;
+    if (previous >= 0)
+      if (const Glass* g = lens.surface(std::min(previous, v.surface)).medium.get()) step.alpha = g->AbsorptionCoefficient(lambda_nm);
+    previous = v.surface;
+    c.steps_.push_back(step);
+  }
+  return c;
+}
+
+CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<Vec3d>* stop_points) const {
+  Result r;
+  Vec3d o = in.o, d = in.d;
+  for (const Step& st : steps_) {
+    const LensSurface& s = *st.surface;
+    const Vec3d local = o - Vec3d(0, 0, st.vertex_z);
+    bool blocked;
+    const std::optional<double> t = IntersectSurface(s, local, d, blocked);
+    if (!t || *t < -1e-9) return r;
+    const Vec3d p = local + d * *t;
+    const double radius = std::sqrt(p.x * p.x + p.y * p.y);
+    if ((st.is_stop ? !lens_->InsideStop(p.x, p.y) : radius > s.semi_diameter) || radius < s.obscuration) return r;
+    o = o + d * *t;
+    if (st.is_stop && stop_points) stop_points->push_back(o);
+    // Beer-Lambert along the segment just travelled (Glass::InternalTransmittance).
+    if (st.alpha != 0 && *t > 0) r.internal_transmittance *= std::exp(-st.alpha * *t);
+    if (!st.interface) {
+      if (st.reflect) return r;  // nothing to reflect from
+      continue;
+    }
+    Vec3d normal;
+    if (s.HasAsphericTerms()) {
+      normal = SurfaceNormal(s, p);
+    } else {
+      const double c = s.Curvature();
+      const Vec3d g(-c * p.x, -c * p.y, 1 - (1 + s.conic) * c * p.z);
+      normal = g / Length(g);
+    }
+    if (Dot(normal, d) > 0) normal = -normal;
+    const double cos_i = -Dot(normal, d);
+    const double reflectance = lens_->SurfaceReflectance(st.index, lambda_, cos_i, st.toward_film, st.n_object, st.n_film);
+    if (st.reflect) {
+      r.surface_transmittance *= reflectance;
+      const Vec3d reflected = d + normal * (2 * cos_i);
+      d = reflected / Length(reflected);
+      continue;
+    }
+    r.surface_transmittance *= 1 - reflectance;
+    const double k2 = 1 - st.eta * st.eta * (1 - cos_i * cos_i);
+    if (k2 < 0) return r;  // total internal reflection
+    const Vec3d refracted = d * st.eta + normal * (st.eta * cos_i - std::sqrt(k2));
+    d = refracted / Length(refracted);
+  }
+  r.alive = true;
+  r.ray = LensRay{o, d, false, in.wave_choices};
+  return r;
+}
+
+}  // namespace objektiv

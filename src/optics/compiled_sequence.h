@@ -1,0 +1,56 @@
+// A path of surface visits (optics/lens_tracer.h, TraceSequence) made ready for many rays at
+// one wavelength: the indices on both sides of every surface, each glass's absorption
+// coefficient and every interface's bare or coated reflectance law are looked up once, so
+// that a ray costs only its intersections, refractions and reflectances. The ghosts' ray
+// bundles (optics/ghosts.h) trace thousands of rays along one path at one wavelength; each
+// visit of TraceSequence evaluated two dispersion formulas and an absorption table again.
+//
+// Same rays, same results: the same intersection, normal, reflection, refraction and
+// reflectance functions in the same order (tests/test_compiled_sequence.cpp compares every
+// ghost path of several lenses with TraceSequence). Paths through what it does not trace
+// (a lens hood, tilted or decentred surfaces, toroids, Fresnel zones, form errors,
+// gradient-index media, crystals, mirrors) are not compiled: Compile says so and the caller
+// goes on with TraceSequence. Dust and scratches are not traced (the bundles take each
+// surface's mean clear share instead).
+#pragma once
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "optics/lens_tracer.h"
+
+namespace objektiv {
+
+class CompiledSequence {
+ public:
+  // Nothing where the path visits what this does not trace (above).
+  static std::optional<CompiledSequence> Compile(const LensSystem& lens, std::span<const SurfaceVisit> visits,
+                                                 double lambda_nm);
+
+  struct Result {
+    bool alive = false;
+    LensRay ray;  // after the last visit
+    double surface_transmittance = 1, internal_transmittance = 1;
+  };
+  // The ray along the path, as TraceSequence traces it (its failures all give alive false).
+  // `stop_points`, if given, receives where the ray crossed the stop each time (lens space).
+  Result Trace(const LensRay& ray, std::vector<Vec3d>* stop_points = nullptr) const;
+
+ private:
+  struct Step {
+    const LensSurface* surface;
+    int index;
+    double vertex_z;
+    bool reflect, toward_film, interface, is_stop;
+    double eta;              // incoming index over outgoing
+    double n_object, n_film;  // the indices on the surface's two sides
+    // The absorption coefficient (1/mm) of the medium crossed to reach this step (0: none, or
+    // the first step).
+    double alpha;
+  };
+  const LensSystem* lens_ = nullptr;
+  double lambda_ = 0;
+  std::vector<Step> steps_;
+};
+
+}  // namespace objektiv
