@@ -222,6 +222,38 @@ TEST(LensLayers, OneWavelengthBandKeepsWhiteLightWhite) {
   EXPECT_NEAR(one.y, many.y, 0.005);
 }
 
+// The preview's one geometry (FlareSettings::one_geometry: each bundle traced at 550 nm, its
+// losses at each band's wavelength) gives the ghosts' light and colour of bundles traced at
+// each band, through a multi-coated lens whose ghosts are coloured (it reflects least in the
+// green), and the lights' own images too. Without the bands' losses (the geometry's
+// transmittance for all three) the coated ghosts' colour would be lost.
+TEST(LensLayers, OneGeometryKeepsTheGhostsLightAndColour) {
+  const RenderSetup setup = LoadSceneFromString(
+      LayerScene(R"(<float name="sensor_width" value="72"/><string name="coating" value="multi"/>)", kPointLight, 1),
+      "preview.xml", {});
+  const auto& camera = dynamic_cast<const RealisticCamera&>(*setup.camera);
+  auto sums = [](const std::vector<float>& xyz) {
+    Vec3d sum(0.0);
+    for (size_t i = 0; i < xyz.size(); i += 3) sum += Vec3d(xyz[i], xyz[i + 1], xyz[i + 2]);
+    return sum;
+  };
+  FlareSettings settings;
+  settings.ghosts = settings.light_images = true;
+  settings.grid = 16, settings.wavelengths = 3, settings.cull = 0;
+  const FlareImages bands = RenderFlare(*setup.scene, camera, setup.film.crop, settings);
+  settings.one_geometry = true;
+  const FlareImages one = RenderFlare(*setup.scene, camera, setup.film.crop, settings);
+  for (const auto& [want, got] : {std::pair{sums(bands.ghosts), sums(one.ghosts)}, {sums(bands.lights), sums(one.lights)}}) {
+    ASSERT_GT(want.y, 0);
+    EXPECT_NEAR(got.y, want.y, 0.02 * want.y);
+    // Chromaticity: coated ghosts are far from white (x = y = 1/3).
+    EXPECT_NEAR(got.x / (got.x + got.y + got.z), want.x / (want.x + want.y + want.z), 0.003);
+    EXPECT_NEAR(got.y / (got.x + got.y + got.z), want.y / (want.x + want.y + want.z), 0.003);
+  }
+  const Vec3d g = sums(bands.ghosts);
+  EXPECT_GT(std::abs(g.x / (g.x + g.y + g.z) - 1.0 / 3), 0.01) << "the ghosts should be coloured";
+}
+
 TEST(LensLayers, DimLightsGhostsAreCulledAgainstTheBrightestOfAll) {
   const std::string effects = R"(<boolean name="ghosts" value="true"/><integer name="ghost_grid" value="16"/>
       <integer name="flare_wavelengths" value="2"/>)";

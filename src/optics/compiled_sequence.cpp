@@ -15,11 +15,13 @@ bool Plain(const LensSurface& s) {
 }  // namespace
 
 std::optional<CompiledSequence> CompiledSequence::Compile(const LensSystem& lens, std::span<const SurfaceVisit> visits,
-                                                          double lambda_nm) {
-  if (lens.hood()) return std::nullopt;
+                                                          double lambda_nm, std::span<const double> bands) {
+  if (lens.hood() || bands.size() > size_t(kMaxBands)) return std::nullopt;
   CompiledSequence c;
   c.lens_ = &lens;
   c.lambda_ = lambda_nm;
+  c.band_count_ = int(bands.size());
+  std::copy(bands.begin(), bands.end(), c.bands_.begin());
   int previous = -1;
   for (const SurfaceVisit& v : visits) {
     const LensSurface& s = lens.surface(v.surface);
@@ -36,8 +38,13 @@ std::optional<CompiledSequence> CompiledSequence::Compile(const LensSystem& lens
     step.interface = step.n_object != step.n_film;
     step.eta = v.toward_film ? step.n_object / step.n_film : step.n_film / step.n_object;
     step.alpha = 0;
-    if (previous >= 0)
-      if (const Glass* g = lens.surface(std::min(previous, v.surface)).medium.get()) step.alpha = g->AbsorptionCoefficient(lambda_nm);
+    const Glass* medium = previous >= 0 ? lens.surface(std::min(previous, v.surface)).medium.get() : nullptr;
+    if (medium) step.alpha = medium->AbsorptionCoefficient(lambda_nm);
+    for (int b = 0; b < c.band_count_; ++b) {
+      step.band_n_object[b] = lens.prescription().IndexBefore(size_t(v.surface), bands[b]);
+      step.band_n_film[b] = s.IndexAfter(bands[b]);
+      step.band_alpha[b] = medium ? medium->AbsorptionCoefficient(bands[b]) : 0;
+    }
     previous = v.surface;
     c.steps_.push_back(step);
   }
@@ -46,6 +53,7 @@ std::optional<CompiledSequence> CompiledSequence::Compile(const LensSystem& lens
 
 CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<Vec3d>* stop_points) const {
   Result r;
+  std::fill(r.band_transmittance.begin(), r.band_transmittance.begin() + band_count_, 1.0);
   Vec3d o = in.o, d = in.d;
   for (const Step& st : steps_) {
     const LensSurface& s = *st.surface;
@@ -60,6 +68,8 @@ CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<
     if (st.is_stop && stop_points) stop_points->push_back(o);
     // Beer-Lambert along the segment just travelled (Glass::InternalTransmittance).
     if (st.alpha != 0 && *t > 0) r.internal_transmittance *= std::exp(-st.alpha * *t);
+    for (int b = 0; b < band_count_; ++b)
+      if (st.band_alpha[b] != 0 && *t > 0) r.band_transmittance[b] *= std::exp(-st.band_alpha[b] * *t);
     if (!st.interface) {
       if (st.reflect) return r;  // nothing to reflect from
       continue;
@@ -75,6 +85,10 @@ CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<
     if (Dot(normal, d) > 0) normal = -normal;
     const double cos_i = -Dot(normal, d);
     const double reflectance = lens_->SurfaceReflectance(st.index, lambda_, cos_i, st.toward_film, st.n_object, st.n_film);
+    for (int b = 0; b < band_count_; ++b) {
+      const double rb = lens_->SurfaceReflectance(st.index, bands_[b], cos_i, st.toward_film, st.band_n_object[b], st.band_n_film[b]);
+      r.band_transmittance[b] *= st.reflect ? rb : 1 - rb;
+    }
     if (st.reflect) {
       r.surface_transmittance *= reflectance;
       const Vec3d reflected = d + normal * (2 * cos_i);

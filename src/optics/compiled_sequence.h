@@ -13,6 +13,7 @@
 // goes on with TraceSequence. Dust and scratches are not traced (the bundles take each
 // surface's mean clear share instead).
 #pragma once
+#include <array>
 #include <optional>
 #include <span>
 #include <vector>
@@ -23,14 +24,20 @@ namespace objektiv {
 
 class CompiledSequence {
  public:
-  // Nothing where the path visits what this does not trace (above).
+  // Nothing where the path visits what this does not trace (above). `bands`: up to
+  // kMaxBands further wavelengths at which each ray's transmittance is also found along the
+  // same path, the one traced at lambda_nm (a preview's colours: the losses at each
+  // wavelength, with the geometry of one).
+  static constexpr int kMaxBands = 3;
   static std::optional<CompiledSequence> Compile(const LensSystem& lens, std::span<const SurfaceVisit> visits,
-                                                 double lambda_nm);
+                                                 double lambda_nm, std::span<const double> bands = {});
 
   struct Result {
     bool alive = false;
     LensRay ray;  // after the last visit
     double surface_transmittance = 1, internal_transmittance = 1;
+    // The whole transmittance (surfaces and glass) at each of the bands.
+    std::array<double, kMaxBands> band_transmittance{};
   };
   // The ray along the path, as TraceSequence traces it (its failures all give alive false).
   // `stop_points`, if given, receives where the ray crossed the stop each time (lens space).
@@ -47,9 +54,13 @@ class CompiledSequence {
     // The absorption coefficient (1/mm) of the medium crossed to reach this step (0: none, or
     // the first step).
     double alpha;
+    // The same at each band.
+    std::array<double, kMaxBands> band_n_object{}, band_n_film{}, band_alpha{};
   };
   const LensSystem* lens_ = nullptr;
   double lambda_ = 0;
+  int band_count_ = 0;
+  std::array<double, kMaxBands> bands_{};
   std::vector<Step> steps_;
 };
 

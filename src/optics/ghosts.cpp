@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 #include <utility>
 
 #include "optics/compiled_sequence.h"
@@ -45,7 +46,7 @@ class BundleTracer {
   BundleTracer(const LensSystem& lens, std::span<const SurfaceVisit> path, const PointSource& source, double lambda_nm,
                const BundleOptions& options = {})
       : lens_(lens), path_(path), source_(source), options_(options), lambda_(lambda_nm),
-        compiled_(CompiledSequence::Compile(lens, path, lambda_nm)) {
+        compiled_(CompiledSequence::Compile(lens, path, lambda_nm, options.bands)) {
     for (const SurfaceVisit& v : path)
       if (const SurfaceDirt* dirt = lens.surface(v.surface).dirt.get()) mean_dirt_ *= dirt->MeanTransmittance();
     const LensSurface& front = lens.surface(0);
@@ -72,7 +73,8 @@ class BundleTracer {
   struct Corner {
     bool alive = false;
     Vec2d film;
-    double transmittance = 0;
+    double transmittance = 0;  // with bands: their mean
+    std::array<double, 3> band{};  // BundleOptions::bands: the transmittance at each
   };
 
   Corner Trace(Vec2d p) const {
@@ -88,16 +90,24 @@ class BundleTracer {
     stop_points.clear();
     std::optional<LensRay> out;
     double transmittance = 1;
+    std::array<double, 3> band{};
+    const size_t bands = options_.bands.size();
     if (compiled_) {
       const CompiledSequence::Result r = compiled_->Trace({at, d}, masked ? &stop_points : nullptr);
       if (r.alive) out = r.ray;
       transmittance = r.surface_transmittance * r.internal_transmittance;
+      std::copy_n(r.band_transmittance.begin(), bands, band.begin());
     } else {
       const TraceResult r = TraceSequence(lens_, {at, d}, lambda_, path_, masked ? &points : nullptr);
       out = r.ray;  // (r.dirt, the corner's own, gives way to mean_dirt_)
       transmittance = r.surface_transmittance * r.internal_transmittance;
       for (size_t k = 0; k < points.size() && k < path_.size(); ++k)
         if (path_[k].surface == lens_.StopIndex()) stop_points.push_back(points[k]);
+      // Each band's losses along its own ray from the same point (0 where it is lost).
+      for (size_t b = 0; b < bands && out; ++b) {
+        const TraceResult rb = TraceSequence(lens_, {at, d}, options_.bands[b], path_);
+        band[b] = rb.ray ? rb.surface_transmittance * rb.internal_transmittance : 0;
+      }
     }
     if (!out || !(out->d.z > 0)) return c;
     const double t = (lens_.FilmZ() - out->o.z) / out->d.z;
@@ -105,10 +115,16 @@ class BundleTracer {
     c.film = {out->o.x + t * out->d.x, out->o.y + t * out->d.y};
     // Dust and scratches by the share of each surface they leave clear: the grid's cells are
     // far coarser than the particles, which a corner ray would take for whole cells.
-    c.transmittance = (options_.lossless ? 1.0 : transmittance) * mean_dirt_;
+    double clear = mean_dirt_;
     if (masked) {
       const double inv = 1 / lens_.StopSemiDiameter();
-      for (const Vec3d& p : stop_points) c.transmittance *= options_.stop_transmittance(p.x * inv, p.y * inv);
+      for (const Vec3d& p : stop_points) clear *= options_.stop_transmittance(p.x * inv, p.y * inv);
+    }
+    c.transmittance = (options_.lossless ? 1.0 : transmittance) * clear;
+    if (bands > 0) {
+      double sum = 0;
+      for (size_t b = 0; b < bands; ++b) sum += c.band[b] = (options_.lossless ? 1.0 : band[b]) * clear;
+      c.transmittance = sum / double(bands);
     }
     return c;
   }
@@ -229,6 +245,7 @@ class BundleTracer {
       const double flux = t * CellFlux(Vec2d(p.x + du / 2, p.y + dv / 2), du, dv);
       // The cell's flux split between its triangles by their area (their irradiance the same).
       FilmTriangle t1{c[0].film, c[1].film, c[2].film, 0}, t2{c[0].film, c[2].film, c[3].film, 0};
+      t1.tint = t2.tint = Tint(c.data(), 4, t);
       const double a1 = t1.Area(), a2 = t2.Area();
       const double share = a1 + a2 > 0 ? a1 / (a1 + a2) : 0.5;
       t1.flux = flux * share, t2.flux = flux * (1 - share);
@@ -266,14 +283,27 @@ class BundleTracer {
   void EdgeCell(Vec2d p, double du, double dv, const std::array<Corner, 4>& c, int alive,
                 std::vector<FilmTriangle>& out) const {
     Vec2d live[4];
+    Corner alive_corners[4];
     double t = 0;
     int n = 0;
     for (const Corner& k : c)
-      if (k.alive) live[n++] = k.film, t += k.transmittance;
+      if (k.alive) alive_corners[n] = k, live[n++] = k.film, t += k.transmittance;
     const bool opposite = alive == 2 && c[0].alive == c[2].alive;
     const double fraction = alive == 1 ? 0.125 : alive == 3 ? 0.875 : opposite ? 0.25 : 0.5;
     const double flux = (t / alive) * fraction * CellFlux(Vec2d(p.x + du / 2, p.y + dv / 2), du, dv);
-    out.push_back({live[0], live[std::min(1, n - 1)], live[std::min(2, n - 1)], flux});
+    FilmTriangle tri{live[0], live[std::min(1, n - 1)], live[std::min(2, n - 1)], flux};
+    tri.tint = Tint(alive_corners, n, t / alive);
+    out.push_back(tri);
+  }
+
+  // With bands: the mean of `n` corners' transmittance at each band over `mean`, their mean
+  // transmittance (FilmTriangle::tint); without, white.
+  Vec3d Tint(const Corner* corners, int n, double mean) const {
+    if (options_.bands.empty() || !(mean > 0)) return Vec3d(1, 1, 1);
+    std::array<double, 3> sum{};
+    for (int k = 0; k < n; ++k)
+      for (size_t b = 0; b < options_.bands.size(); ++b) sum[b] += corners[k].band[b];
+    return Vec3d(sum[0], sum[1], sum[2]) * (1 / (n * mean));
   }
 
   const LensSystem& lens_;
@@ -321,6 +351,7 @@ std::optional<BundleRegion> DirectRegion(const LensSystem& lens, const PointSour
 
 std::vector<FilmTriangle> GhostBundle(const LensSystem& lens, const Ghost& ghost, const PointSource& source,
                                       double lambda_nm, const BundleOptions& options) {
+  if (options.bands.size() > 3) throw std::invalid_argument("GhostBundle: more than three bands");
   const std::vector<SurfaceVisit> path = GhostPath(lens, ghost);
   return BundleTracer(lens, path, source, lambda_nm, options).Bundle(options.grid, options.region);
 }
@@ -334,6 +365,7 @@ std::vector<FilmTriangle> GhostBundle(const LensSystem& lens, const Ghost& ghost
 
 std::vector<FilmTriangle> DirectBundle(const LensSystem& lens, const PointSource& source, double lambda_nm,
                                        const BundleOptions& options) {
+  if (options.bands.size() > 3) throw std::invalid_argument("DirectBundle: more than three bands");
   const std::vector<SurfaceVisit> path = DirectPath(lens);
   return BundleTracer(lens, path, source, lambda_nm, options).Bundle(options.grid, options.region);
 }
@@ -488,17 +520,20 @@ double FrontElementFlux(const LensSystem& lens, const PointSource& source) {
 
 namespace {
 
-// The rasterisation of Splat: add(pixel index, irradiance) for every pixel a triangle covers.
+// The rasterisation of Splat: add_at(triangle, pixel index, irradiance) for every pixel a
+// triangle covers.
 template <class Add>
 void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, double weight, bool pixel_centres,
                Add&& add_at) {
   const double pixel_area = r.w * r.h;
+  const FilmTriangle* current = nullptr;
   auto add = [&](int x, int y, double v) {
-    if (x >= 0 && y >= 0 && x < r.width && y < r.height) add_at(size_t(y) * r.width + x, v);
+    if (x >= 0 && y >= 0 && x < r.width && y < r.height) add_at(*current, size_t(y) * r.width + x, v);
   };
   std::vector<double> coverage;
   std::vector<std::pair<int, int>> spans;
   for (const FilmTriangle& t : triangles) {
+    current = &t;
     // Pixel coordinates.
     const Vec2d a((t.a.x - r.x0) / r.w, (t.a.y - r.y0) / r.h), b((t.b.x - r.x0) / r.w, (t.b.y - r.y0) / r.h),
         c((t.c.x - r.x0) / r.w, (t.c.y - r.y0) / r.h);
@@ -558,7 +593,7 @@ void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, dou
         for (int x = spans[y].first, end = std::min(spans[y].second, bw - 2); x <= end; ++x) {
           sum += row[x];
           const double share = std::min(std::abs(sum), 1.0);
-          if (share > 1e-12) add_at(start + x, value(x0 + x, row0 + y, share));
+          if (share > 1e-12) add_at(t, start + x, value(x0 + x, row0 + y, share));
         }
       }
       continue;
@@ -590,12 +625,26 @@ void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, dou
 }  // namespace
 
 void Splat(std::span<const FilmTriangle> triangles, const FilmRaster& r, double weight, float* image, int stride) {
-  Rasterise(triangles, r, weight, false, [&](size_t i, double v) { image[i * stride] += float(v); });
+  Rasterise(triangles, r, weight, false, [&](const FilmTriangle&, size_t i, double v) { image[i * stride] += float(v); });
 }
 
 void SplatColour(std::span<const FilmTriangle> triangles, const FilmRaster& r, const Vec3d& weight, float* xyz,
                  bool pixel_centres) {
-  Rasterise(triangles, r, 1.0, pixel_centres, [&](size_t i, double v) {
+  Rasterise(triangles, r, 1.0, pixel_centres, [&](const FilmTriangle&, size_t i, double v) {
+    float* p = xyz + 3 * i;
+    p[0] += float(weight.x * v), p[1] += float(weight.y * v), p[2] += float(weight.z * v);
+  });
+}
+
+void SplatBands(std::span<const FilmTriangle> triangles, const FilmRaster& r, const std::array<Vec3d, 3>& band_weights,
+                float* xyz, bool pixel_centres) {
+  const FilmTriangle* last = nullptr;
+  Vec3d weight(0.0);
+  Rasterise(triangles, r, 1.0, pixel_centres, [&](const FilmTriangle& t, size_t i, double v) {
+    if (&t != last) {
+      last = &t;
+      weight = band_weights[0] * t.tint.x + band_weights[1] * t.tint.y + band_weights[2] * t.tint.z;
+    }
     float* p = xyz + 3 * i;
     p[0] += float(weight.x * v), p[1] += float(weight.y * v), p[2] += float(weight.z * v);
   });

@@ -15,6 +15,7 @@
 // rays get through; cells that lie across the edge of what gets through are split in four,
 // BundleOptions::edge_levels times over, so that the ghost's outline follows the stop's.
 #pragma once
+#include <array>
 #include <functional>
 #include <optional>
 #include <span>
@@ -58,6 +59,9 @@ struct FilmTriangle {
   Vec2d a, b, c;
   double flux;
   double ea = 1, eb = 1, ec = 1;
+  // A bundle traced with bands (BundleOptions::bands): the flux at each band over `flux`,
+  // which is then their mean.
+  Vec3d tint{1, 1, 1};
   double Area() const { return 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y)); }
 };
 
@@ -87,6 +91,11 @@ std::vector<FilmTriangle> GhostBundle(const LensSystem& lens, const Ghost& ghost
 struct BundleOptions {
   int grid = 64;
   int edge_levels = 3;
+  // Up to three wavelengths at which each ray's losses are also found, along the path traced
+  // at the bundle's own (a preview's colours: one geometry, each band's coatings and glass;
+  // optics/compiled_sequence.h). The triangles' flux is then the bands' mean, their tint each
+  // band's share.
+  std::vector<double> bands;
   const BundleRegion* region = nullptr;
   std::function<double(double u, double v)> stop_transmittance;
   bool lossless = false;
@@ -128,5 +137,9 @@ void Splat(std::span<const FilmTriangle> triangles, const FilmRaster& raster, do
 // half a pixel's change of the irradiance off there).
 void SplatColour(std::span<const FilmTriangle> triangles, const FilmRaster& raster, const Vec3d& weight, float* image,
                  bool pixel_centres = false);
+// The same for a bundle traced with bands: each triangle's weight is the bands' weights
+// (band_weights[b] for band b) by its tint.
+void SplatBands(std::span<const FilmTriangle> triangles, const FilmRaster& raster, const std::array<Vec3d, 3>& band_weights,
+                float* image, bool pixel_centres = false);
 
 }  // namespace objektiv

@@ -16,6 +16,8 @@ namespace objektiv {
 namespace {
 
 constexpr double kFlareLambdaMin = 380, kFlareLambdaMax = 780, kRegionLambda = 580;
+// one_geometry's wavelength, near the middle of the eye's sensitivity.
+constexpr double kOneGeometryLambda = 550;
 
 // A path to trace for one source: a ghost or the direct image, with the region its light
 // gets through (found once, at 580 nm, for all wavelengths).
@@ -99,6 +101,7 @@ FlareSettings FlareSettings::Preview() {
   s.wavelengths = 3;
   s.cull = 0;
   s.pixel_centres = true;
+  s.one_geometry = true;
   return s;
 }
 
@@ -124,7 +127,7 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
 
   // Film irradiance to pixel value, and the wavelength bins' colour weights.
   const double to_pixel = 4 / M_PI * camera.settings().exposure_scale;
-  const int k_count = std::max(1, settings.wavelengths);
+  const int k_count = settings.one_geometry ? std::clamp(settings.wavelengths, 1, 3) : std::max(1, settings.wavelengths);
   const double step = (kFlareLambdaMax - kFlareLambdaMin) / k_count;
   std::vector<double> lambdas;
   for (int k = 0; k < k_count; ++k) lambdas.push_back(kFlareLambdaMin + (k + 0.5) * step);
@@ -180,7 +183,12 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
   }
   for (size_t s = 0; s < sources.size(); ++s)
     for (const FlarePath& p : paths[s])
-      for (double l : lambdas) tasks.push_back({&sources[s], &p, l});
+      if (settings.one_geometry) {
+        tasks.push_back({&sources[s], &p, kOneGeometryLambda});
+      } else {
+        for (double l : lambdas) tasks.push_back({&sources[s], &p, l});
+      }
+  if (settings.one_geometry) options.bands = direct_options.bands = lambdas;
   out.sources = int(sources.size());
 
   // Deterministic on any number of threads: the tasks go in chunks; a chunk's bundles are
@@ -189,6 +197,7 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
   struct Traced {
     std::vector<FilmTriangle> bundle;
     Vec3d weight{0.0};
+    std::array<Vec3d, 3> band_weights{};  // one_geometry's
     bool ghost = false;
   };
   constexpr size_t kChunk = 64;
@@ -212,9 +221,15 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
       r.bundle = p.ghost ? GhostBundle(lens, *p.ghost, f.source, t.lambda, o) : DirectBundle(lens, f.source, t.lambda, o);
       // The band's colour: the emission times the matching functions integrated over the band
       // (so that few bands keep white light white), its geometry at the band's middle.
-      const Vec3d colour =
-          CieXyzOverBand(t.lambda - 0.5 * step, t.lambda + 0.5 * step, [&f](double l) { return f.Emission(l); });
-      r.weight = colour * (to_pixel * f.irradiance_scale * f.visibility / CieYIntegral());
+      auto band_weight = [&](double lambda) {
+        const Vec3d colour = CieXyzOverBand(lambda - 0.5 * step, lambda + 0.5 * step, [&f](double l) { return f.Emission(l); });
+        return colour * (to_pixel * f.irradiance_scale * f.visibility / CieYIntegral());
+      };
+      if (settings.one_geometry) {
+        for (size_t b = 0; b < lambdas.size(); ++b) r.band_weights[b] = band_weight(lambdas[b]);
+      } else {
+        r.weight = band_weight(t.lambda);
+      }
     });
     tbb::parallel_for(0, bands, [&](int band) {
       FilmRaster rows = raster;
@@ -222,9 +237,14 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
       rows.height = std::min(kBandRows, out.height - y0);
       rows.y0 = raster.y0 + y0 * raster.h;
       const size_t offset = size_t(y0) * out.width * 3;
-      for (size_t k = 0; k < count; ++k)
-        SplatColour(traced[k].bundle, rows, traced[k].weight,
-                    (traced[k].ghost ? out.ghosts.data() : out.lights.data()) + offset, settings.pixel_centres);
+      for (size_t k = 0; k < count; ++k) {
+        float* image = (traced[k].ghost ? out.ghosts.data() : out.lights.data()) + offset;
+        if (settings.one_geometry) {
+          SplatBands(traced[k].bundle, rows, traced[k].band_weights, image, settings.pixel_centres);
+        } else {
+          SplatColour(traced[k].bundle, rows, traced[k].weight, image, settings.pixel_centres);
+        }
+      }
     });
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -34,6 +34,10 @@ struct FlareSettings {
   int edge_levels = 3;        // BundleOptions::edge_levels
   int region_grid = 32;       // the region search's grid (GhostRegion)
   bool pixel_centres = false;  // SplatColour's
+  // Each bundle traced once, at 550 nm, with its losses at each of the `wavelengths` bands
+  // (at most 3) along the same rays (BundleOptions::bands): a preview's colours (the coatings'
+  // and the glasses'), without the ghosts' chromatic spread.
+  bool one_geometry = false;
   int wavelengths = 16;
   double cull = 1e-3;
   // Turned true: no further chunk of bundles is traced (the interactive viewer's change);
