@@ -156,6 +156,43 @@ TEST(ViewSession, PreviewFirstThenPassesUpToTheSampleCount) {
   EXPECT_EQ(s.display().width, 36);  // the preview at rest is at full resolution
 }
 
+// Camera rays never meet a point light: the preview shows its own image and its ghosts as the
+// lens traces them (FlareSettings::Preview), moving and at rest, and only where the lens's
+// effects are on (as the passes' lens layers).
+TEST(ViewSession, PreviewShowsTheLampsImagesAndGhosts) {
+  const fs::path dir = TempDir("preview-flare");
+  auto scene = [](const std::string& effects) {
+    std::string xml = LensScene("0, 0, 0");
+    const std::string lamp = R"(<emitter type="point"><point name="position" x="-0.4" y="0.9" z="0"/><rgb name="intensity" value="50"/></emitter>
+</scene>)";
+    xml.replace(xml.rfind("</scene>"), 8, lamp);
+    xml.replace(xml.find("<transform name=\"to_world\"><lookat"), 0, effects);
+    return xml;
+  };
+  auto total = [](const ViewSession& s) {
+    double sum = 0;
+    for (size_t i = 0; i < s.display().rgba.size(); i += 4) sum += s.display().rgba[i + 1];
+    return sum;
+  };
+  WriteFile(dir / "plain.xml", scene(""));
+  WriteFile(dir / "ghosts.xml", scene(R"(<boolean name="ghosts" value="true"/>)"));
+  ViewSession plain((dir / "plain.xml").string(), {}), ghosts((dir / "ghosts.xml").string(), {});
+  for (ViewSession* s : {&plain, &ghosts}) {
+    CameraPose p = s->pose();
+    p.Orbit(2, 0);
+    s->SetPose(p, true);
+    ASSERT_TRUE(s->Step());
+    ASSERT_TRUE(s->progress().preview);
+  }
+  EXPECT_GT(total(ghosts), 1.2 * total(plain) + 1);
+  for (ViewSession* s : {&plain, &ghosts}) {
+    s->SetMoving(false);
+    ASSERT_TRUE(s->Step());
+    EXPECT_EQ(s->display().width, 36);
+  }
+  EXPECT_GT(total(ghosts), 1.2 * total(plain) + 1);
+}
+
 TEST(ViewSession, ClickFocusesOnThePointUnderThePixel) {
   const fs::path dir = TempDir("focus");
   WriteFile(dir / "scene.xml", LensScene());

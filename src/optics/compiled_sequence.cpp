@@ -67,7 +67,7 @@ CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<
     o = o + d * *t;
     if (st.is_stop && stop_points) stop_points->push_back(o);
     // Beer-Lambert along the segment just travelled (Glass::InternalTransmittance).
-    if (st.alpha != 0 && *t > 0) r.internal_transmittance *= std::exp(-st.alpha * *t);
+    if (st.alpha != 0 && *t > 0 && band_count_ == 0) r.internal_transmittance *= std::exp(-st.alpha * *t);
     for (int b = 0; b < band_count_; ++b)
       if (st.band_alpha[b] != 0 && *t > 0) r.band_transmittance[b] *= std::exp(-st.band_alpha[b] * *t);
     if (!st.interface) {
@@ -84,7 +84,10 @@ CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<
     }
     if (Dot(normal, d) > 0) normal = -normal;
     const double cos_i = -Dot(normal, d);
-    const double reflectance = lens_->SurfaceReflectance(st.index, lambda_, cos_i, st.toward_film, st.n_object, st.n_film);
+    // With bands, the transmittance at lambda_ itself is not asked for (left 1).
+    const double reflectance =
+        band_count_ > 0 ? (st.reflect ? 1.0 : 0.0)
+                        : lens_->SurfaceReflectance(st.index, lambda_, cos_i, st.toward_film, st.n_object, st.n_film);
     for (int b = 0; b < band_count_; ++b) {
       const double rb = lens_->SurfaceReflectance(st.index, bands_[b], cos_i, st.toward_film, st.band_n_object[b], st.band_n_film[b]);
       r.band_transmittance[b] *= st.reflect ? rb : 1 - rb;

@@ -27,7 +27,7 @@ class CompiledSequence {
   // Nothing where the path visits what this does not trace (above). `bands`: up to
   // kMaxBands further wavelengths at which each ray's transmittance is also found along the
   // same path, the one traced at lambda_nm (a preview's colours: the losses at each
-  // wavelength, with the geometry of one).
+  // wavelength, with the geometry of one); the transmittance at lambda_nm is then not found.
   static constexpr int kMaxBands = 3;
   static std::optional<CompiledSequence> Compile(const LensSystem& lens, std::span<const SurfaceVisit> visits,
                                                  double lambda_nm, std::span<const double> bands = {});
@@ -35,7 +35,7 @@ class CompiledSequence {
   struct Result {
     bool alive = false;
     LensRay ray;  // after the last visit
-    double surface_transmittance = 1, internal_transmittance = 1;
+    double surface_transmittance = 1, internal_transmittance = 1;  // at lambda_nm; 1 with bands
     // The whole transmittance (surfaces and glass) at each of the bands.
     std::array<double, kMaxBands> band_transmittance{};
   };

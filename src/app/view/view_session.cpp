@@ -13,6 +13,7 @@
 #include "camera/stereo_camera.h"
 #include "io/tonemap.h"
 #include "render/integrator.h"
+#include "render/lens_flare.h"
 #include "render/renderer.h"
 #include "app/view/scene_with_camera.h"
 
@@ -317,7 +318,9 @@ bool ViewSession::HasLensLayers() const {
 
 int ViewSession::PreviewDivisor() const {
   if (!(preview_seconds_per_pixel_ > 0)) return 4;
-  const double target = 1 / std::max(options_.preview_fps, 1e-3);
+  // The frame's time less the lamps' ghosts', but at least a third of it for the picture.
+  const double frame = 1 / std::max(options_.preview_fps, 1e-3);
+  const double target = std::max(frame - preview_flare_seconds_, frame / 3);
   for (int d : kPreviewDivisors) {
     const double pixels = double(std::max(1, full_width_ / d)) * std::max(1, full_height_ / d);
     if (pixels * preview_seconds_per_pixel_ <= target) return d;
@@ -351,15 +354,36 @@ void ViewSession::PreviewFrame(int divisor, const std::atomic<bool>* stop) {
   // at each of a drag's steps, its frames would show black where they stopped. The still one,
   // at full resolution, stops for a change.
   ro.stop = moving_ ? nullptr : stop;
+  const auto start = std::chrono::steady_clock::now();
   const RenderStats stats = Render(camera, *preview_integrator_, sampler, film, ro);
   if (stats.seconds > 0) preview_seconds_per_pixel_ = stats.seconds / (double(w) * h);
-  ShowXyz(film.Xyz(), w, h);
+  std::vector<float> xyz = film.Xyz();
+  const auto flare_start = std::chrono::steady_clock::now();
+  AddPreviewFlare(camera, xyz, ro.stop);
+  preview_flare_seconds_ = Seconds(flare_start);
+  const double seconds = Seconds(start);
+  ShowXyz(xyz, w, h);
   progress_.preview = true;
   progress_.spp = 0;
   progress_.width = w, progress_.height = h;
-  progress_.frame_seconds = stats.seconds;
+  progress_.frame_seconds = seconds;
   progress_.camera_pass_rate = stats.CameraPassRate();
   progress_.layers = false;
+}
+
+void ViewSession::AddPreviewFlare(const Camera& camera, std::vector<float>& xyz, const std::atomic<bool>* stop) const {
+  // As the passes' lens layers show them (render/lens_layers.h): where the lens has effects,
+  // the point lights' own images (camera rays never meet a point light) and, with ghosts on,
+  // their ghosts; at preview quality, without glare and diffraction.
+  const auto* real = dynamic_cast<const RealisticCamera*>(&camera);
+  if (!real || !real->effects().Any()) return;
+  FlareSettings flare = FlareSettings::Preview();
+  flare.ghosts = real->effects().ghosts;
+  flare.light_images = true;
+  flare.stop = stop;
+  const FlareImages f = RenderFlare(*setup_.scene, *real, CropWindow{0, 0, camera.width(), camera.height()}, flare);
+  for (const std::vector<float>* layer : {&f.ghosts, &f.lights})
+    for (size_t i = 0; i < layer->size() && i < xyz.size(); ++i) xyz[i] += (*layer)[i];
 }
 
 void ViewSession::BuildCameraWhereItStands() {

@@ -146,6 +146,9 @@ class ViewSession {
   const Camera& PreviewCamera(int divisor);
   int PreviewDivisor() const;
   void PreviewFrame(int divisor, const std::atomic<bool>* stop);
+  // The lamps' images and ghosts at preview quality (FlareSettings::Preview) added to a
+  // preview's XYZ.
+  void AddPreviewFlare(const Camera& camera, std::vector<float>& xyz, const std::atomic<bool>* stop) const;
   void Pass(const std::atomic<bool>* stop);
   void ShowFilm();
   void ShowXyz(const std::vector<float>& xyz, int width, int height);
@@ -168,7 +171,8 @@ class ViewSession {
 
   std::unique_ptr<Integrator> preview_integrator_;
   std::map<int, std::unique_ptr<Camera>> preview_cameras_;  // by divisor
-  double preview_seconds_per_pixel_ = 0;
+  double preview_seconds_per_pixel_ = 0;  // the picture's, the lamps' images and ghosts apart
+  double preview_flare_seconds_ = 0;      // theirs (the bundles' cost hardly depends on the resolution)
   bool still_preview_shown_ = false;
 
   std::unique_ptr<Film> film_;
