@@ -3,10 +3,13 @@
 // stop, for rays over the whole front element, oblique ones included; and what it refuses.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 
 #include "base/rng.h"
+#include "optics/coating_library.h"
+#include "optics/coating_tables.h"
 #include "optics/compiled_sequence.h"
 #include "optics/ghosts.h"
 #include "optics/lens_file.h"
@@ -79,6 +82,39 @@ TEST(CompiledSequence, RefusesWhatItDoesNotTrace) {
     std::vector<SurfaceVisit> direct;
     for (int i = 0; i < lens.SurfaceCount(); ++i) direct.push_back({i, false, true});
     EXPECT_FALSE(CompiledSequence::Compile(lens, direct, 550)) << name;
+  }
+}
+
+}  // namespace
+}  // namespace objektiv
+
+namespace objektiv {
+namespace {
+
+// The coating tables against the thin-film stacks they tabulate: every coated surface of the
+// multi-coated and the MgF2-coated double Gauss, both directions, at three wavelengths, over
+// every angle of incidence.
+TEST(CoatingTables, FollowTheStacksWithin1e4) {
+  for (const char* coating : {"multi", "MgF2"}) {
+    LensPrescription p = LoadLens("dgauss.50mm", GlassCatalog::Default());
+    Recoat(p, *FindBuiltInCoating(coating));
+    const LensSystem lens = SetUpLens(std::move(p), {}, {INFINITY, FocusRequest::From::kFilm, false}).lens;
+    const std::vector<double> bands = {446.7, 580, 713.3};
+    const CoatingTables tables(lens, bands);
+    int coated = 0;
+    double worst = 0;
+    for (int i = 0; i < lens.SurfaceCount(); ++i) {
+      EXPECT_EQ(tables.Has(i), lens.Coated(i) != nullptr);
+      if (!tables.Has(i)) continue;
+      ++coated;
+      for (bool toward_film : {true, false})
+        for (int b = 0; b < 3; ++b)
+          for (double cos_i = 0.0005; cos_i <= 1; cos_i += 0.00731)
+            worst = std::max(worst, std::abs(tables.Reflectance(i, toward_film, b, cos_i) -
+                                             lens.SurfaceReflectance(i, bands[b], cos_i, toward_film)));
+    }
+    EXPECT_EQ(coated, 8) << coating;  // the air-glass surfaces (two of the ten are cemented)
+    EXPECT_LT(worst, 1e-4) << coating;
   }
 }
 

@@ -15,13 +15,17 @@ bool Plain(const LensSurface& s) {
 }  // namespace
 
 std::optional<CompiledSequence> CompiledSequence::Compile(const LensSystem& lens, std::span<const SurfaceVisit> visits,
-                                                          double lambda_nm, std::span<const double> bands) {
+                                                          double lambda_nm, std::span<const double> bands,
+                                                          const CoatingTables* tables, bool losses) {
   if (lens.hood() || bands.size() > size_t(kMaxBands)) return std::nullopt;
   CompiledSequence c;
   c.lens_ = &lens;
   c.lambda_ = lambda_nm;
-  c.band_count_ = int(bands.size());
+  c.losses_ = losses;
+  c.band_count_ = losses ? int(bands.size()) : 0;
   std::copy(bands.begin(), bands.end(), c.bands_.begin());
+  if (tables && std::equal(bands.begin(), bands.end(), tables->wavelengths().begin(), tables->wavelengths().end()))
+    c.tables_ = tables;
   int previous = -1;
   for (const SurfaceVisit& v : visits) {
     const LensSurface& s = lens.surface(v.surface);
@@ -37,6 +41,7 @@ std::optional<CompiledSequence> CompiledSequence::Compile(const LensSystem& lens
     step.n_film = s.IndexAfter(lambda_nm);
     step.interface = step.n_object != step.n_film;
     step.eta = v.toward_film ? step.n_object / step.n_film : step.n_film / step.n_object;
+    step.tabulated = c.tables_ && c.tables_->Has(v.surface);
     step.alpha = 0;
     const Glass* medium = previous >= 0 ? lens.surface(std::min(previous, v.surface)).medium.get() : nullptr;
     if (medium) step.alpha = medium->AbsorptionCoefficient(lambda_nm);
@@ -67,7 +72,7 @@ CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<
     o = o + d * *t;
     if (st.is_stop && stop_points) stop_points->push_back(o);
     // Beer-Lambert along the segment just travelled (Glass::InternalTransmittance).
-    if (st.alpha != 0 && *t > 0 && band_count_ == 0) r.internal_transmittance *= std::exp(-st.alpha * *t);
+    if (st.alpha != 0 && *t > 0 && band_count_ == 0 && losses_) r.internal_transmittance *= std::exp(-st.alpha * *t);
     for (int b = 0; b < band_count_; ++b)
       if (st.band_alpha[b] != 0 && *t > 0) r.band_transmittance[b] *= std::exp(-st.band_alpha[b] * *t);
     if (!st.interface) {
@@ -86,10 +91,12 @@ CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<
     const double cos_i = -Dot(normal, d);
     // With bands, the transmittance at lambda_ itself is not asked for (left 1).
     const double reflectance =
-        band_count_ > 0 ? (st.reflect ? 1.0 : 0.0)
-                        : lens_->SurfaceReflectance(st.index, lambda_, cos_i, st.toward_film, st.n_object, st.n_film);
+        band_count_ > 0 || !losses_ ? (st.reflect ? 1.0 : 0.0)
+                                    : lens_->SurfaceReflectance(st.index, lambda_, cos_i, st.toward_film, st.n_object, st.n_film);
     for (int b = 0; b < band_count_; ++b) {
-      const double rb = lens_->SurfaceReflectance(st.index, bands_[b], cos_i, st.toward_film, st.band_n_object[b], st.band_n_film[b]);
+      const double rb =
+          st.tabulated ? tables_->Reflectance(st.index, st.toward_film, b, cos_i)
+                       : lens_->SurfaceReflectance(st.index, bands_[b], cos_i, st.toward_film, st.band_n_object[b], st.band_n_film[b]);
       r.band_transmittance[b] *= st.reflect ? rb : 1 - rb;
     }
     if (st.reflect) {

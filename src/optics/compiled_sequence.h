@@ -18,6 +18,7 @@
 #include <span>
 #include <vector>
 
+#include "optics/coating_tables.h"
 #include "optics/lens_tracer.h"
 
 namespace objektiv {
@@ -29,8 +30,12 @@ class CompiledSequence {
   // same path, the one traced at lambda_nm (a preview's colours: the losses at each
   // wavelength, with the geometry of one); the transmittance at lambda_nm is then not found.
   static constexpr int kMaxBands = 3;
+  // `tables`, if given (at the bands' wavelengths), give the coated surfaces' reflectance at
+  // the bands (optics/coating_tables.h: within 1e-4 of the stacks).
+  // Without `losses` only where the rays go is traced (their transmittances are left 1).
   static std::optional<CompiledSequence> Compile(const LensSystem& lens, std::span<const SurfaceVisit> visits,
-                                                 double lambda_nm, std::span<const double> bands = {});
+                                                 double lambda_nm, std::span<const double> bands = {},
+                                                 const CoatingTables* tables = nullptr, bool losses = true);
 
   struct Result {
     bool alive = false;
@@ -56,11 +61,14 @@ class CompiledSequence {
     double alpha;
     // The same at each band.
     std::array<double, kMaxBands> band_n_object{}, band_n_film{}, band_alpha{};
+    bool tabulated;  // its reflectance at the bands from tables_
   };
   const LensSystem* lens_ = nullptr;
   double lambda_ = 0;
   int band_count_ = 0;
   std::array<double, kMaxBands> bands_{};
+  const CoatingTables* tables_ = nullptr;
+  bool losses_ = true;
   std::vector<Step> steps_;
 };
 

@@ -43,10 +43,11 @@ namespace {
 // traced along `path` to the film.
 class BundleTracer {
  public:
+  // `geometry_only`: for where the rays go alone (Region), without their losses.
   BundleTracer(const LensSystem& lens, std::span<const SurfaceVisit> path, const PointSource& source, double lambda_nm,
-               const BundleOptions& options = {})
+               const BundleOptions& options = {}, bool geometry_only = false)
       : lens_(lens), path_(path), source_(source), options_(options), lambda_(lambda_nm),
-        compiled_(CompiledSequence::Compile(lens, path, lambda_nm, options.bands)) {
+        compiled_(CompiledSequence::Compile(lens, path, lambda_nm, options.bands, options.coating_tables, !geometry_only)) {
     for (const SurfaceVisit& v : path)
       if (const SurfaceDirt* dirt = lens.surface(v.surface).dirt.get()) mean_dirt_ *= dirt->MeanTransmittance();
     const LensSurface& front = lens.surface(0);
@@ -329,7 +330,7 @@ std::vector<SurfaceVisit> DirectPath(const LensSystem& lens) {
 std::optional<BundleRegion> FindRegion(const LensSystem& lens, std::span<const SurfaceVisit> path,
                                        const PointSource& source, double lambda_nm, int search_grid) {
   BundleRegion r;
-  if (!BundleTracer(lens, path, source, lambda_nm).Region(r.lo, r.hi, search_grid)) return std::nullopt;
+  if (!BundleTracer(lens, path, source, lambda_nm, {}, /*geometry_only=*/true).Region(r.lo, r.hi, search_grid)) return std::nullopt;
   // Other wavelengths' light gets through a region a little moved (the pupils' chromatic
   // shift, far less than the search's step, which the region is already widened by): 2% more.
   const Vec2d margin = (r.hi - r.lo) * 0.02;

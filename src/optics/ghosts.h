@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "base/vec.h"
+#include "optics/coating_tables.h"
 #include "optics/lens_tracer.h"
 
 namespace objektiv {
@@ -96,6 +97,9 @@ struct BundleOptions {
   // optics/compiled_sequence.h). The triangles' flux is then the bands' mean, their tint each
   // band's share.
   std::vector<double> bands;
+  // The coated surfaces' reflectance at the bands from tables (optics/coating_tables.h, at
+  // the bands' wavelengths), instead of their thin-film stacks.
+  const CoatingTables* coating_tables = nullptr;
   const BundleRegion* region = nullptr;
   std::function<double(double u, double v)> stop_transmittance;
   bool lossless = false;

@@ -188,7 +188,13 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
       } else {
         for (double l : lambdas) tasks.push_back({&sources[s], &p, l});
       }
-  if (settings.one_geometry) options.bands = direct_options.bands = lambdas;
+  // One geometry: the bands' losses along each ray, the coatings' from tables.
+  std::optional<CoatingTables> coating_tables;
+  if (settings.one_geometry) {
+    options.bands = direct_options.bands = lambdas;
+    coating_tables.emplace(lens, lambdas);
+    options.coating_tables = direct_options.coating_tables = &*coating_tables;
+  }
   out.sources = int(sources.size());
 
   // Deterministic on any number of threads: the tasks go in chunks; a chunk's bundles are
