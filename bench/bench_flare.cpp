@@ -7,8 +7,10 @@
 // with six blades, 1280 x 720, all 45 ghosts (no culling), on every core; its counters give
 // the layer's relative difference from a finer one (grid 128, 32 wavelengths, made once: about
 // 80 s on 2 cores) where that one is brighter than 1% of its maximum. (This lens's ghosts
-// change little with the wavelength: 8 bands give what 32 do, to 1e-4.) BM_DiffractionPass: the diffraction layer's kernel and
-// convolution at 1280 x 720.
+// change little with the wavelength: 8 bands give what 32 do, to 1e-4.) BM_GhostPreview: the
+// same light's ghosts at preview quality (FlareSettings::Preview) at 640 x 480, as the live
+// viewer composes them, against a fine layer. BM_DiffractionPass: the diffraction layer's
+// kernel and convolution at 1280 x 720.
 #include <benchmark/benchmark.h>
 
 #include <spdlog/spdlog.h>
