@@ -1,0 +1,274 @@
+#include "optics/film_splat.h"
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+namespace objektiv {
+
+namespace {
+
+// The part of triangle abc inside the unit pixel [x, x + 1] x [y, y + 1] (pixel coordinates):
+// the triangle clipped by the pixel's four edges in turn (Sutherland-Hodgman), then its area
+// and centroid by the shoelace formulas.
+struct Overlap {
+  double area = 0;
+  Vec2d centroid{0, 0};
+};
+Overlap OverlapOf(const Vec2d& a, const Vec2d& b, const Vec2d& c, int x, int y) {
+  Vec2d buffer[2][9];
+  int count = 3;
+  buffer[0][0] = a, buffer[0][1] = b, buffer[0][2] = c;
+  int from = 0;
+  for (int side = 0; side < 4 && count > 0; ++side) {
+    // Inside: x >= X0, x <= X1, y >= Y0, y <= Y1 in turn.
+    auto value = [&](const Vec2d& p) {
+      switch (side) {
+        case 0: return p.x - x;
+        case 1: return x + 1 - p.x;
+        case 2: return p.y - y;
+        default: return y + 1 - p.y;
+      }
+    };
+    const Vec2d* in = buffer[from];
+    Vec2d* out = buffer[1 - from];
+    int n = 0;
+    for (int i = 0; i < count; ++i) {
+      const Vec2d& p = in[i];
+      const Vec2d& q = in[(i + 1) % count];
+      const double vp = value(p), vq = value(q);
+      if (vp >= 0) out[n++] = p;
+      if ((vp >= 0) != (vq >= 0)) out[n++] = p + (q - p) * (vp / (vp - vq));
+    }
+    count = n;
+    from = 1 - from;
+  }
+  double twice = 0, mx = 0, my = 0;
+  const Vec2d* poly = buffer[from];
+  for (int i = 0; i < count; ++i) {
+    const Vec2d& p = poly[i];
+    const Vec2d& q = poly[(i + 1) % count];
+    const double cross = p.x * q.y - q.x * p.y;
+    twice += cross;
+    mx += (p.x + q.x) * cross, my += (p.y + q.y) * cross;
+  }
+  Overlap o;
+  o.area = 0.5 * std::abs(twice);
+  o.centroid = twice != 0 ? Vec2d(mx / (3 * twice), my / (3 * twice)) : Vec2d(x + 0.5, y + 0.5);
+  return o;
+}
+
+// The exact area coverage of a polygon by accumulation (as font rasterisers do it): each edge
+// p -> q adds, row by row, the signed area it sweeps to its right into the cells it crosses,
+// so that the running sum along a row is the covered share of each pixel (its sign the
+// polygon's orientation). `acc` has rows of `width` cells, the polygon within x in [0,
+// width - 1); only rows [0, rows) are kept (the polygon may reach beyond them). `span`, per
+// row, the first and the last cell written so far (widened here): a row's sum is 0 outside
+// them (a thin triangle across the image covers a few pixels of each row).
+void AccumulateEdge(Vec2d p, Vec2d q, int width, int rows, double* acc, std::pair<int, int>* span) {
+  if (p.y == q.y) return;
+  double direction = 1;
+  if (p.y > q.y) {
+    std::swap(p, q);
+    direction = -1;
+  }
+  // x along the edge at height h, as a share of its height: always between p.x and q.x, even
+  // for an edge so flat that its slope dx/dy overflows (rounding past the polygon's columns
+  // wrote outside `acc`: a lamp on the axis focuses ghosts into such slivers).
+  const double dy = q.y - p.y;
+  auto x_at = [&](double h) { return p.x + (q.x - p.x) * std::clamp((h - p.y) / dy, 0.0, 1.0); };
+  // Only the rows kept (each row's sums stand alone): x where the edge enters each row anew.
+  const int first = std::max(int(std::floor(p.y)), 0), last = std::min(int(std::ceil(q.y)), rows);
+  for (int y = first; y < last; ++y) {
+    double* line = acc + size_t(y) * width;
+    const double top = std::max(double(y), p.y), bottom = std::min(double(y + 1), q.y);
+    const double x = x_at(top), x_next = x_at(bottom);
+    const double d = (bottom - top) * direction;
+    const double lo = std::min(x, x_next), hi = std::max(x, x_next);
+    const double lo_floor = std::floor(lo);
+    const int i0 = int(lo_floor), i1 = int(std::ceil(hi));
+    span[y].first = std::min(span[y].first, i0);
+    span[y].second = std::max(span[y].second, std::max(i1, i0 + 1));
+    if (i1 <= i0 + 1) {
+      // Within one column: the part of the cell right of the segment's mean x.
+      const double mean = 0.5 * (x + x_next) - lo_floor;
+      line[i0] += d - d * mean;
+      line[i0 + 1] += d * mean;
+    } else {
+      // Across columns: the swept area grows quadratically in the first and the last column,
+      // linearly between.
+      const double s = 1 / (hi - lo);
+      const double lo_frac = lo - lo_floor;
+      const double a0 = 0.5 * s * (1 - lo_frac) * (1 - lo_frac);
+      const double hi_frac = hi - i1 + 1;
+      const double am = 0.5 * s * hi_frac * hi_frac;
+      line[i0] += d * a0;
+      if (i1 == i0 + 2) {
+        line[i0 + 1] += d * (1 - a0 - am);
+      } else {
+        const double a1 = s * (1.5 - lo_frac);
+        line[i0 + 1] += d * (a1 - a0);
+        for (int i = i0 + 2; i < i1 - 1; ++i) line[i] += d * s;
+        const double a2 = a1 + (i1 - i0 - 3) * s;
+        line[i1 - 1] += d * (1 - a2 - am);
+      }
+      line[i1] += d * am;
+    }
+  }
+}
+
+}  // namespace
+
+double FluxWithin(std::span<const FilmTriangle> triangles, Vec2d lo, Vec2d hi) {
+  const double w = hi.x - lo.x, h = hi.y - lo.y;
+  if (!(w > 0 && h > 0)) return 0;
+  double flux = 0;
+  for (const FilmTriangle& t : triangles) {
+    // In units of the rectangle, which is then the unit square: its share is the overlap's area
+    // over its own.
+    auto unit = [&](const Vec2d& p) { return Vec2d((p.x - lo.x) / w, (p.y - lo.y) / h); };
+    const Vec2d a = unit(t.a), b = unit(t.b), c = unit(t.c);
+    const double area = 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y));
+    if (area > 0) {
+      flux += t.flux * std::min(1.0, OverlapOf(a, b, c, 0, 0).area / area);
+    } else {  // a degenerate triangle (an edge cell's segment or point): where its middle is
+      const Vec2d m = (a + b + c) * (1.0 / 3);
+      if (m.x >= 0 && m.x <= 1 && m.y >= 0 && m.y <= 1) flux += t.flux;
+    }
+  }
+  return flux;
+}
+
+namespace {
+
+// The rasterisation of Splat: add_at(triangle, pixel index, irradiance) for every pixel a
+// triangle covers.
+template <class Add>
+void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, double weight, bool pixel_centres,
+               Add&& add_at) {
+  const double pixel_area = r.w * r.h;
+  const FilmTriangle* current = nullptr;
+  auto add = [&](int x, int y, double v) {
+    if (x >= 0 && y >= 0 && x < r.width && y < r.height) add_at(*current, size_t(y) * r.width + x, v);
+  };
+  std::vector<double> coverage;
+  std::vector<std::pair<int, int>> spans;
+  for (const FilmTriangle& t : triangles) {
+    current = &t;
+    // Pixel coordinates.
+    const Vec2d a((t.a.x - r.x0) / r.w, (t.a.y - r.y0) / r.h), b((t.b.x - r.x0) / r.w, (t.b.y - r.y0) / r.h),
+        c((t.c.x - r.x0) / r.w, (t.c.y - r.y0) / r.h);
+    const double area = t.Area() / pixel_area;  // in pixels
+    // The pixel range it spans, clamped to just outside the image before it becomes an int.
+    auto pixel = [](double v, int size) { return int(std::floor(std::clamp(v, -1.0, double(size)))); };
+    const double lo_x = std::min({a.x, b.x, c.x}), hi_x = std::max({a.x, b.x, c.x});
+    const double lo_y = std::min({a.y, b.y, c.y}), hi_y = std::max({a.y, b.y, c.y});
+    if (!(hi_x >= 0 && lo_x < r.width && hi_y >= 0 && lo_y < r.height)) continue;  // off the film (or NaN)
+    const int x0 = pixel(lo_x, r.width), x1 = pixel(hi_x, r.width), y0 = pixel(lo_y, r.height), y1 = pixel(hi_y, r.height);
+    // Within one pixel, or too thin to clip reliably: all of it there.
+    if ((x0 == x1 && y0 == y1) || area < 1e-9) {
+      const Vec2d m = (a + b + c) * (1.0 / 3);
+      add(pixel(m.x, r.width), pixel(m.y, r.height), weight * t.flux / pixel_area);
+      continue;
+    }
+    const double per_area = weight * t.flux / (area * pixel_area);
+    // A varying irradiance: its relative value at a point (barycentric interpolation of the
+    // corners' values over their mean, which the triangle's flux fixes), taken at the
+    // centroid of the part of the triangle in a pixel (where a linear function has its mean).
+    const double mean_e = (t.ea + t.eb + t.ec) / 3;
+    const double det = (b.y - c.y) * (a.x - c.x) + (c.x - b.x) * (a.y - c.y);
+    // Its change per pixel: where the centroid of a partial pixel's part (within half a pixel
+    // of the pixel's centre each way) would change the value by less than kCentroidTolerance,
+    // the pixel's centre does (clipping the triangle to the pixel cost half the splat); and
+    // uniform where the triangle lies within 2 x 2 pixels (the variation inside one pixel's
+    // share of it is below what the pixels resolve: its neighbours carry the bundle's picture).
+    constexpr double kCentroidTolerance = 2e-3;
+    const double gx = ((t.ea - t.ec) * (b.y - c.y) + (t.eb - t.ec) * (c.y - a.y)) / (det * mean_e);
+    const double gy = ((t.ea - t.ec) * (c.x - b.x) + (t.eb - t.ec) * (a.x - c.x)) / (det * mean_e);
+    // The relative value is linear: its value at c plus the gradient's share.
+    const double at_c = t.ec / mean_e;
+    auto relative = [&](Vec2d p) { return std::max(0.0, at_c + gx * (p.x - c.x) + gy * (p.y - c.y)); };
+    const double spread = (std::max({t.ea, t.eb, t.ec}) - std::min({t.ea, t.eb, t.ec})) / mean_e;
+    const bool uniform = spread < 1e-3 || (x1 - x0 <= 1 && y1 - y0 <= 1);
+    const bool centres = pixel_centres || 0.5 * (std::abs(gx) + std::abs(gy)) < kCentroidTolerance;
+    // The value of pixel (x, y) given the share of it the triangle covers.
+    auto value = [&](int x, int y, double share) {
+      if (uniform) return per_area * share;
+      const Vec2d centre =
+          share >= 1 - 1e-9 || centres ? Vec2d(x + 0.5, y + 0.5) : OverlapOf(a, b, c, x, y).centroid;
+      return per_area * share * relative(centre);
+    };
+    // Within the image's width: the exact coverage by accumulated edges, for the rows inside
+    // the image (a band of rows: render/lens_flare.cpp splats by bands).
+    if (x0 >= 0 && x1 < r.width) {
+      const int row0 = std::max(y0, 0), bw = x1 - x0 + 2, bh = std::min(y1, r.height - 1) - row0 + 1;
+      coverage.assign(size_t(bw) * bh, 0.0);
+      spans.assign(size_t(bh), {bw, -1});
+      const Vec2d o(x0, row0);
+      for (const auto& [p, q] : {std::pair{a, b}, {b, c}, {c, a}})
+        AccumulateEdge(p - o, q - o, bw, bh, coverage.data(), spans.data());
+      for (int y = 0; y < bh; ++y) {
+        double sum = 0;
+        const double* row = &coverage[size_t(y) * bw];
+        const size_t start = size_t(row0 + y) * r.width + x0;
+        for (int x = spans[y].first, end = std::min(spans[y].second, bw - 2); x <= end; ++x) {
+          sum += row[x];
+          const double share = std::min(std::abs(sum), 1.0);
+          if (share > 1e-12) add_at(t, start + x, value(x0 + x, row0 + y, share));
+        }
+      }
+      continue;
+    }
+    // Across the image's edge: each pixel gets the flux times the share of the triangle's
+    // area that lies in it: the whole pixel where its four corners lie inside all three
+    // edges, nothing where they all lie outside one, else the clipped area.
+    const double orientation = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) >= 0 ? 1 : -1;
+    const Vec2d corners[3][2] = {{a, b}, {b, c}, {c, a}};
+    for (int y = std::max(y0, 0); y <= std::min(y1, r.height - 1); ++y)
+      for (int x = std::max(x0, 0); x <= std::min(x1, r.width - 1); ++x) {
+        bool all_in = true, any_out = false;
+        for (const auto& e : corners) {
+          // The edge function at the pixel's corners, positive inside.
+          const double ex = e[1].x - e[0].x, ey = e[1].y - e[0].y;
+          const double f00 = orientation * (ex * (y - e[0].y) - ey * (x - e[0].x));
+          const double lo = std::min({f00, f00 + orientation * ex, f00 - orientation * ey, f00 + orientation * (ex - ey)});
+          const double hi = std::max({f00, f00 + orientation * ex, f00 - orientation * ey, f00 + orientation * (ex - ey)});
+          all_in &= lo >= 0;
+          any_out |= hi <= 0;
+        }
+        if (any_out) continue;
+        const double overlap = all_in ? 1.0 : OverlapOf(a, b, c, x, y).area;
+        if (overlap > 0) add(x, y, value(x, y, overlap));
+      }
+  }
+}
+
+}  // namespace
+
+void Splat(std::span<const FilmTriangle> triangles, const FilmRaster& r, double weight, float* image, int stride) {
+  Rasterise(triangles, r, weight, false, [&](const FilmTriangle&, size_t i, double v) { image[i * stride] += float(v); });
+}
+
+void SplatColour(std::span<const FilmTriangle> triangles, const FilmRaster& r, const Vec3d& weight, float* xyz,
+                 bool pixel_centres) {
+  Rasterise(triangles, r, 1.0, pixel_centres, [&](const FilmTriangle&, size_t i, double v) {
+    float* p = xyz + 3 * i;
+    p[0] += float(weight.x * v), p[1] += float(weight.y * v), p[2] += float(weight.z * v);
+  });
+}
+
+void SplatBands(std::span<const FilmTriangle> triangles, const FilmRaster& r, const std::array<Vec3d, 3>& band_weights,
+                float* xyz, bool pixel_centres) {
+  const FilmTriangle* last = nullptr;
+  Vec3d weight(0.0);
+  Rasterise(triangles, r, 1.0, pixel_centres, [&](const FilmTriangle& t, size_t i, double v) {
+    if (&t != last) {
+      last = &t;
+      weight = band_weights[0] * t.tint.x + band_weights[1] * t.tint.y + band_weights[2] * t.tint.z;
+    }
+    float* p = xyz + 3 * i;
+    p[0] += float(weight.x * v), p[1] += float(weight.y * v), p[2] += float(weight.z * v);
+  });
+}
+
+}  // namespace objektiv

@@ -1,0 +1,57 @@
+// Film triangles and their splatting: the pieces a ray bundle (optics/ghosts.h) lands on the
+// film as, each with the flux it carries, and their rasterisation into an image with each
+// pixel's exact share of every triangle (or, for a preview, a varying irradiance taken at pixel
+// centres).
+#pragma once
+#include <array>
+#include <cmath>
+#include <span>
+
+#include "base/vec.h"
+
+namespace objektiv {
+
+// A triangle on the film (lens-space x, y, mm) and the flux it carries: per unit intensity
+// (W/sr) of a point at a finite distance, per unit irradiance (W/mm^2, across the beam) of one
+// at infinity.
+// The irradiance over the triangle varies linearly between the relative values ea, eb, ec at
+// its corners (equal: uniform), scaled so that it carries `flux`: a bundle estimates them at
+// its grid's corners from the cells around, so that its picture is smooth where the light is
+// rather than faceted cell by cell.
+struct FilmTriangle {
+  Vec2d a, b, c;
+  double flux;
+  double ea = 1, eb = 1, ec = 1;
+  // A bundle traced with bands (BundleOptions::bands): the flux at each band over `flux`,
+  // which is then their mean.
+  Vec3d tint{1, 1, 1};
+  double Area() const { return 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y)); }
+};
+
+// The flux the triangles carry into the rectangle [lo, hi] of the film (each triangle's flux
+// times the share of its area inside; the irradiance taken uniform over each).
+double FluxWithin(std::span<const FilmTriangle> triangles, Vec2d lo, Vec2d hi);
+
+// Rasterises triangles into an image of irradiance: pixel (x, y) covers film x in [x0 + x w,
+// x0 + (x + 1) w), y likewise with h; each pixel gets the flux that lands on it over its area:
+// the triangle's irradiance integrated exactly over the part of it inside the pixel (the
+// triangle clipped to the pixel: its area, and for a varying irradiance its centroid, where a
+// linear function takes its mean), so every triangle's flux lands exactly once, without the
+// aliasing of sampling pixel centres. `weight` scales every value.
+struct FilmRaster {
+  int width = 0, height = 0;
+  double x0 = 0, y0 = 0, w = 1, h = 1;  // mm
+};
+void Splat(std::span<const FilmTriangle> triangles, const FilmRaster& raster, double weight, float* image, int stride = 1);
+// The same into three interleaved channels at once, each with its own weight. With
+// `pixel_centres` (a preview's) a varying irradiance is taken at the centre of every pixel,
+// also of those the triangle covers only in part (no clipping for the part's centroid: up to
+// half a pixel's change of the irradiance off there).
+void SplatColour(std::span<const FilmTriangle> triangles, const FilmRaster& raster, const Vec3d& weight, float* image,
+                 bool pixel_centres = false);
+// The same for a bundle traced with bands: each triangle's weight is the bands' weights
+// (band_weights[b] for band b) by its tint.
+void SplatBands(std::span<const FilmTriangle> triangles, const FilmRaster& raster, const std::array<Vec3d, 3>& band_weights,
+                float* image, bool pixel_centres = false);
+
+}  // namespace objektiv
