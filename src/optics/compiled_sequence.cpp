@@ -79,14 +79,7 @@ CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<
       if (st.reflect) return r;  // nothing to reflect from
       continue;
     }
-    Vec3d normal;
-    if (s.HasAsphericTerms()) {
-      normal = SurfaceNormal(s, p);
-    } else {
-      const double c = s.Curvature();
-      const Vec3d g(-c * p.x, -c * p.y, 1 - (1 + s.conic) * c * p.z);
-      normal = g / Length(g);
-    }
+    Vec3d normal = InterfaceNormal(s, p);
     if (Dot(normal, d) > 0) normal = -normal;
     const double cos_i = -Dot(normal, d);
     // With bands, the transmittance at lambda_ itself is not asked for (left 1).
@@ -101,15 +94,13 @@ CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<
     }
     if (st.reflect) {
       r.surface_transmittance *= reflectance;
-      const Vec3d reflected = d + normal * (2 * cos_i);
-      d = reflected / Length(reflected);
+      d = ReflectedDirection(d, normal, cos_i);
       continue;
     }
     r.surface_transmittance *= 1 - reflectance;
-    const double k2 = 1 - st.eta * st.eta * (1 - cos_i * cos_i);
-    if (k2 < 0) return r;  // total internal reflection
-    const Vec3d refracted = d * st.eta + normal * (st.eta * cos_i - std::sqrt(k2));
-    d = refracted / Length(refracted);
+    const std::optional<Vec3d> refracted = RefractedDirection(d, normal, st.eta, cos_i);
+    if (!refracted) return r;  // total internal reflection
+    d = *refracted;
   }
   r.alive = true;
   r.ray = LensRay{o, d, false, in.wave_choices};

@@ -195,16 +195,8 @@ SurfaceCrossing CrossSurface(const LensSystem& lens, int i, const LensRay& ray, 
   c.mirror = s.mirror;
   c.interface = (n1 != n2 || crystal_in != crystal_out) && !s.mirror;
   if (!c.interface && !c.mirror) return c;
-  // The normal facing the incoming ray: for a plane or a conic from the gradient of its
-  // implicit form c (x^2 + y^2) + (1 + k) c z^2 - 2 z = 0 at the point (no square root of
-  // the sag's slope), for an asphere from the slope.
-  const double curvature = s.Curvature();
-  if (s.HasAsphericTerms() || s.toroidal || s.fresnel || s.form_error) {
-    c.normal = SurfaceNormal(s, p);
-  } else {
-    const Vec3d g(-curvature * p.x, -curvature * p.y, 1 - (1 + s.conic) * curvature * p.z);
-    c.normal = g / Length(g);
-  }
+  // The normal facing the incoming ray.
+  c.normal = InterfaceNormal(s, p);
   if (placed) c.normal = placed->FromLocal(c.normal);
   if (Dot(c.normal, c.d) > 0) c.normal = -c.normal;
   c.cos_i = -Dot(c.normal, c.d);
@@ -256,8 +248,7 @@ LensRay Reflected(const SurfaceCrossing& c, const Vec3d& d) {
     const Vec3d dir = k ? RayDirectionOf(*k, m) : d + c.normal * (2 * c.cos_i);
     return {c.p, dir / Length(dir), m.extraordinary, in_crystal ? c.wave_choices >> 1 : c.wave_choices};
   }
-  Vec3d r = d + c.normal * (2 * c.cos_i);
-  return {c.p, r / Length(r), false, c.wave_choices};
+  return {c.p, ReflectedDirection(d, c.normal, c.cos_i), false, c.wave_choices};
 }
 
 std::optional<LensRay> Refracted(const SurfaceCrossing& c, const Vec3d& d) {
@@ -269,10 +260,29 @@ std::optional<LensRay> Refracted(const SurfaceCrossing& c, const Vec3d& d) {
     return LensRay{c.p, RayDirectionOf(*k, c.refracted_medium), c.refracted_medium.extraordinary,
                    into_crystal ? c.wave_choices >> 1 : c.wave_choices};
   }
-  const double k2 = 1 - c.eta * c.eta * (1 - c.cos_i * c.cos_i);
+  const std::optional<Vec3d> r = RefractedDirection(d, c.normal, c.eta, c.cos_i);
+  if (!r) return std::nullopt;
+  return LensRay{c.p, *r, false, c.wave_choices};
+}
+
+Vec3d InterfaceNormal(const LensSurface& s, const Vec3d& p) {
+  if (s.HasAsphericTerms() || s.toroidal || s.fresnel || s.form_error) return SurfaceNormal(s, p);
+  // The gradient of c (x^2 + y^2) + (1 + k) c z^2 - 2 z = 0.
+  const double curvature = s.Curvature();
+  const Vec3d g(-curvature * p.x, -curvature * p.y, 1 - (1 + s.conic) * curvature * p.z);
+  return g / Length(g);
+}
+
+Vec3d ReflectedDirection(const Vec3d& d, const Vec3d& n, double cos_i) {
+  const Vec3d r = d + n * (2 * cos_i);
+  return r / Length(r);
+}
+
+std::optional<Vec3d> RefractedDirection(const Vec3d& d, const Vec3d& n, double eta, double cos_i) {
+  const double k2 = 1 - eta * eta * (1 - cos_i * cos_i);
   if (k2 < 0) return std::nullopt;
-  Vec3d r = d * c.eta + c.normal * (c.eta * c.cos_i - std::sqrt(k2));
-  return LensRay{c.p, r / Length(r), false, c.wave_choices};
+  const Vec3d r = d * eta + n * (eta * cos_i - std::sqrt(k2));
+  return r / Length(r);
 }
 
 double SegmentTransmittance(const LensSystem& lens, int from, int to, double lambda_nm, double length) {

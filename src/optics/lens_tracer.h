@@ -76,6 +76,13 @@ TraceResult TraceSequence(const LensSystem& lens, const LensRay& ray, double lam
 // The unit normal of surface s at p (relative to its vertex or not: it depends on x, y only),
 // pointing toward +z (the film).
 Vec3d SurfaceNormal(const LensSurface& s, const Vec3d& p);
+// The unit normal of surface s at p in its own frame (as SurfaceNormal), from the implicit form
+// of its conic where it is one (no square root of the sag's slope): the tracers' way.
+Vec3d InterfaceNormal(const LensSurface& s, const Vec3d& p);
+// Direction d (unit) reflected, or refracted with index ratio eta (incoming over outgoing;
+// nothing beyond the critical angle), at a surface of unit normal n facing it, cos_i = -n.d.
+Vec3d ReflectedDirection(const Vec3d& d, const Vec3d& n, double cos_i);
+std::optional<Vec3d> RefractedDirection(const Vec3d& d, const Vec3d& n, double eta, double cos_i);
 // Where the ray o + t d (o relative to the vertex, in the surface's frame) first meets surface
 // s, t >= about 0: nothing if it misses; `blocked` set where it meets a Fresnel surface's riser.
 // Every kind of surface, its form error included (the batch tracer's way for the surfaces its
