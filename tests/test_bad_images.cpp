@@ -99,6 +99,26 @@ TEST(BadImages, SizesBeyondTheLimitsAreRefused) {
   ExpectImageError([&] { ReadImageAny(wide.string()); }, wide, "needs 5120 MiB as floats, more than the limit of 4096 MiB");
 }
 
+// The fuzz harness lowers the limits for its process (a true 16384 x 16384 image is beyond
+// libFuzzer's memory cap); they can be lowered, never raised beyond the constants.
+TEST(BadImages, LimitsCanBeLoweredNotRaised) {
+  fs::path dir = TempDir("lowered");
+  fs::path p = dir / "claim.tif";
+  WriteTiffClaiming(p, 4096, 4096, 3);
+  SetImageReadLimits({int64_t(1) << 22, int64_t(256) << 20});
+  ExpectImageError([&] { ReadImageRgb(p.string()); }, p, "4096x4096, more than the limit of 4194304 pixels (2048x2048)");
+  SetImageReadLimits({int64_t(1) << 26, int64_t(64) << 20});
+  ExpectImageError([&] { ReadImageRgb(p.string()); }, p, "needs 192 MiB as floats, more than the limit of 64 MiB");
+  SetImageReadLimits({int64_t(1) << 40, -1});
+  EXPECT_EQ(CurrentImageReadLimits().pixels, kMaxImagePixels);
+  EXPECT_EQ(CurrentImageReadLimits().bytes, kMaxImageBytes);
+  // Within the limits, with no data for the rows after the first strip: OpenImageIO filled
+  // them with zeros, reporting success with the errors pending.
+  ExpectImageError([&] { ReadImageRgb(p.string()); }, p,
+                   "cannot decode image: TIFFReadRawStrip failed reading line y=32,z=0: Incorrect count for "
+                   "\"StripByteCounts\"; tag ignored");
+}
+
 // Finite values near the float maximum overflowed the environment map's sums and bilinear
 // blends into Inf and NaN (found by fuzz_image): refused as not finite values are.
 TEST(BadImages, PixelValuesBeyondTheLimitAreRefused) {

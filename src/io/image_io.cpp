@@ -3,6 +3,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -28,6 +29,18 @@ float LinearToSrgb(float v) {
 }
 
 namespace {
+std::atomic<int64_t> max_pixels{kMaxImagePixels};
+std::atomic<int64_t> max_bytes{kMaxImageBytes};
+}  // namespace
+
+ImageReadLimits CurrentImageReadLimits() { return {max_pixels.load(), max_bytes.load()}; }
+
+void SetImageReadLimits(ImageReadLimits limits) {
+  max_pixels = limits.pixels > 0 ? std::min(limits.pixels, kMaxImagePixels) : kMaxImagePixels;
+  max_bytes = limits.bytes > 0 ? std::min(limits.bytes, kMaxImageBytes) : kMaxImageBytes;
+}
+
+namespace {
 struct RawImage {
   Image image;
   bool integer_format = false;
@@ -50,7 +63,9 @@ bool ReadPixels(OIIO::ImageInput& in, std::vector<float>& pixels) {
                   ? in.read_tiles(0, 0, spec.x, spec.x + spec.width, y, y_end, spec.z, spec.z + 1, 0, spec.nchannels,
                                   OIIO::TypeDesc::FLOAT, out)
                   : in.read_scanlines(0, 0, y, y_end, spec.z, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, out);
-    if (!ok) return false;
+    // OpenImageIO 2.4's TIFF reader records a strip it could not read (a header claiming more
+    // rows than its strips hold) as an error, fills it with zeros and reports success.
+    if (!ok || in.has_error()) return false;
   }
   return true;
 }
@@ -70,12 +85,25 @@ constexpr const char* kImageFormatList = "EXR, HDR, PNG, JPEG, TIFF, TGA, BMP, P
 void CheckPixelCount(const std::string& path, const std::string& format, uintmax_t file_size, int64_t width,
                      int64_t height) {
   const int64_t pixels = width * height;
-  if (pixels > kMaxImagePixels)
-    throw MakeInputError(path, 0, "the image is {}x{}, more than the limit of {} pixels ({}x{})", width, height,
-                         kMaxImagePixels, 1 << 14, 1 << 14);
+  const int64_t limit = CurrentImageReadLimits().pixels;
+  if (pixels > limit) {
+    const int64_t side = int64_t(std::sqrt(double(limit)));
+    throw MakeInputError(path, 0, "the image is {}x{}, more than the limit of {} pixels ({}x{})", width, height, limit,
+                         side, side);
+  }
   if ((format == "bmp" || format == "pnm") && pixels > int64_t(std::min<uintmax_t>(file_size, INT64_MAX / 512)) * 256)
     throw MakeInputError(path, 0, "cannot read image: its header claims {}x{} pixels, more than a {}-byte {} file can hold",
                          width, height, file_size, format == "bmp" ? "BMP" : "PNM");
+}
+
+// A reader's error message, its first line only: OpenImageIO reports one line per strip or
+// tile that failed, thousands for a large file.
+std::string FirstErrorLine(OIIO::ImageInput& in) {
+  const std::string all = in.geterror();
+  const size_t end = all.find('\n');
+  if (end == std::string::npos) return all;
+  const auto more = std::count(all.begin() + end, all.end(), '\n');
+  return fmt::format("{} (and {} more such errors)", all.substr(0, end), more);
 }
 
 // decode(), with an exception from inside a decoder (a malformed file driving one of its
@@ -112,7 +140,7 @@ RawImage ReadRaw(const std::string& path) {
   // past its buffer. Read as the three channels a BMP has.
   if (format == "bmp") config.attribute("bmp:monochrome_detect", 0);
   if (!Decoding(path, [&] { return in->open(path, opened, config); }))
-    throw MakeInputError(path, 0, "cannot read image: {}", in->geterror());
+    throw MakeInputError(path, 0, "cannot read image: {}", FirstErrorLine(*in));
   if (std::string(in->format_name()) == "jpeg" && !JpegIsComplete(path))
     throw MakeInputError(path, 0, "cannot decode image: the JPEG data ends before its end-of-image marker (truncated)");
   const OIIO::ImageSpec& spec = in->spec();
@@ -120,25 +148,26 @@ RawImage ReadRaw(const std::string& path) {
     throw MakeInputError(path, 0, "image has no pixels");
   if (spec.depth != 1) throw MakeInputError(path, 0, "volume images (depth {}) are not supported", spec.depth);
   CheckPixelCount(path, format, file_size, spec.width, spec.height);
+  const int64_t max_bytes = CurrentImageReadLimits().bytes;
   const int64_t bytes = int64_t(spec.width) * spec.height * spec.nchannels * int64_t(sizeof(float));
-  if (bytes > kMaxImageBytes)
+  if (bytes > max_bytes)
     throw MakeInputError(path, 0, "the {}x{} image with {} channels needs {} MiB as floats, more than the limit of {} MiB",
-                         spec.width, spec.height, spec.nchannels, bytes >> 20, kMaxImageBytes >> 20);
+                         spec.width, spec.height, spec.nchannels, bytes >> 20, max_bytes >> 20);
   // OpenImageIO's readers decode up to 256 rows at once (a tiled file: whole rows of tiles)
   // into a buffer of their own, however few rows the image has: a 2-row EXR 16.8 million
   // pixels wide asked for 51 GB (found by fuzz_image).
   const int64_t rows_at_once = std::max<int64_t>(256, spec.tile_width > 0 ? spec.tile_height : 0);
   const int64_t chunk = int64_t(spec.width) * spec.nchannels * int64_t(sizeof(float)) * rows_at_once;
-  if (chunk > kMaxImageBytes)
+  if (chunk > max_bytes)
     throw MakeInputError(path, 0, "the image's rows are too wide to read: {} pixels with {} channels, {} MiB for the {} rows "
                          "its reader decodes at once, more than the limit of {} MiB",
-                         spec.width, spec.nchannels, chunk >> 20, rows_at_once, kMaxImageBytes >> 20);
+                         spec.width, spec.nchannels, chunk >> 20, rows_at_once, max_bytes >> 20);
   RawImage r;
   r.integer_format = !spec.format.is_floating_point();
   r.image.width = spec.width;
   r.image.height = spec.height;
   for (int c = 0; c < spec.nchannels; ++c) r.image.channels.push_back(spec.channel_name(c));
-  if (!Decoding(path, [&] { return ReadPixels(*in, r.image.pixels); })) throw MakeInputError(path, 0, "cannot decode image: {}", in->geterror());
+  if (!Decoding(path, [&] { return ReadPixels(*in, r.image.pixels); })) throw MakeInputError(path, 0, "cannot decode image: {}", FirstErrorLine(*in));
   in->close();
   return r;
 }

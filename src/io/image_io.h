@@ -14,6 +14,16 @@ namespace objektiv {
 // they are decoded a strip at a time, so a short file claiming a huge image fails early.
 inline constexpr int64_t kMaxImagePixels = int64_t(1) << 28;
 inline constexpr int64_t kMaxImageBytes = int64_t(4) << 30;
+// The limits the reader applies: the two above, unless lowered for this process by
+// SetImageReadLimits (values above them, or not positive, are taken as the constants). The
+// fuzz harness lowers them: its memory cap cannot tell a true 16384 x 16384 image, which
+// needs 3 GiB as RGB floats, from a false claim, and the reader's checks work alike at any size.
+struct ImageReadLimits {
+  int64_t pixels = kMaxImagePixels;
+  int64_t bytes = kMaxImageBytes;
+};
+ImageReadLimits CurrentImageReadLimits();
+void SetImageReadLimits(ImageReadLimits limits);
 // Largest pixel value read, in magnitude. No scene's radiance or reflectance comes near it
 // (the Sun's disc is about 1.6e9 cd/m^2), and beyond it the sums and products a renderer
 // forms (an environment map's importance over all its texels, bilinear blends, radiance over
