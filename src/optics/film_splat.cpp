@@ -62,10 +62,14 @@ Overlap OverlapOf(const Vec2d& a, const Vec2d& b, const Vec2d& c, int x, int y) 
 // p -> q adds, row by row, the signed area it sweeps to its right into the cells it crosses,
 // so that the running sum along a row is the covered share of each pixel (its sign the
 // polygon's orientation). `acc` has rows of `width` cells, the polygon within x in [0,
-// width - 1); only rows [0, rows) are kept (the polygon may reach beyond them). `span`, per
-// row, the first and the last cell written so far (widened here): a row's sum is 0 outside
-// them (a thin triangle across the image covers a few pixels of each row).
-void AccumulateEdge(Vec2d p, Vec2d q, int width, int rows, double* acc, std::pair<int, int>* span) {
+// width - 1); only rows [0, rows) are kept (the polygon may reach beyond them). `spans`, per
+// row, the first and the last cell written so far by edges going down and by edges going up
+// (widened here): a row's sum is 0 outside them, and constant between the two when they do
+// not meet (a convex polygon's inside, where its two sides' cells are apart).
+struct RowSpans {
+  int lo[2], hi[2];  // [0]: edges with increasing y, [1]: decreasing
+};
+void AccumulateEdge(Vec2d p, Vec2d q, int width, int rows, double* acc, RowSpans* spans) {
   if (p.y == q.y) return;
   double direction = 1;
   if (p.y > q.y) {
@@ -87,8 +91,9 @@ void AccumulateEdge(Vec2d p, Vec2d q, int width, int rows, double* acc, std::pai
     const double lo = std::min(x, x_next), hi = std::max(x, x_next);
     const double lo_floor = std::floor(lo);
     const int i0 = int(lo_floor), i1 = int(std::ceil(hi));
-    span[y].first = std::min(span[y].first, i0);
-    span[y].second = std::max(span[y].second, std::max(i1, i0 + 1));
+    const int side = direction > 0 ? 0 : 1;
+    spans[y].lo[side] = std::min(spans[y].lo[side], i0);
+    spans[y].hi[side] = std::max(spans[y].hi[side], std::max(i1, i0 + 1));
     if (i1 <= i0 + 1) {
       // Within one column: the part of the cell right of the segment's mean x.
       const double mean = 0.5 * (x + x_next) - lo_floor;
@@ -152,7 +157,7 @@ void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, dou
     if (x >= 0 && y >= 0 && x < r.width && y < r.height) add_at(*current, size_t(y) * r.width + x, v);
   };
   std::vector<double> coverage;
-  std::vector<std::pair<int, int>> spans;
+  std::vector<RowSpans> spans;
   for (const FilmTriangle& t : triangles) {
     current = &t;
     // Pixel coordinates.
@@ -198,48 +203,69 @@ void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, dou
           share >= 1 - 1e-9 || centres ? Vec2d(x + 0.5, y + 0.5) : OverlapOf(a, b, c, x, y).centroid;
       return per_area * share * relative(centre);
     };
-    // Within the image's width: the exact coverage by accumulated edges, for the rows inside
-    // the image (a band of rows: render/lens_flare.cpp splats by bands).
-    if (x0 >= 0 && x1 < r.width) {
-      const int row0 = std::max(y0, 0), bw = x1 - x0 + 2, bh = std::min(y1, r.height - 1) - row0 + 1;
-      coverage.assign(size_t(bw) * bh, 0.0);
-      spans.assign(size_t(bh), {bw, -1});
-      const Vec2d o(x0, row0);
-      for (const auto& [p, q] : {std::pair{a, b}, {b, c}, {c, a}})
-        AccumulateEdge(p - o, q - o, bw, bh, coverage.data(), spans.data());
-      for (int y = 0; y < bh; ++y) {
-        double sum = 0;
-        const double* row = &coverage[size_t(y) * bw];
-        const size_t start = size_t(row0 + y) * r.width + x0;
-        for (int x = spans[y].first, end = std::min(spans[y].second, bw - 2); x <= end; ++x) {
+    // The exact coverage by accumulated edges, for the rows inside the image (a band of rows:
+    // render/lens_flare.cpp splats by bands) and the columns inside it: the parts of the
+    // triangle left of the image are pressed onto its left edge, those right of it onto its
+    // right edge (each edge cut where it crosses them, then x clamped), which changes the
+    // winding number of no point inside the image, so no pixel's coverage.
+    const int cx0 = std::max(x0, 0), cx1 = std::min(x1, r.width - 1);
+    // Columns: the pixels', then two for what the edges at the right end write past them.
+    const int cols = cx1 - cx0 + 1, bw = cols + 2;
+    const int row0 = std::max(y0, 0), bh = std::min(y1, r.height - 1) - row0 + 1;
+    coverage.assign(size_t(bw) * bh, 0.0);
+    spans.assign(size_t(bh), RowSpans{{bw, bw}, {-1, -1}});
+    const Vec2d o(cx0, row0);
+    const double left = 0 - cx0, right = r.width - cx0;  // the image's edges, in the buffer's columns
+    for (const auto& [p, q] : {std::pair{a - o, b - o}, {b - o, c - o}, {c - o, a - o}}) {
+      double cuts[4] = {0, 1, 1, 1};
+      int n = 1;
+      for (const double edge : {left, right})
+        if ((p.x - edge) * (q.x - edge) < 0) cuts[n++] = (edge - p.x) / (q.x - p.x);
+      if (n == 3 && cuts[2] < cuts[1]) std::swap(cuts[1], cuts[2]);
+      cuts[n] = 1;
+      auto at = [&](double t) {
+        const Vec2d v = t >= 1 ? q : p + (q - p) * t;
+        return Vec2d(std::clamp(v.x, left, right), v.y);
+      };
+      for (int k = 0; k < n; ++k) AccumulateEdge(at(cuts[k]), at(cuts[k + 1]), bw, bh, coverage.data(), spans.data());
+    }
+    // The value along a row where the share is constant and the irradiance taken at pixel
+    // centres: linear in x.
+    const bool linear_inside = uniform || centres;
+    for (int y = 0; y < bh; ++y) {
+      const RowSpans& sp = spans[y];
+      const int first = std::min(sp.lo[0], sp.lo[1]), last = std::min(std::max(sp.hi[0], sp.hi[1]), cols - 1);
+      // The cells between the two sides' (none written: the share constant).
+      int gap_lo = last + 1, gap_hi = last;
+      if (sp.hi[0] < sp.lo[1]) {
+        gap_lo = sp.hi[0] + 1, gap_hi = std::min(sp.lo[1] - 1, last);
+      } else if (sp.hi[1] < sp.lo[0]) {
+        gap_lo = sp.hi[1] + 1, gap_hi = std::min(sp.lo[0] - 1, last);
+      }
+      double sum = 0;
+      const double* row = &coverage[size_t(y) * bw];
+      const size_t start = size_t(row0 + y) * r.width + cx0;
+      auto each_cell = [&](int from, int to) {
+        for (int x = from; x <= to; ++x) {
           sum += row[x];
           const double share = std::min(std::abs(sum), 1.0);
-          if (share > 1e-12) add_at(t, start + x, value(x0 + x, row0 + y, share));
+          if (share > 1e-12) add_at(t, start + x, value(cx0 + x, row0 + y, share));
+        }
+      };
+      each_cell(first, gap_lo - 1);
+      if (gap_lo <= gap_hi) {
+        const double share = std::min(std::abs(sum), 1.0);
+        if (share > 1e-12 && (linear_inside || share >= 1 - 1e-9)) {
+          const double py = row0 + y + 0.5 - c.y;
+          double rel = at_c + gx * (cx0 + gap_lo + 0.5 - c.x) + gy * py;
+          const double scale = per_area * share;
+          for (int x = gap_lo; x <= gap_hi; ++x, rel += gx) add_at(t, start + x, uniform ? scale : scale * std::max(0.0, rel));
+        } else if (share > 1e-12) {
+          for (int x = gap_lo; x <= gap_hi; ++x) add_at(t, start + x, value(cx0 + x, row0 + y, share));
         }
       }
-      continue;
+      each_cell(std::max(gap_hi + 1, gap_lo), last);
     }
-    // Across the image's edge: each pixel gets the flux times the share of the triangle's
-    // area that lies in it: the whole pixel where its four corners lie inside all three
-    // edges, nothing where they all lie outside one, else the clipped area.
-    const double orientation = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) >= 0 ? 1 : -1;
-    const Vec2d corners[3][2] = {{a, b}, {b, c}, {c, a}};
-    for (int y = std::max(y0, 0); y <= std::min(y1, r.height - 1); ++y)
-      for (int x = std::max(x0, 0); x <= std::min(x1, r.width - 1); ++x) {
-        bool all_in = true, any_out = false;
-        for (const auto& e : corners) {
-          // The edge function at the pixel's corners, positive inside.
-          const double ex = e[1].x - e[0].x, ey = e[1].y - e[0].y;
-          const double f00 = orientation * (ex * (y - e[0].y) - ey * (x - e[0].x));
-          const double lo = std::min({f00, f00 + orientation * ex, f00 - orientation * ey, f00 + orientation * (ex - ey)});
-          const double hi = std::max({f00, f00 + orientation * ex, f00 - orientation * ey, f00 + orientation * (ex - ey)});
-          all_in &= lo >= 0;
-          any_out |= hi <= 0;
-        }
-        if (any_out) continue;
-        const double overlap = all_in ? 1.0 : OverlapOf(a, b, c, x, y).area;
-        if (overlap > 0) add(x, y, value(x, y, overlap));
-      }
   }
 }
 
@@ -247,6 +273,49 @@ void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, dou
 
 void Splat(std::span<const FilmTriangle> triangles, const FilmRaster& r, double weight, float* image, int stride) {
   Rasterise(triangles, r, weight, false, [&](const FilmTriangle&, size_t i, double v) { image[i * stride] += float(v); });
+}
+
+FilmRaster HalfResolution(const FilmRaster& r) {
+  FilmRaster half = r;
+  half.width = (r.width + 1) / 2, half.height = (r.height + 1) / 2;
+  half.w = 2 * r.w, half.h = 2 * r.h;
+  return half;
+}
+
+double IrradianceContrast(std::span<const FilmTriangle> triangles) {
+  double flux = 0, area = 0, flux_times_irradiance = 0;
+  for (const FilmTriangle& t : triangles) area += t.Area();
+  if (triangles.empty() || !(area > 0)) return 1;
+  const double smallest = 1e-3 * area / double(triangles.size());
+  double largest = 0;
+  for (const FilmTriangle& t : triangles) {
+    const double a = t.Area();
+    if (a < smallest || !(t.flux > 0)) continue;
+    const double e = t.flux / a * std::max({t.ea, t.eb, t.ec}) / ((t.ea + t.eb + t.ec) / 3);
+    largest = std::max(largest, e);
+    flux += t.flux, flux_times_irradiance += t.flux * t.flux / a;
+  }
+  return flux > 0 ? largest / (flux_times_irradiance / flux) : 1;
+}
+
+void AddUpsampled(const float* half, int width, int height, int y0, int y1, float* full) {
+  const int hw = (width + 1) / 2, hh = (height + 1) / 2;
+  // Full pixel 2i sits at half coordinate i - 1/4, 2i + 1 at i + 1/4: 3/4 of half pixel i and
+  // 1/4 of its neighbour on that side.
+  auto neighbour = [](int full_index, int size) {
+    const int i = full_index / 2;
+    return std::clamp(full_index % 2 ? i + 1 : i - 1, 0, size - 1);
+  };
+  for (int y = y0; y < y1; ++y) {
+    const float* row_a = half + size_t(y / 2) * hw * 3;
+    const float* row_b = half + size_t(neighbour(y, hh)) * hw * 3;
+    float* out = full + size_t(y) * width * 3;
+    for (int x = 0; x < width; ++x) {
+      const size_t i = size_t(x / 2) * 3, j = size_t(neighbour(x, hw)) * 3;
+      for (int c = 0; c < 3; ++c)
+        out[3 * x + c] += 0.5625f * row_a[i + c] + 0.1875f * (row_a[j + c] + row_b[i + c]) + 0.0625f * row_b[j + c];
+    }
+  }
 }
 
 void SplatColour(std::span<const FilmTriangle> triangles, const FilmRaster& r, const Vec3d& weight, float* xyz,

@@ -43,6 +43,23 @@ struct FilmRaster {
   double x0 = 0, y0 = 0, w = 1, h = 1;  // mm
 };
 void Splat(std::span<const FilmTriangle> triangles, const FilmRaster& raster, double weight, float* image, int stride = 1);
+
+// A preview's coarse splat, for ghosts large on the film, whose light changes little from one
+// pixel to the next but at their edges: the raster at half the resolution of `r`, each pixel
+// 2 x 2 of r's (where r's width or height is odd, the last column or row reaching half a pixel
+// past r's edge).
+FilmRaster HalfResolution(const FilmRaster& r);
+// How far a bundle's irradiance rises above its mean: the largest of its triangles' (their
+// flux over their area) over the mean irradiance its flux has (the flux-weighted mean), 1 for a
+// uniform one. A focused core or a caustic gives a large value; triangles whose area is below
+// a thousandth of the mean's (an edge's slivers) are not counted.
+double IrradianceContrast(std::span<const FilmTriangle> triangles);
+// Adds an image of 3 interleaved channels on HalfResolution of a width x height raster into
+// rows [y0, y1) of one on the raster itself: each pixel's value interpolated bilinearly at its
+// centre (the half image's edges extended), so an irradiance stays one and a flux is kept
+// (but for what the extension moves at the image's edges); a sharp edge becomes a ramp about
+// two pixels wide.
+void AddUpsampled(const float* half, int width, int height, int y0, int y1, float* full);
 // The same into three interleaved channels at once, each with its own weight. With
 // `pixel_centres` (a preview's) a varying irradiance is taken at the centre of every pixel,
 // also of those the triangle covers only in part (no clipping for the part's centroid: up to

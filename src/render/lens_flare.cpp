@@ -101,6 +101,7 @@ FlareSettings FlareSettings::Preview() {
   s.wavelengths = 3;
   s.cull = 0;
   s.pixel_centres = true;
+  s.half_resolution_from = 64;
   s.one_geometry = true;
   return s;
 }
@@ -205,7 +206,35 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
     Vec3d weight{0.0};
     std::array<Vec3d, 3> band_weights{};  // one_geometry's
     bool ghost = false;
+    bool half = false;  // splatted at half the resolution
   };
+  constexpr double kHalfResolutionContrast = 4;
+  // Whether a ghost's light spans settings.half_resolution_from pixels both ways on the crop,
+  // with no focused core (tests/test_ghosts.cpp: within 12% at half the resolution up to a
+  // contrast of 3; at 5.6 and above, its core blurred by 24% and more).
+  auto large = [&](const std::vector<FilmTriangle>& bundle) {
+    if (settings.half_resolution_from <= 0 || bundle.empty()) return false;
+    Vec2d lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
+    for (const FilmTriangle& t : bundle)
+      for (const Vec2d& p : {t.a, t.b, t.c}) {
+        lo = Vec2d(std::min(lo.x, p.x), std::min(lo.y, p.y));
+        hi = Vec2d(std::max(hi.x, p.x), std::max(hi.y, p.y));
+      }
+    // In pixels, clamped to the crop.
+    auto span = [](double a, double b, double origin, double size, int pixels) {
+      const double u = (a - origin) / size, v = (b - origin) / size;
+      return std::clamp(std::max(u, v), 0.0, double(pixels)) - std::clamp(std::min(u, v), 0.0, double(pixels));
+    };
+    return span(lo.x, hi.x, raster.x0, raster.w, raster.width) >= settings.half_resolution_from &&
+           span(lo.y, hi.y, raster.y0, raster.h, raster.height) >= settings.half_resolution_from &&
+           IrradianceContrast(bundle) <= kHalfResolutionContrast;
+  };
+  const FilmRaster half_raster = HalfResolution(raster);
+  std::vector<float> half_ghosts(settings.half_resolution_from > 0 && settings.ghosts
+                                     ? size_t(half_raster.width) * half_raster.height * 3
+                                     : 0,
+                                 0.f);
+  std::atomic<bool> any_half = false;
   constexpr size_t kChunk = 64;
   constexpr int kBandRows = 16;
   const int bands = (out.height + kBandRows - 1) / kBandRows;
@@ -225,6 +254,8 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
       Traced& r = traced[k];
       r.ghost = p.ghost.has_value();
       r.bundle = p.ghost ? GhostBundle(lens, *p.ghost, f.source, t.lambda, o) : DirectBundle(lens, f.source, t.lambda, o);
+      r.half = r.ghost && large(r.bundle);
+      if (r.half) any_half = true;
       // The band's colour: the emission times the matching functions integrated over the band
       // (so that few bands keep white light white), its geometry at the band's middle.
       auto band_weight = [&](double lambda) {
@@ -238,21 +269,35 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
       }
     });
     tbb::parallel_for(0, bands, [&](int band) {
-      FilmRaster rows = raster;
-      const int y0 = band * kBandRows;
-      rows.height = std::min(kBandRows, out.height - y0);
-      rows.y0 = raster.y0 + y0 * raster.h;
-      const size_t offset = size_t(y0) * out.width * 3;
+      // The band's rows, and at half the resolution half as many (kBandRows is even).
+      auto rows_of = [&](const FilmRaster& r, int first, int count) {
+        FilmRaster rows = r;
+        rows.height = std::max(0, std::min(count, r.height - first));
+        rows.y0 = r.y0 + first * r.h;
+        return rows;
+      };
+      const FilmRaster rows = rows_of(raster, band * kBandRows, kBandRows);
+      const FilmRaster half_rows = rows_of(half_raster, band * kBandRows / 2, kBandRows / 2);
       for (size_t k = 0; k < count; ++k) {
-        float* image = (traced[k].ghost ? out.ghosts.data() : out.lights.data()) + offset;
+        const Traced& tr = traced[k];
+        const FilmRaster& into = tr.half ? half_rows : rows;
+        if (into.height == 0) continue;
+        float* image = tr.half    ? half_ghosts.data() + size_t(band) * kBandRows / 2 * half_raster.width * 3
+                       : tr.ghost ? out.ghosts.data() + size_t(band) * kBandRows * out.width * 3
+                                  : out.lights.data() + size_t(band) * kBandRows * out.width * 3;
         if (settings.one_geometry) {
-          SplatBands(traced[k].bundle, rows, traced[k].band_weights, image, settings.pixel_centres);
+          SplatBands(tr.bundle, into, tr.band_weights, image, settings.pixel_centres);
         } else {
-          SplatColour(traced[k].bundle, rows, traced[k].weight, image, settings.pixel_centres);
+          SplatColour(tr.bundle, into, tr.weight, image, settings.pixel_centres);
         }
       }
     });
   }
+  if (any_half)
+    tbb::parallel_for(0, bands, [&](int band) {
+      const int y0 = band * kBandRows;
+      AddUpsampled(half_ghosts.data(), out.width, out.height, y0, std::min(y0 + kBandRows, out.height), out.ghosts.data());
+    });
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

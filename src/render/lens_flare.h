@@ -34,6 +34,11 @@ struct FlareSettings {
   int edge_levels = 3;        // BundleOptions::edge_levels
   int region_grid = 32;       // the region search's grid (GhostRegion)
   bool pixel_centres = false;  // SplatColour's
+  // Ghosts whose light spans at least this many pixels of the crop window both ways, and
+  // whose irradiance rises nowhere far above its mean (no focused core: IrradianceContrast of
+  // optics/film_splat.h at most 4), are splatted at half the resolution, then added upsampled:
+  // a quarter of the pixel writes, their edges a ramp of about two pixels. 0: none.
+  int half_resolution_from = 0;
   // Each bundle traced once, at 550 nm, with its losses at each of the `wavelengths` bands
   // (at most 3) along the same rays (BundleOptions::bands): a preview's colours (the coatings'
   // and the glasses'), without the ghosts' chromatic spread.
