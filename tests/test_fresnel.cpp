@@ -48,6 +48,22 @@ TEST(Fresnel, NormalIncidenceAndBrewsterAngle) {
   EXPECT_NEAR(FresnelDielectric(0.f, 1.5f), 1, 1e-6);  // grazing
 }
 
+// The reflectance is formed over one division (the squares' common denominator); for an
+// index whose products leave single precision (a scene may give any positive index) it falls
+// back to the two quotients: finite, and near 1 as the closed form says at normal incidence.
+TEST(Fresnel, ExtremeIndicesStayFinite) {
+  for (float n : {1e9f, 1e12f, 1e20f, 1e-9f}) {
+    for (float c : {1.f, 0.7f, 0.2f}) {
+      const float r = FresnelDielectric(c, n);
+      EXPECT_TRUE(std::isfinite(r)) << n << " " << c;
+      EXPECT_GE(r, 0.f);
+      EXPECT_LE(r, 1.f);
+    }
+    EXPECT_NEAR(FresnelDielectric(1.f, n), Sqr((n - 1) / (n + 1)), 1e-6) << n;
+  }
+  EXPECT_NEAR(FresnelDielectric(1.0, 1e100), 1, 1e-12);
+}
+
 TEST(Fresnel, ConductorReducesToDielectricWithoutAbsorption) {
   for (float c : {0.1f, 0.5f, 0.9f, 1.f}) EXPECT_NEAR(FresnelComplex(c, {1.5f, 0.f}), FresnelDielectric(c, 1.5f), 1e-5);
   // A purely imaginary index reflects everything (Mitsuba's "none" conductor).

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/fresnel_dielectric.h"
+
 namespace objektiv {
 
 namespace {
@@ -42,6 +44,10 @@ std::optional<CompiledSequence> CompiledSequence::Compile(const LensSystem& lens
     step.interface = step.n_object != step.n_film;
     step.eta = v.toward_film ? step.n_object / step.n_film : step.n_film / step.n_object;
     step.tabulated = c.tables_ && c.tables_->Has(v.surface);
+    step.semi_diameter2 = s.semi_diameter * s.semi_diameter, step.obscuration2 = s.obscuration * s.obscuration;
+    step.conic = !s.HasAsphericTerms();
+    step.c = s.Curvature(), step.k1 = 1 + s.conic;
+    step.bare = !lens.Coated(v.surface);
     step.alpha = 0;
     const Glass* medium = previous >= 0 ? lens.surface(std::min(previous, v.surface)).medium.get() : nullptr;
     if (medium) step.alpha = medium->AbsorptionCoefficient(lambda_nm);
@@ -49,6 +55,8 @@ std::optional<CompiledSequence> CompiledSequence::Compile(const LensSystem& lens
       step.band_n_object[b] = lens.prescription().IndexBefore(size_t(v.surface), bands[b]);
       step.band_n_film[b] = s.IndexAfter(bands[b]);
       step.band_alpha[b] = medium ? medium->AbsorptionCoefficient(bands[b]) : 0;
+      step.band_fresnel_eta[b] =
+          v.toward_film ? step.band_n_film[b] / step.band_n_object[b] : step.band_n_object[b] / step.band_n_film[b];
     }
     previous = v.surface;
     c.steps_.push_back(step);
@@ -59,27 +67,37 @@ std::optional<CompiledSequence> CompiledSequence::Compile(const LensSystem& lens
 CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<Vec3d>* stop_points) const {
   Result r;
   std::fill(r.band_transmittance.begin(), r.band_transmittance.begin() + band_count_, 1.0);
+  std::array<double, kMaxBands> band_absorbance{};  // Beer-Lambert's exponent so far
   Vec3d o = in.o, d = in.d;
   for (const Step& st : steps_) {
     const LensSurface& s = *st.surface;
     const Vec3d local = o - Vec3d(0, 0, st.vertex_z);
     bool blocked;
-    const std::optional<double> t = IntersectSurface(s, local, d, blocked);
+    std::optional<double> t;
+    if (!st.conic) {
+      t = IntersectSurface(s, local, d, blocked);
+    } else if (st.c != 0) {
+      t = IntersectConic(st.c, st.k1, local, d);
+    } else if (d.z != 0) {
+      t = -local.z / d.z;
+    }
     if (!t || *t < -1e-9) return r;
     const Vec3d p = local + d * *t;
-    const double radius = std::sqrt(p.x * p.x + p.y * p.y);
-    if ((st.is_stop ? !lens_->InsideStop(p.x, p.y) : radius > s.semi_diameter) || radius < s.obscuration) return r;
+    const double r2 = p.x * p.x + p.y * p.y;  // the radius squared (against squared bounds: no root)
+    if ((st.is_stop ? !lens_->InsideStop(p.x, p.y) : r2 > st.semi_diameter2) || r2 < st.obscuration2) return r;
     o = o + d * *t;
     if (st.is_stop && stop_points) stop_points->push_back(o);
     // Beer-Lambert along the segment just travelled (Glass::InternalTransmittance).
     if (st.alpha != 0 && *t > 0 && band_count_ == 0 && losses_) r.internal_transmittance *= std::exp(-st.alpha * *t);
-    for (int b = 0; b < band_count_; ++b)
-      if (st.band_alpha[b] != 0 && *t > 0) r.band_transmittance[b] *= std::exp(-st.band_alpha[b] * *t);
+    // At the bands, the exponents summed and taken once at the end (an exponential per band
+    // and glass was a third of a ray's time).
+    if (*t > 0)
+      for (int b = 0; b < band_count_; ++b) band_absorbance[b] += st.band_alpha[b] * *t;
     if (!st.interface) {
       if (st.reflect) return r;  // nothing to reflect from
       continue;
     }
-    Vec3d normal = InterfaceNormal(s, p);
+    Vec3d normal = st.conic ? ConicNormal(st.c, st.k1, p) : InterfaceNormal(s, p);
     if (Dot(normal, d) > 0) normal = -normal;
     const double cos_i = -Dot(normal, d);
     // With bands, the transmittance at lambda_ itself is not asked for (left 1).
@@ -87,9 +105,13 @@ CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<
         band_count_ > 0 || !losses_ ? (st.reflect ? 1.0 : 0.0)
                                     : lens_->SurfaceReflectance(st.index, lambda_, cos_i, st.toward_film, st.n_object, st.n_film);
     for (int b = 0; b < band_count_; ++b) {
-      const double rb =
-          st.tabulated ? tables_->Reflectance(st.index, st.toward_film, b, cos_i)
-                       : lens_->SurfaceReflectance(st.index, bands_[b], cos_i, st.toward_film, st.band_n_object[b], st.band_n_film[b]);
+      // LensSystem::SurfaceReflectance, its choice made once.
+      const double rb = st.tabulated ? tables_->Reflectance(st.index, st.toward_film, b, cos_i)
+                        : st.bare    ? (st.band_n_object[b] == st.band_n_film[b]
+                                            ? 0.0
+                                            : FresnelDielectric(std::clamp(cos_i, 0.0, 1.0), st.band_fresnel_eta[b]))
+                                     : lens_->SurfaceReflectance(st.index, bands_[b], cos_i, st.toward_film,
+                                                                 st.band_n_object[b], st.band_n_film[b]);
       r.band_transmittance[b] *= st.reflect ? rb : 1 - rb;
     }
     if (st.reflect) {
@@ -102,6 +124,8 @@ CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<
     if (!refracted) return r;  // total internal reflection
     d = *refracted;
   }
+  for (int b = 0; b < band_count_; ++b)
+    if (band_absorbance[b] != 0) r.band_transmittance[b] *= std::exp(-band_absorbance[b]);
   r.alive = true;
   r.ray = LensRay{o, d, false, in.wave_choices};
   return r;

@@ -62,6 +62,14 @@ class CompiledSequence {
     // The same at each band.
     std::array<double, kMaxBands> band_n_object{}, band_n_film{}, band_alpha{};
     bool tabulated;  // its reflectance at the bands from tables_
+    double semi_diameter2, obscuration2;  // squared
+    // A plain conic (no aspheric terms): its curvature (0: a plane) and 1 + its conic
+    // constant, for IntersectConic and ConicNormal.
+    bool conic;
+    double c, k1;
+    // A bare interface: Fresnel's relative index (outgoing over incoming) at each band.
+    bool bare;
+    std::array<double, kMaxBands> band_fresnel_eta{};
   };
   const LensSystem* lens_ = nullptr;
   double lambda_ = 0;

@@ -158,17 +158,20 @@ void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, dou
   };
   std::vector<double> coverage;
   std::vector<RowSpans> spans;
+  // A band of rows (render/lens_flare.cpp) meets few of a bundle's triangles: the rows first.
+  const double inv_w = 1 / r.w, inv_h = 1 / r.h;
   for (const FilmTriangle& t : triangles) {
-    current = &t;
     // Pixel coordinates.
-    const Vec2d a((t.a.x - r.x0) / r.w, (t.a.y - r.y0) / r.h), b((t.b.x - r.x0) / r.w, (t.b.y - r.y0) / r.h),
-        c((t.c.x - r.x0) / r.w, (t.c.y - r.y0) / r.h);
+    const double ay = (t.a.y - r.y0) * inv_h, by = (t.b.y - r.y0) * inv_h, cy = (t.c.y - r.y0) * inv_h;
+    const double lo_y = std::min({ay, by, cy}), hi_y = std::max({ay, by, cy});
+    if (!(hi_y >= 0 && lo_y < r.height)) continue;  // off the rows (or NaN)
+    const Vec2d a((t.a.x - r.x0) * inv_w, ay), b((t.b.x - r.x0) * inv_w, by), c((t.c.x - r.x0) * inv_w, cy);
+    const double lo_x = std::min({a.x, b.x, c.x}), hi_x = std::max({a.x, b.x, c.x});
+    if (!(hi_x >= 0 && lo_x < r.width)) continue;  // off the film (or NaN)
+    current = &t;
     const double area = t.Area() / pixel_area;  // in pixels
     // The pixel range it spans, clamped to just outside the image before it becomes an int.
     auto pixel = [](double v, int size) { return int(std::floor(std::clamp(v, -1.0, double(size)))); };
-    const double lo_x = std::min({a.x, b.x, c.x}), hi_x = std::max({a.x, b.x, c.x});
-    const double lo_y = std::min({a.y, b.y, c.y}), hi_y = std::max({a.y, b.y, c.y});
-    if (!(hi_x >= 0 && lo_x < r.width && hi_y >= 0 && lo_y < r.height)) continue;  // off the film (or NaN)
     const int x0 = pixel(lo_x, r.width), x1 = pixel(hi_x, r.width), y0 = pixel(lo_y, r.height), y1 = pixel(hi_y, r.height);
     // Within one pixel, or too thin to clip reliably: all of it there.
     if ((x0 == x1 && y0 == y1) || area < 1e-9) {

@@ -70,26 +70,9 @@ std::optional<double> IntersectNominal(const LensSurface& s, const Vec3d& o, con
     if (d.z == 0) return std::nullopt;
     t = -o.z / d.z;
   } else {
-    // Conic through the vertex: c (x^2 + y^2) + (1 + k) c z^2 - 2 z = 0. Its two sheets are
-    // told apart by (1 + k) c z <= 1 (the vertex's) or >= 1; the surface is the vertex's sheet,
-    // and the ray meets it first at the smaller positive root.
-    double k1 = 1 + s.conic;
-    double A = c * (d.x * d.x + d.y * d.y) + k1 * c * d.z * d.z;
-    double B = 2 * (c * (o.x * d.x + o.y * d.y) + k1 * c * o.z * d.z - d.z);
-    double C = c * (o.x * o.x + o.y * o.y) + k1 * c * o.z * o.z - 2 * o.z;
-    double disc = B * B - 4 * A * C;
-    if (disc < 0) return std::nullopt;
-    double q = -0.5 * (B + std::copysign(std::sqrt(disc), B));
-    double roots[2] = {q != 0 ? C / q : std::numeric_limits<double>::infinity(),
-                       A != 0 ? q / A : std::numeric_limits<double>::infinity()};
-    double best = std::numeric_limits<double>::infinity();
-    for (double tr : roots) {
-      if (!std::isfinite(tr) || tr <= -1e-9) continue;
-      if (k1 * c * (o.z + tr * d.z) > 1) continue;  // the other sheet
-      best = std::min(best, tr);
-    }
-    if (!std::isfinite(best)) return std::nullopt;
-    t = best;
+    const std::optional<double> conic = IntersectConic(c, 1 + s.conic, o, d);
+    if (!conic) return std::nullopt;
+    t = *conic;
   }
   if (aspheric) {
     // Newton on f(t) = z(t) - sag(r(t)), from the conic's (or plane's) intersection.
@@ -267,10 +250,7 @@ std::optional<LensRay> Refracted(const SurfaceCrossing& c, const Vec3d& d) {
 
 Vec3d InterfaceNormal(const LensSurface& s, const Vec3d& p) {
   if (s.HasAsphericTerms() || s.toroidal || s.fresnel || s.form_error) return SurfaceNormal(s, p);
-  // The gradient of c (x^2 + y^2) + (1 + k) c z^2 - 2 z = 0.
-  const double curvature = s.Curvature();
-  const Vec3d g(-curvature * p.x, -curvature * p.y, 1 - (1 + s.conic) * curvature * p.z);
-  return g / Length(g);
+  return ConicNormal(s.Curvature(), 1 + s.conic, p);
 }
 
 Vec3d ReflectedDirection(const Vec3d& d, const Vec3d& n, double cos_i) {

@@ -2,7 +2,10 @@
 // the reference of the renderer's batch tracer). Lens space: millimetres, z along the optical
 // axis toward the film, the first vertex at z = 0.
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <span>
 #include <vector>
@@ -88,6 +91,36 @@ std::optional<Vec3d> RefractedDirection(const Vec3d& d, const Vec3d& n, double e
 // Every kind of surface, its form error included (the batch tracer's way for the surfaces its
 // kernels do not trace).
 std::optional<double> IntersectSurface(const LensSurface& s, const Vec3d& o, const Vec3d& d, bool& blocked);
+
+// The two pieces of IntersectSurface and InterfaceNormal for a plain conic of curvature c
+// (1/mm, not 0) and conic constant k (k1 = 1 + k), inline for the compiled ghost paths
+// (optics/compiled_sequence.h), which call them with c and k1 looked up once.
+// The conic through the vertex, c (x^2 + y^2) + k1 c z^2 - 2 z = 0: its two sheets are told
+// apart by k1 c z <= 1 (the vertex's) or >= 1; the surface is the vertex's sheet, and the ray
+// meets it first at the smaller root t > -1e-9.
+inline std::optional<double> IntersectConic(double c, double k1, const Vec3d& o, const Vec3d& d) {
+  const double A = c * (d.x * d.x + d.y * d.y) + k1 * c * d.z * d.z;
+  const double B = 2 * (c * (o.x * d.x + o.y * d.y) + k1 * c * o.z * d.z - d.z);
+  const double C = c * (o.x * o.x + o.y * o.y) + k1 * c * o.z * o.z - 2 * o.z;
+  const double disc = B * B - 4 * A * C;
+  if (disc < 0) return std::nullopt;
+  const double q = -0.5 * (B + std::copysign(std::sqrt(disc), B));
+  const double roots[2] = {q != 0 ? C / q : std::numeric_limits<double>::infinity(),
+                           A != 0 ? q / A : std::numeric_limits<double>::infinity()};
+  double best = std::numeric_limits<double>::infinity();
+  for (double tr : roots) {
+    if (!std::isfinite(tr) || tr <= -1e-9) continue;
+    if (k1 * c * (o.z + tr * d.z) > 1) continue;  // the other sheet
+    best = std::min(best, tr);
+  }
+  if (!std::isfinite(best)) return std::nullopt;
+  return best;
+}
+// The unit normal of that conic at p (toward +z at the vertex): the gradient of its implicit form.
+inline Vec3d ConicNormal(double c, double k1, const Vec3d& p) {
+  const Vec3d g(-c * p.x, -c * p.y, 1 - k1 * c * p.z);
+  return g / Length(g);
+}
 
 // One step of any path: where `ray` meets surface i travelling toward the film (or the
 // object; along a curve through a gradient-index medium, optics/gradient_propagation.h), whether it gets through the opening there, and what the interface does; the

@@ -236,7 +236,7 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
                                  0.f);
   std::atomic<bool> any_half = false;
   constexpr size_t kChunk = 64;
-  constexpr int kBandRows = 16;
+  constexpr int kBandRows = 32;
   const int bands = (out.height + kBandRows - 1) / kBandRows;
   std::vector<Traced> traced(kChunk);
   for (size_t first = 0; first < tasks.size(); first += kChunk) {
