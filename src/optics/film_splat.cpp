@@ -219,7 +219,8 @@ void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, dou
     spans.assign(size_t(bh), RowSpans{{bw, bw}, {-1, -1}});
     const Vec2d o(cx0, row0);
     const double left = 0 - cx0, right = r.width - cx0;  // the image's edges, in the buffer's columns
-    for (const auto& [p, q] : {std::pair{a - o, b - o}, {b - o, c - o}, {c - o, a - o}}) {
+    for (const auto& edge : {std::pair{a - o, b - o}, {b - o, c - o}, {c - o, a - o}}) {
+      const Vec2d p = edge.first, q = edge.second;  // (clang 14: no lambda captures a structured binding)
       double cuts[4] = {0, 1, 1, 1};
       int n = 1;
       for (const double edge : {left, right})
