@@ -6,7 +6,8 @@
 // visit of TraceSequence evaluated two dispersion formulas and an absorption table again.
 //
 // Same rays, same results: the same intersection, normal, reflection, refraction and
-// reflectance functions in the same order (tests/test_compiled_sequence.cpp compares every
+// reflectance functions in the same order, but for the bands' absorption, whose exponents
+// are summed along the path and taken once (tests/test_compiled_sequence.cpp compares every
 // ghost path of several lenses with TraceSequence). Paths through what it does not trace
 // (a lens hood, tilted or decentred surfaces, toroids, Fresnel zones, form errors,
 // gradient-index media, crystals, mirrors) are not compiled: Compile says so and the caller
