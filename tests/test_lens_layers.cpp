@@ -254,6 +254,33 @@ TEST(LensLayers, OneGeometryKeepsTheGhostsLightAndColour) {
   EXPECT_GT(std::abs(g.x / (g.x + g.y + g.z) - 1.0 / 3), 0.01) << "the ghosts should be coloured";
 }
 
+// The preview draws large ghosts at half the resolution with the light they have at full
+// resolution, on films of any size: odd, tiny, one pixel (where none is large enough).
+TEST(LensLayers, PreviewGhostsAtHalfResolutionKeepTheirLightAtAnySize) {
+  for (const auto& size : {std::pair{1, 1}, {3, 2}, {97, 65}, {160, 90}}) {
+    std::string xml = LayerScene("", kPointLight, 1);
+    xml.replace(xml.find(R"("width" value="96")"), 18, fmt::format(R"("width" value="{}")", size.first));
+    xml.replace(xml.find(R"("height" value="64")"), 19, fmt::format(R"("height" value="{}")", size.second));
+    const RenderSetup setup = LoadSceneFromString(xml, "preview.xml", {});
+    const auto& camera = dynamic_cast<const RealisticCamera&>(*setup.camera);
+    FlareSettings settings = FlareSettings::Preview();
+    settings.ghosts = true;
+    ASSERT_GT(settings.half_resolution_from, 0);
+    const FlareImages half = RenderFlare(*setup.scene, camera, setup.film.crop, settings);
+    settings.half_resolution_from = 0;
+    const FlareImages full = RenderFlare(*setup.scene, camera, setup.film.crop, settings);
+    ASSERT_EQ(half.ghosts.size(), size_t(size.first) * size.second * 3);
+    double sum_half = 0, sum_full = 0;
+    for (size_t i = 0; i < half.ghosts.size(); ++i) {
+      ASSERT_TRUE(std::isfinite(half.ghosts[i]) && half.ghosts[i] >= 0) << size.first << "x" << size.second;
+      if (i % 3 == 1) sum_half += half.ghosts[i], sum_full += full.ghosts[i];
+    }
+    ASSERT_GT(sum_full, 0) << size.first << "x" << size.second;
+    EXPECT_NEAR(sum_half, sum_full, 0.01 * sum_full) << size.first << "x" << size.second;
+    if (size.first >= 97) EXPECT_NE(half.ghosts, full.ghosts) << "no ghost was drawn at half the resolution";
+  }
+}
+
 TEST(LensLayers, DimLightsGhostsAreCulledAgainstTheBrightestOfAll) {
   const std::string effects = R"(<boolean name="ghosts" value="true"/><integer name="ghost_grid" value="16"/>
       <integer name="flare_wavelengths" value="2"/>)";
