@@ -223,12 +223,12 @@ void Rasterise(std::span<const FilmTriangle> triangles, const FilmRaster& r, dou
       const Vec2d p = edge.first, q = edge.second;  // (clang 14: no lambda captures a structured binding)
       double cuts[4] = {0, 1, 1, 1};
       int n = 1;
-      for (const double edge : {left, right})
-        if ((p.x - edge) * (q.x - edge) < 0) cuts[n++] = (edge - p.x) / (q.x - p.x);
+      for (const double bound : {left, right})
+        if ((p.x - bound) * (q.x - bound) < 0) cuts[n++] = (bound - p.x) / (q.x - p.x);
       if (n == 3 && cuts[2] < cuts[1]) std::swap(cuts[1], cuts[2]);
       cuts[n] = 1;
-      auto at = [&](double t) {
-        const Vec2d v = t >= 1 ? q : p + (q - p) * t;
+      auto at = [&](double u) {
+        const Vec2d v = u >= 1 ? q : p + (q - p) * u;
         return Vec2d(std::clamp(v.x, left, right), v.y);
       };
       for (int k = 0; k < n; ++k) AccumulateEdge(at(cuts[k]), at(cuts[k + 1]), bw, bh, coverage.data(), spans.data());
