@@ -64,10 +64,12 @@ std::optional<CompiledSequence> CompiledSequence::Compile(const LensSystem& lens
   return c;
 }
 
-CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<Vec3d>* stop_points) const {
+CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<Vec3d>* stop_points,
+                                                bool follow_blocked) const {
   Result r;
   std::fill(r.band_transmittance.begin(), r.band_transmittance.begin() + band_count_, 1.0);
   std::array<double, kMaxBands> band_absorbance{};  // Beer-Lambert's exponent so far
+  bool held = false;  // blocked by an opening, and followed (follow_blocked)
   Vec3d o = in.o, d = in.d;
   for (const Step& st : steps_) {
     const LensSurface& s = *st.surface;
@@ -84,7 +86,10 @@ CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<
     if (!t || *t < -1e-9) return r;
     const Vec3d p = local + d * *t;
     const double r2 = p.x * p.x + p.y * p.y;  // the radius squared (against squared bounds: no root)
-    if ((st.is_stop ? !lens_->InsideStop(p.x, p.y) : r2 > st.semi_diameter2) || r2 < st.obscuration2) return r;
+    if ((st.is_stop ? !lens_->InsideStop(p.x, p.y) : r2 > st.semi_diameter2) || r2 < st.obscuration2) {
+      if (!follow_blocked) return r;
+      held = true;
+    }
     o = o + d * *t;
     if (st.is_stop && stop_points) stop_points->push_back(o);
     // Beer-Lambert along the segment just travelled (Glass::InternalTransmittance).
@@ -126,7 +131,8 @@ CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<
   }
   for (int b = 0; b < band_count_; ++b)
     if (band_absorbance[b] != 0) r.band_transmittance[b] *= std::exp(-band_absorbance[b]);
-  r.alive = true;
+  r.alive = !held;
+  r.followed = held;
   r.ray = LensRay{o, d, false, in.wave_choices};
   return r;
 }

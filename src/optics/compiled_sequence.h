@@ -40,6 +40,7 @@ class CompiledSequence {
 
   struct Result {
     bool alive = false;
+    bool followed = false;  // blocked, and followed past the openings to the last visit
     LensRay ray;  // after the last visit
     double surface_transmittance = 1, internal_transmittance = 1;  // at lambda_nm; 1 with bands
     // The whole transmittance (surfaces and glass) at each of the bands.
@@ -47,7 +48,10 @@ class CompiledSequence {
   };
   // The ray along the path, as TraceSequence traces it (its failures all give alive false).
   // `stop_points`, if given, receives where the ray crossed the stop each time (lens space).
-  Result Trace(const LensRay& ray, std::vector<Vec3d>* stop_points = nullptr) const;
+  // With `follow_blocked`, a ray the openings (the stop, the rims, obscurations) block goes on
+  // as if they did not: alive stays false, and `followed` and `ray` say where it would go (a
+  // bundle's edge cells are placed on the film by their blocked corners).
+  Result Trace(const LensRay& ray, std::vector<Vec3d>* stop_points = nullptr, bool follow_blocked = false) const;
 
  private:
   struct Step {

@@ -45,7 +45,7 @@ class BundleTracer {
   // `geometry_only`: for where the rays go alone (Region), without their losses.
   BundleTracer(const LensSystem& lens, std::span<const SurfaceVisit> path, const PointSource& source, double lambda_nm,
                const BundleOptions& options = {}, bool geometry_only = false)
-      : lens_(lens), path_(path), source_(source), options_(options), lambda_(lambda_nm),
+      : lens_(lens), path_(path), source_(source), options_(options), lambda_(lambda_nm), geometry_only_(geometry_only),
         compiled_(CompiledSequence::Compile(lens, path, lambda_nm, options.bands, options.coating_tables, !geometry_only)) {
     for (const SurfaceVisit& v : path)
       if (const SurfaceDirt* dirt = lens.surface(v.surface).dirt.get()) mean_dirt_ *= dirt->MeanTransmittance();
@@ -75,9 +75,15 @@ class BundleTracer {
     Vec2d film;
     double transmittance = 0;  // with bands: their mean
     std::array<double, 3> band{};  // BundleOptions::bands: the transmittance at each
+    // A blocked corner's ray followed past the openings (a compiled path): where it would meet
+    // the film.
+    bool placed = false;
+    Vec2d placed_film;
   };
 
-  Corner Trace(Vec2d p) const {
+  // `place`: a blocked corner is followed past the openings (Corner::placed), where an edge
+  // cell needs it.
+  Corner Trace(Vec2d p, bool place = false) const {
     const Vec3d at(p.x, p.y, start_z_);
     const Vec3d d = source_.at_infinity ? source_.direction : Normalize(at - source_.position);
     Corner c;
@@ -93,8 +99,13 @@ class BundleTracer {
     std::array<double, 3> band{};
     const size_t bands = options_.bands.size();
     if (compiled_) {
-      const CompiledSequence::Result r = compiled_->Trace({at, d}, masked ? &stop_points : nullptr);
+      const CompiledSequence::Result r = compiled_->Trace({at, d}, masked ? &stop_points : nullptr, place && !geometry_only_);
       if (r.alive) out = r.ray;
+      if (r.followed && r.ray.d.z > 0) {
+        const double t = (lens_.FilmZ() - r.ray.o.z) / r.ray.d.z;
+        c.placed_film = {r.ray.o.x + t * r.ray.d.x, r.ray.o.y + t * r.ray.d.y};
+        c.placed = std::isfinite(c.placed_film.x) && std::isfinite(c.placed_film.y);
+      }
       transmittance = r.surface_transmittance * r.internal_transmittance;
       std::copy_n(r.band_transmittance.begin(), bands, band.begin());
     } else {
@@ -193,9 +204,20 @@ class BundleTracer {
     std::vector<Corner> corners(size_t(grid + 1) * (grid + 1));
     for (int j = 0; j <= grid; ++j)
       for (int i = 0; i <= grid; ++i) corners[size_t(j) * (grid + 1) + i] = Trace(Vec2d(lo.x + i * du, lo.y + j * dv));
+    // The blocked corners of the cells the opening's edge crosses, followed past it (traced
+    // again: most blocked corners lie away from the edge, where following them costs rays).
+    const int w = grid + 1;
+    for (int j = 0; j < grid; ++j)
+      for (int i = 0; i < grid; ++i) {
+        const size_t at[4] = {size_t(j) * w + i, size_t(j) * w + i + 1, size_t(j + 1) * w + i + 1, size_t(j + 1) * w + i};
+        const int alive = corners[at[0]].alive + corners[at[1]].alive + corners[at[2]].alive + corners[at[3]].alive;
+        if (alive == 0 || alive == 4) continue;
+        for (const size_t k : at)
+          if (!corners[k].alive && !corners[k].placed)
+            corners[k] = Trace(Vec2d(lo.x + double(k % w) * du, lo.y + double(k / w) * dv), /*place=*/true);
+      }
     // The irradiance at each grid corner: the mean over the whole cells around it of their
     // flux over their area on the film (the triangles' corners take it: see FilmTriangle).
-    const int w = grid + 1;
     std::vector<double> cell_e(size_t(grid) * grid, -1);
     for (int j = 0; j < grid; ++j)
       for (int i = 0; i < grid; ++i) {
@@ -269,7 +291,7 @@ class BundleTracer {
     g[0][0] = c[0], g[0][2] = c[1], g[2][2] = c[2], g[2][0] = c[3];
     for (int j = 0; j < 3; ++j)
       for (int i = 0; i < 3; ++i)
-        if ((i % 2) || (j % 2)) g[j][i] = Trace(Vec2d(p.x + i * hu, p.y + j * hv));
+        if ((i % 2) || (j % 2)) g[j][i] = Trace(Vec2d(p.x + i * hu, p.y + j * hv), /*place=*/true);
     for (int j = 0; j < 2; ++j)
       for (int i = 0; i < 2; ++i)
         Cell(Vec2d(p.x + i * hu, p.y + j * hv), hu, hv, {g[j][i], g[j][i + 1], g[j + 1][i + 1], g[j + 1][i]}, depth - 1, out);
@@ -281,6 +303,11 @@ class BundleTracer {
   // inside, an eighth of the cell; two neighbours, half; three, seven eighths (two opposite
   // corners: a quarter). Its flux lands on the live corners' triangle (or segment, or point:
   // a finest cell lands within a fraction of a pixel).
+  // Where the blocked corners' rays can be followed past the openings (a compiled path), the
+  // part lands where that straight edge puts it: the live corners and the midpoints of the
+  // cell's sides that the edge crosses, placed on the film by the corners' film points (a
+  // preview's finest cells, half a cell of a 16 x 16 grid, span pixels: as a point or a
+  // segment their light made a bright dot each along every ghost's outline).
   void EdgeCell(Vec2d p, double du, double dv, const std::array<Corner, 4>& c, int alive,
                 std::vector<FilmTriangle>& out) const {
     Vec2d live[4];
@@ -292,9 +319,56 @@ class BundleTracer {
     const bool opposite = alive == 2 && c[0].alive == c[2].alive;
     const double fraction = alive == 1 ? 0.125 : alive == 3 ? 0.875 : opposite ? 0.25 : 0.5;
     const double flux = (t / alive) * fraction * CellFlux(Vec2d(p.x + du / 2, p.y + dv / 2), du, dv);
-    FilmTriangle tri{live[0], live[std::min(1, n - 1)], live[std::min(2, n - 1)], flux};
-    tri.tint = Tint(alive_corners, n, t / alive);
-    out.push_back(tri);
+    const Vec3d tint = Tint(alive_corners, n, t / alive);
+    // The corners' film points, the blocked ones' past the openings.
+    std::array<Vec2d, 4> film;
+    bool placed = true;
+    for (size_t k = 0; k < 4; ++k) {
+      film[k] = c[k].alive ? c[k].film : c[k].placed_film;
+      placed &= c[k].alive || c[k].placed;
+    }
+    if (!placed) {
+      FilmTriangle tri{live[0], live[std::min(1, n - 1)], live[std::min(2, n - 1)], flux};
+      tri.tint = tint;
+      out.push_back(tri);
+      return;
+    }
+    // The lit part's outline: live corners, and the midpoints of the sides between a live
+    // and a blocked corner (two opposite live corners: a triangle at each).
+    std::vector<std::vector<Vec2d>> parts;
+    if (opposite) {
+      for (int k = 0; k < 4; ++k)
+        if (c[size_t(k)].alive)
+          parts.push_back({film[size_t(k)], (film[size_t(k)] + film[size_t((k + 1) % 4)]) * 0.5,
+                           (film[size_t(k)] + film[size_t((k + 3) % 4)]) * 0.5});
+    } else {
+      parts.emplace_back();
+      for (int k = 0; k < 4; ++k) {
+        const int next = (k + 1) % 4;
+        if (c[size_t(k)].alive) parts.back().push_back(film[size_t(k)]);
+        if (c[size_t(k)].alive != c[size_t(next)].alive) parts.back().push_back((film[size_t(k)] + film[size_t(next)]) * 0.5);
+      }
+    }
+    // A fan of triangles from each part's first point, the flux by their area.
+    std::vector<FilmTriangle> triangles;
+    double area = 0;
+    for (const std::vector<Vec2d>& part : parts)
+      for (size_t k = 1; k + 1 < part.size(); ++k) {
+        FilmTriangle tri{part[0], part[k], part[k + 1], 0};
+        tri.tint = tint;
+        area += tri.Area();
+        triangles.push_back(tri);
+      }
+    if (!(area > 0)) {
+      FilmTriangle tri{live[0], live[std::min(1, n - 1)], live[std::min(2, n - 1)], flux};
+      tri.tint = tint;
+      out.push_back(tri);
+      return;
+    }
+    for (FilmTriangle& tri : triangles) {
+      tri.flux = flux * tri.Area() / area;
+      out.push_back(tri);
+    }
   }
 
   // With bands: the mean of `n` corners' transmittance at each band over `mean`, their mean
@@ -312,7 +386,9 @@ class BundleTracer {
   double mean_dirt_ = 1;  // the product of the visited surfaces' clear shares
   PointSource source_;
   BundleOptions options_;
-  double lambda_, start_z_, reach_;
+  double lambda_;
+  bool geometry_only_;
+  double start_z_, reach_;
   Vec2d centre_{0, 0};  // of the start square
   std::optional<CompiledSequence> compiled_;  // the path at lambda_, where it can be compiled
 };
