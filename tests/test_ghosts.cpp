@@ -357,7 +357,6 @@ TEST(Ghosts, EdgeCellsLeaveNoBrightDotsAlongTheOutline) {
   const int width = 320, height = 240;
   const FilmRaster raster{width, height, -18, -13.5, 36.0 / width, 27.0 / height};
   int compared = 0;
-  double worst = 0;
   for (const Ghost& g : TwoReflectionGhosts(lens)) {
     BundleOptions o;
     o.grid = 16, o.edge_levels = 1;
@@ -371,12 +370,10 @@ TEST(Ghosts, EdgeCellsLeaveNoBrightDotsAlongTheOutline) {
     if (lit.size() < 1000) continue;
     std::sort(lit.begin(), lit.end());
     const double level = lit[lit.size() * 99 / 100];
-    worst = std::max(worst, double(lit.back()) / level);
     EXPECT_LT(lit.back(), 2 * level) << g.first << " " << g.second;
     ++compared;
   }
   EXPECT_GT(compared, 20);
-  EXPECT_GT(worst, 1.0);  // (the brightest pixel is some ghost's own; the old dots: 84 times)
 }
 
 }  // namespace
