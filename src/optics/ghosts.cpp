@@ -327,12 +327,13 @@ class BundleTracer {
       film[k] = c[k].alive ? c[k].film : c[k].placed_film;
       placed &= c[k].alive || c[k].placed;
     }
-    if (!placed) {
+    // Else (or where the outline has no area): on the live corners' triangle, segment or point.
+    auto on_live_corners = [&] {
       FilmTriangle tri{live[0], live[std::min(1, n - 1)], live[std::min(2, n - 1)], flux};
       tri.tint = tint;
       out.push_back(tri);
-      return;
-    }
+    };
+    if (!placed) return on_live_corners();
     // The lit part's outline: live corners, and the midpoints of the sides between a live
     // and a blocked corner (two opposite live corners: a triangle at each).
     std::vector<std::vector<Vec2d>> parts;
@@ -359,12 +360,7 @@ class BundleTracer {
         area += tri.Area();
         triangles.push_back(tri);
       }
-    if (!(area > 0)) {
-      FilmTriangle tri{live[0], live[std::min(1, n - 1)], live[std::min(2, n - 1)], flux};
-      tri.tint = tint;
-      out.push_back(tri);
-      return;
-    }
+    if (!(area > 0)) return on_live_corners();
     for (FilmTriangle& tri : triangles) {
       tri.flux = flux * tri.Area() / area;
       out.push_back(tri);
