@@ -191,6 +191,29 @@ TEST(ViewSession, PreviewShowsTheLampsImagesAndGhosts) {
     EXPECT_EQ(s->display().width, 36);
   }
   EXPECT_GT(total(ghosts), 1.2 * total(plain) + 1);
+  // The layer chosen: the ghosts alone (dark where the picture is lit), the primary image
+  // without them, no diffraction in a preview.
+  const double sum = total(ghosts);
+  ghosts.SetLayer(ViewLayer::kGhosts);
+  ghosts.SetMoving(true);
+  ASSERT_TRUE(ghosts.Step());
+  ghosts.SetMoving(false);
+  ASSERT_TRUE(ghosts.Step());
+  const double alone = total(ghosts);
+  EXPECT_GT(alone, 1);
+  EXPECT_LT(alone, sum);
+  ghosts.SetLayer(ViewLayer::kPrimary);
+  ghosts.SetMoving(true);
+  ASSERT_TRUE(ghosts.Step());
+  ghosts.SetMoving(false);
+  ASSERT_TRUE(ghosts.Step());
+  EXPECT_LT(total(ghosts), sum);
+  ghosts.SetLayer(ViewLayer::kDiffraction);
+  ghosts.SetMoving(true);
+  ASSERT_TRUE(ghosts.Step());
+  ghosts.SetMoving(false);
+  ASSERT_TRUE(ghosts.Step());
+  EXPECT_EQ(total(ghosts), 0);
 }
 
 TEST(ViewSession, ClickFocusesOnThePointUnderThePixel) {

@@ -382,8 +382,14 @@ void ViewSession::AddPreviewFlare(const Camera& camera, std::vector<float>& xyz,
   flare.light_images = true;
   flare.stop = stop;
   const FlareImages f = RenderFlare(*setup_.scene, *real, CropWindow{0, 0, camera.width(), camera.height()}, flare);
-  for (const std::vector<float>* layer : {&f.ghosts, &f.lights})
-    for (size_t i = 0; i < layer->size() && i < xyz.size(); ++i) xyz[i] += (*layer)[i];
+  // The layer shown, as the passes' layers hold the parts: the lamps' images in the primary
+  // image, the ghosts alone in theirs; the preview has no diffraction (black).
+  if (layer_ == ViewLayer::kGhosts || layer_ == ViewLayer::kDiffraction) std::fill(xyz.begin(), xyz.end(), 0.f);
+  auto add = [&xyz](const std::vector<float>& layer) {
+    for (size_t i = 0; i < layer.size() && i < xyz.size(); ++i) xyz[i] += layer[i];
+  };
+  if (layer_ == ViewLayer::kSum || layer_ == ViewLayer::kPrimary) add(f.lights);
+  if (layer_ == ViewLayer::kSum || layer_ == ViewLayer::kGhosts) add(f.ghosts);
 }
 
 void ViewSession::BuildCameraWhereItStands() {
