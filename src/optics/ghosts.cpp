@@ -102,8 +102,7 @@ class BundleTracer {
       const CompiledSequence::Result r = compiled_->Trace({at, d}, masked ? &stop_points : nullptr, place && !geometry_only_);
       if (r.alive) out = r.ray;
       if (r.followed && r.ray.d.z > 0) {
-        const double t = (lens_.FilmZ() - r.ray.o.z) / r.ray.d.z;
-        c.placed_film = {r.ray.o.x + t * r.ray.d.x, r.ray.o.y + t * r.ray.d.y};
+        c.placed_film = OnFilm(r.ray);
         c.placed = std::isfinite(c.placed_film.x) && std::isfinite(c.placed_film.y);
       }
       transmittance = r.surface_transmittance * r.internal_transmittance;
@@ -121,9 +120,8 @@ class BundleTracer {
       }
     }
     if (!out || !(out->d.z > 0)) return c;
-    const double t = (lens_.FilmZ() - out->o.z) / out->d.z;
     c.alive = true;
-    c.film = {out->o.x + t * out->d.x, out->o.y + t * out->d.y};
+    c.film = OnFilm(*out);
     // Dust and scratches by the share of each surface they leave clear: the grid's cells are
     // far coarser than the particles, which a corner ray would take for whole cells.
     double clear = mean_dirt_;
@@ -139,6 +137,12 @@ class BundleTracer {
       c.transmittance = sum / double(bands);
     }
     return c;
+  }
+
+  // Where a ray leaving the lens toward the film (d.z > 0) meets the film plane.
+  Vec2d OnFilm(const LensRay& ray) const {
+    const double t = (lens_.FilmZ() - ray.o.z) / ray.d.z;
+    return {ray.o.x + t * ray.d.x, ray.o.y + t * ray.d.y};
   }
 
   // The flux into the cell of size du x dv centred at p, per unit intensity (or irradiance).
@@ -336,34 +340,40 @@ class BundleTracer {
     if (!placed) return on_live_corners();
     // The lit part's outline: live corners, and the midpoints of the sides between a live
     // and a blocked corner (two opposite live corners: a triangle at each).
-    std::vector<std::vector<Vec2d>> parts;
+    // At most two parts of up to five points, fanned into at most three triangles.
+    Vec2d parts[2][5];
+    int sizes[2] = {0, 0}, part_count = 0;
+    auto middle = [&](int k, int l) { return (film[size_t(k)] + film[size_t(l)]) * 0.5; };
     if (opposite) {
       for (int k = 0; k < 4; ++k)
-        if (c[size_t(k)].alive)
-          parts.push_back({film[size_t(k)], (film[size_t(k)] + film[size_t((k + 1) % 4)]) * 0.5,
-                           (film[size_t(k)] + film[size_t((k + 3) % 4)]) * 0.5});
+        if (c[size_t(k)].alive) {
+          Vec2d* part = parts[part_count];
+          part[0] = film[size_t(k)], part[1] = middle(k, (k + 1) % 4), part[2] = middle(k, (k + 3) % 4);
+          sizes[part_count++] = 3;
+        }
     } else {
-      parts.emplace_back();
+      part_count = 1;
       for (int k = 0; k < 4; ++k) {
         const int next = (k + 1) % 4;
-        if (c[size_t(k)].alive) parts.back().push_back(film[size_t(k)]);
-        if (c[size_t(k)].alive != c[size_t(next)].alive) parts.back().push_back((film[size_t(k)] + film[size_t(next)]) * 0.5);
+        if (c[size_t(k)].alive) parts[0][sizes[0]++] = film[size_t(k)];
+        if (c[size_t(k)].alive != c[size_t(next)].alive) parts[0][sizes[0]++] = middle(k, next);
       }
     }
     // A fan of triangles from each part's first point, the flux by their area.
-    std::vector<FilmTriangle> triangles;
-    double area = 0;
-    for (const std::vector<Vec2d>& part : parts)
-      for (size_t k = 1; k + 1 < part.size(); ++k) {
-        FilmTriangle tri{part[0], part[k], part[k + 1], 0};
-        tri.tint = tint;
-        area += tri.Area();
-        triangles.push_back(tri);
+    FilmTriangle triangles[3];
+    double areas[3], area = 0;
+    int count = 0;
+    for (int q = 0; q < part_count; ++q)
+      for (int k = 1; k + 1 < sizes[q]; ++k) {
+        triangles[count] = FilmTriangle{parts[q][0], parts[q][k], parts[q][k + 1], 0};
+        triangles[count].tint = tint;
+        area += areas[count] = triangles[count].Area();
+        ++count;
       }
     if (!(area > 0)) return on_live_corners();
-    for (FilmTriangle& tri : triangles) {
-      tri.flux = flux * tri.Area() / area;
-      out.push_back(tri);
+    for (int k = 0; k < count; ++k) {
+      triangles[k].flux = flux * areas[k] / area;
+      out.push_back(triangles[k]);
     }
   }
 
