@@ -16,7 +16,9 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <string>
 
 #include "camera/realistic_camera.h"
@@ -61,10 +63,10 @@ void BM_DiffractionPsf(benchmark::State& state) {
 BENCHMARK(BM_DiffractionPsf)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // A point light 12 degrees right of the view axis, 10 m away, seen by the double Gauss.
-RenderSetup FlareScene(int width = 1280, int height = 720) {
+RenderSetup FlareScene(int width = 1280, int height = 720, const std::string& coating = "") {
   std::string xml = R"(<scene version="3.0.0">
   <sensor type="realistic">
-    <string name="lens" value="dgauss.50mm"/><float name="fnumber" value="2.8"/><integer name="blades" value="6"/>
+    <string name="lens" value="dgauss.50mm"/><float name="fnumber" value="2.8"/><integer name="blades" value="6"/>COATING
     <boolean name="ghosts" value="true"/><float name="ghost_cull" value="0"/>
     <transform name="to_world"><lookat origin="0, 0, 0" target="0, 0, -1" up="0, 1, 0"/></transform>
     <film type="hdrfilm"><integer name="width" value="WIDTH"/><integer name="height" value="HEIGHT"/></film>
@@ -73,6 +75,7 @@ RenderSetup FlareScene(int width = 1280, int height = 720) {
 </scene>)";
   xml.replace(xml.find("WIDTH"), 5, std::to_string(width));
   xml.replace(xml.find("HEIGHT"), 6, std::to_string(height));
+  xml.replace(xml.find("COATING"), 7, coating.empty() ? "" : R"(<string name="coating" value=")" + coating + R"("/>)");
   return LoadSceneFromString(xml, "flare.xml", {});
 }
 
@@ -121,7 +124,9 @@ BENCHMARK(BM_FlareLayer)->Args({16, 8})->Args({32, 16})->Args({64, 16})->Args({6
 // BM_FlareLayer's, against the same finer layer at 640 x 480.
 void BM_GhostPreview(benchmark::State& state) {
   spdlog::set_level(spdlog::level::warn);
-  const RenderSetup setup = FlareScene(640, 480);
+  // Argument 0: the lens as it ships (bare); 1: coated `multi`.
+  const std::string coating = state.range(0) ? "multi" : "";
+  const RenderSetup setup = FlareScene(640, 480, coating);
   const auto& camera = dynamic_cast<const RealisticCamera&>(*setup.camera);
   const CropWindow crop = setup.film.crop;
   FlareSettings settings = FlareSettings::Preview();
@@ -131,26 +136,38 @@ void BM_GhostPreview(benchmark::State& state) {
     f = RenderFlare(*setup.scene, camera, crop, settings);
     benchmark::DoNotOptimize(f.ghosts.data());
   }
-  static const FlareImages r = [&] {
+  static std::map<std::string, FlareImages> references;
+  if (!references.count(coating)) {
     FlareSettings fine;
     fine.ghosts = true, fine.cull = 0, fine.grid = 128, fine.wavelengths = 32;
-    return RenderFlare(*setup.scene, camera, crop, fine);
-  }();
+    references[coating] = RenderFlare(*setup.scene, camera, crop, fine);
+  }
+  const FlareImages& r = references[coating];
   double peak = 0, sum_r = 0, sum_f = 0;
+  std::array<double, 3> xyz_r{}, xyz_f{};
   for (size_t i = 1; i < r.ghosts.size(); i += 3) peak = std::max<double>(peak, r.ghosts[i]);
   std::vector<double> diffs;
   for (size_t i = 1; i < r.ghosts.size(); i += 3) {
     sum_r += r.ghosts[i], sum_f += f.ghosts[i];
+    for (int c = 0; c < 3; ++c) xyz_r[size_t(c)] += r.ghosts[i - 1 + size_t(c)], xyz_f[size_t(c)] += f.ghosts[i - 1 + size_t(c)];
     if (r.ghosts[i] > 0.01 * peak) diffs.push_back(std::abs(f.ghosts[i] - r.ghosts[i]) / r.ghosts[i]);
   }
   std::sort(diffs.begin(), diffs.end());
   state.counters["median_rel_diff"] = diffs.empty() ? 0 : diffs[diffs.size() / 2];
   state.counters["p95_rel_diff"] = diffs.empty() ? 0 : diffs[diffs.size() * 95 / 100];
   state.counters["total_Y_ratio"] = sum_r > 0 ? sum_f / sum_r : 0;
-  state.SetLabel(fmt::format("one point light, dgauss f/2.8, {} ghosts ({} culled), grid {}, {} wavelengths, 640x480, all cores",
-                             f.ghosts_traced, f.ghosts_culled, settings.grid, settings.wavelengths));
+  // The ghosts' colour: chromaticity x and y of their whole light, the preview's minus the
+  // finer layer's.
+  auto chromaticity = [](const std::array<double, 3>& c) {
+    const double s = c[0] + c[1] + c[2];
+    return s > 0 ? std::array<double, 2>{c[0] / s, c[1] / s} : std::array<double, 2>{0, 0};
+  };
+  state.counters["dx"] = chromaticity(xyz_f)[0] - chromaticity(xyz_r)[0];
+  state.counters["dy"] = chromaticity(xyz_f)[1] - chromaticity(xyz_r)[1];
+  state.SetLabel(fmt::format("one point light, dgauss{} f/2.8, {} ghosts ({} culled), grid {}, {} wavelengths, 640x480, all cores",
+                             coating.empty() ? "" : " coated " + coating, f.ghosts_traced, f.ghosts_culled, settings.grid, settings.wavelengths));
 }
-BENCHMARK(BM_GhostPreview)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_GhostPreview)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_DiffractionPass(benchmark::State& state) {
   const StopShape iris = StopShape::Iris(6, 0, 0);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <tuple>
 
 #include "base/rng.h"
@@ -116,6 +117,44 @@ TEST(CoatingTables, FollowTheStacksWithin1e4) {
     EXPECT_EQ(coated, 8) << coating;  // the air-glass surfaces (two of the ten are cemented)
     EXPECT_LT(worst, 1e-4) << coating;
   }
+}
+
+// The tables keep their own coated interfaces: they answer as the stacks do after the lens
+// they were made for is gone, they fit another set-up of the same lens (another focus and
+// f-number) and another loading of its coating (an equal stack), and Shared gives them back for
+// it; another coating or other wavelengths get other tables.
+TEST(CoatingTables, OutliveTheirLensAndServeItsOtherSetUps) {
+  const std::vector<double> wavelengths = {421, 555, 689};
+  auto set_up = [](const char* coating, double fnumber, double focus_mm) {
+    LensPrescription p = LoadLens("dgauss.50mm", GlassCatalog::Default());
+    Recoat(p, *FindBuiltInCoating(coating));  // a new Coating object each time
+    return SetUpLens(std::move(p), {fnumber, 0, StopShape()}, {focus_mm, FocusRequest::From::kFilm, false}).lens;
+  };
+  std::shared_ptr<const CoatingTables> shared;
+  {
+    const LensSystem far = set_up("multi", 2.8, INFINITY);
+    shared = CoatingTables::Shared(far, wavelengths);
+    EXPECT_EQ(CoatingTables::Shared(far, wavelengths), shared);
+  }
+  const LensSystem near = set_up("multi", 8, 1500);
+  EXPECT_TRUE(shared->Fits(near, wavelengths));
+  EXPECT_EQ(CoatingTables::Shared(near, wavelengths), shared);
+  // Every coated surface, both ways, at every angle (the stacks' kink where total internal
+  // reflection begins included: answered by the kept interfaces, not the lens gone).
+  double worst = 0;
+  for (int i = 0; i < near.SurfaceCount(); ++i)
+    if (shared->Has(i))
+      for (bool toward_film : {true, false})
+        for (int b = 0; b < 3; ++b)
+          for (double cos_i = 0.0003; cos_i <= 1; cos_i += 0.00173)
+            worst = std::max(worst, std::abs(shared->Reflectance(i, toward_film, b, cos_i) -
+                                             near.SurfaceReflectance(i, wavelengths[size_t(b)], cos_i, toward_film)));
+  EXPECT_LT(worst, 1e-4);
+  const LensSystem other = set_up("MgF2", 2.8, INFINITY);
+  EXPECT_FALSE(shared->Fits(other, wavelengths));
+  EXPECT_NE(CoatingTables::Shared(other, wavelengths), shared);
+  EXPECT_FALSE(shared->Fits(near, std::vector<double>{421, 555}));
+  EXPECT_FALSE(shared->Fits(near, std::vector<double>{421, 555, 690}));
 }
 
 }  // namespace

@@ -80,6 +80,20 @@ CoatedInterface::CoatedInterface(std::shared_ptr<const Coating> coating, std::sh
   }
 }
 
+bool CoatedInterface::SameResponse(const CoatedInterface& other, std::span<const double> wavelengths) const {
+  if (coating_->ideal_transmittance() != other.coating_->ideal_transmittance() ||
+      thickness_nm_ != other.thickness_nm_ || matched_index_ != other.matched_index_)
+    return false;
+  for (double l : wavelengths) {
+    if (IndexOf(outer_, l) != IndexOf(other.outer_, l) || IndexOf(substrate_, l) != IndexOf(other.substrate_, l)) return false;
+    for (size_t i = 0; i < materials_.size(); ++i) {
+      const Glass *a = materials_[i].get(), *b = other.materials_[i].get();
+      if (bool(a) != bool(b) || (a && a != b && a->Index(l) != b->Index(l))) return false;
+    }
+  }
+  return true;
+}
+
 ThinFilmResponse CoatedInterface::Response(double lambda_nm, double cos_i, bool from_outer) const {
   const double n_outer = IndexOf(outer_, lambda_nm), n_glass = IndexOf(substrate_, lambda_nm);
   if (const std::optional<double>& t = coating_->ideal_transmittance()) {

@@ -16,6 +16,7 @@
 #pragma once
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,10 @@ class CoatedInterface {
   CoatedInterface(std::shared_ptr<const Coating> coating, std::shared_ptr<const Glass> outer,
                   std::shared_ptr<const Glass> substrate);
   const Coating& coating() const { return *coating_; }
+  // Whether `other` answers as this one does at each of `wavelengths`: the same layers (their
+  // thicknesses, and their indices and the media's there), or the same ideal transmittance.
+  // (Another loading of a lens makes other objects of the same glasses and coatings.)
+  bool SameResponse(const CoatedInterface& other, std::span<const double> wavelengths) const;
   // Reflectance and transmittance (s, p) for light meeting the surface at cos_i (in the medium
   // it comes from), from the outer side or from the glass.
   ThinFilmResponse Response(double lambda_nm, double cos_i, bool from_outer) const;

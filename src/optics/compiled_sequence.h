@@ -30,7 +30,7 @@ class CompiledSequence {
   // kMaxBands further wavelengths at which each ray's transmittance is also found along the
   // same path, the one traced at lambda_nm (a preview's colours: the losses at each
   // wavelength, with the geometry of one); the transmittance at lambda_nm is then not found.
-  static constexpr int kMaxBands = 3;
+  static constexpr int kMaxBands = 32;
   // `tables`, if given (at the bands' wavelengths), give the coated surfaces' reflectance at
   // the bands (optics/coating_tables.h: within 1e-4 of the stacks).
   // Without `losses` only where the rays go is traced (their transmittances are left 1).

@@ -330,17 +330,10 @@ void SplatColour(std::span<const FilmTriangle> triangles, const FilmRaster& r, c
   });
 }
 
-void SplatBands(std::span<const FilmTriangle> triangles, const FilmRaster& r, const std::array<Vec3d, 3>& band_weights,
-                float* xyz, bool pixel_centres) {
-  const FilmTriangle* last = nullptr;
-  Vec3d weight(0.0);
+void SplatTinted(std::span<const FilmTriangle> triangles, const FilmRaster& r, float* xyz, bool pixel_centres) {
   Rasterise(triangles, r, 1.0, pixel_centres, [&](const FilmTriangle& t, size_t i, double v) {
-    if (&t != last) {
-      last = &t;
-      weight = band_weights[0] * t.tint.x + band_weights[1] * t.tint.y + band_weights[2] * t.tint.z;
-    }
     float* p = xyz + 3 * i;
-    p[0] += float(weight.x * v), p[1] += float(weight.y * v), p[2] += float(weight.z * v);
+    p[0] += float(t.tint.x * v), p[1] += float(t.tint.y * v), p[2] += float(t.tint.z * v);
   });
 }
 

@@ -3,7 +3,6 @@
 // pixel's exact share of every triangle (or, for a preview, a varying irradiance taken at pixel
 // centres).
 #pragma once
-#include <array>
 #include <cmath>
 #include <span>
 
@@ -22,8 +21,7 @@ struct FilmTriangle {
   Vec2d a, b, c;
   double flux;
   double ea = 1, eb = 1, ec = 1;
-  // A bundle traced with bands (BundleOptions::bands): the flux at each band over `flux`,
-  // which is then their mean.
+  // A bundle traced with a spectrum (BundleOptions::spectrum): its colour per unit flux.
   Vec3d tint{1, 1, 1};
   double Area() const { return 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y)); }
 };
@@ -66,9 +64,8 @@ void AddUpsampled(const float* half, int width, int height, int y0, int y1, floa
 // half a pixel's change of the irradiance off there).
 void SplatColour(std::span<const FilmTriangle> triangles, const FilmRaster& raster, const Vec3d& weight, float* image,
                  bool pixel_centres = false);
-// The same for a bundle traced with bands: each triangle's weight is the bands' weights
-// (band_weights[b] for band b) by its tint.
-void SplatBands(std::span<const FilmTriangle> triangles, const FilmRaster& raster, const std::array<Vec3d, 3>& band_weights,
-                float* image, bool pixel_centres = false);
+// The same for a bundle traced with a spectrum: each triangle's weight is its tint.
+void SplatTinted(std::span<const FilmTriangle> triangles, const FilmRaster& raster, float* image,
+                 bool pixel_centres = false);
 
 }  // namespace objektiv

@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "optics/colour_lattice.h"
 #include "optics/compiled_sequence.h"
 
 namespace objektiv {
@@ -46,7 +47,12 @@ class BundleTracer {
   BundleTracer(const LensSystem& lens, std::span<const SurfaceVisit> path, const PointSource& source, double lambda_nm,
                const BundleOptions& options = {}, bool geometry_only = false)
       : lens_(lens), path_(path), source_(source), options_(options), lambda_(lambda_nm), geometry_only_(geometry_only),
-        compiled_(CompiledSequence::Compile(lens, path, lambda_nm, options.bands, options.coating_tables, !geometry_only)) {
+        // With a spectrum, the rays' geometry alone; their losses at the lattice's nodes.
+        compiled_(CompiledSequence::Compile(lens, path, lambda_nm, {}, nullptr, !geometry_only && !options.spectrum)) {
+    if (options.spectrum && !geometry_only) {
+      spectral_ = CompiledSequence::Compile(lens, path, lambda_nm, options.spectrum->wavelengths, options.coating_tables);
+      for (const Vec3d& w : options.spectrum->weights) weight_sum_ += w.x + w.y + w.z;
+    }
     for (const SurfaceVisit& v : path)
       if (const SurfaceDirt* dirt = lens.surface(v.surface).dirt.get()) mean_dirt_ *= dirt->MeanTransmittance();
     const LensSurface& front = lens.surface(0);
@@ -73,8 +79,9 @@ class BundleTracer {
   struct Corner {
     bool alive = false;
     Vec2d film;
-    double transmittance = 0;  // with bands: their mean
-    std::array<double, 3> band{};  // BundleOptions::bands: the transmittance at each
+    double transmittance = 0;  // with a spectrum: of its colour (Colour)
+    Vec3d colour{0.0};         // with a spectrum: the colour it carries
+    double clear = 1;          // the share dust and the aperture mask leave
     // A blocked corner's ray followed past the openings (a compiled path): where it would meet
     // the film.
     bool placed = false;
@@ -96,8 +103,6 @@ class BundleTracer {
     stop_points.clear();
     std::optional<LensRay> out;
     double transmittance = 1;
-    std::array<double, 3> band{};
-    const size_t bands = options_.bands.size();
     if (compiled_) {
       const CompiledSequence::Result r = compiled_->Trace({at, d}, masked ? &stop_points : nullptr, place && !geometry_only_);
       if (r.alive) out = r.ray;
@@ -106,18 +111,12 @@ class BundleTracer {
         c.placed = std::isfinite(c.placed_film.x) && std::isfinite(c.placed_film.y);
       }
       transmittance = r.surface_transmittance * r.internal_transmittance;
-      std::copy_n(r.band_transmittance.begin(), bands, band.begin());
     } else {
       const TraceResult r = TraceSequence(lens_, {at, d}, lambda_, path_, masked ? &points : nullptr);
       out = r.ray;  // (r.dirt, the corner's own, gives way to mean_dirt_)
       transmittance = r.surface_transmittance * r.internal_transmittance;
       for (size_t k = 0; k < points.size() && k < path_.size(); ++k)
         if (path_[k].surface == lens_.StopIndex()) stop_points.push_back(points[k]);
-      // Each band's losses along its own ray from the same point (0 where it is lost).
-      for (size_t b = 0; b < bands && out; ++b) {
-        const TraceResult rb = TraceSequence(lens_, {at, d}, options_.bands[b], path_);
-        band[b] = rb.ray ? rb.surface_transmittance * rb.internal_transmittance : 0;
-      }
     }
     if (!out || !(out->d.z > 0)) return c;
     c.alive = true;
@@ -129,14 +128,68 @@ class BundleTracer {
       const double inv = 1 / lens_.StopSemiDiameter();
       for (const Vec3d& p : stop_points) clear *= options_.stop_transmittance(p.x * inv, p.y * inv);
     }
-    if (bands == 0) {
+    c.clear = clear;
+    if (!options_.spectrum) {
       c.transmittance = (options_.lossless ? 1.0 : transmittance) * clear;
-    } else {  // the bands' mean
-      double sum = 0;
-      for (size_t b = 0; b < bands; ++b) sum += c.band[b] = (options_.lossless ? 1.0 : band[b]) * clear;
-      c.transmittance = sum / double(bands);
+    } else if (!lattice_.empty()) {
+      Colour(c, p);
     }
     return c;
+  }
+
+  // With a spectrum: a live corner at start point p takes its colour from the lattice.
+  void Colour(Corner& c, Vec2d p) const {
+    c.colour = lattice_.At(p) * c.clear;
+    c.transmittance = weight_sum_ > 0 ? (c.colour.x + c.colour.y + c.colour.z) / weight_sum_ : 0;
+  }
+
+  // With a spectrum: the colour of the ray from start point p, its losses at each of the
+  // spectrum's wavelengths (followed past the openings where the path is compiled: a node
+  // outside the light still says what its colour is there); none where it misses a surface or
+  // is reflected totally.
+  std::optional<Vec3d> NodeColour(Vec2d p) const {
+    const BundleSpectrum& spectrum = *options_.spectrum;
+    const Vec3d at(p.x, p.y, start_z_);
+    const Vec3d d = source_.at_infinity ? source_.direction : Normalize(at - source_.position);
+    if (!(d.z > 0)) return std::nullopt;
+    std::array<double, CompiledSequence::kMaxBands> t{};
+    if (spectral_) {
+      const CompiledSequence::Result r = spectral_->Trace({at, d}, nullptr, /*follow_blocked=*/true);
+      if (!r.alive && !r.followed) return std::nullopt;
+      t = r.band_transmittance;
+    } else {
+      for (size_t k = 0; k < spectrum.wavelengths.size(); ++k) {
+        const TraceResult r = TraceSequence(lens_, {at, d}, spectrum.wavelengths[k], path_);
+        if (!r.ray) return std::nullopt;
+        t[k] = r.surface_transmittance * r.internal_transmittance;
+      }
+    }
+    Vec3d colour(0.0);
+    for (size_t k = 0; k < spectrum.weights.size(); ++k) colour += spectrum.weights[k] * t[k];
+    return colour;
+  }
+
+  // With a spectrum: the lattice over the grid [lo, hi] of `grid` cells a side, then the
+  // colours of its live corners (row by row).
+  void ColourGrid(Vec2d lo, Vec2d hi, int grid, std::vector<Corner>& corners) {
+    const BundleSpectrum& spectrum = *options_.spectrum;
+    if (options_.lossless) {
+      Vec3d sum(0.0);
+      for (const Vec3d& w : spectrum.weights) sum += w;
+      lattice_ = ColourLattice::Uniform(sum);
+    } else {
+      const int cells = std::max(1, spectrum.lattice_cells);
+      lattice_ = ColourLattice(lo, hi, (grid + cells - 1) / cells + 1, [this](Vec2d p) { return NodeColour(p); });
+    }
+    const int w = grid + 1;
+    auto at = [&](size_t k) { return Vec2d(lo.x + (hi.x - lo.x) * double(k % size_t(w)) / grid, lo.y + (hi.y - lo.y) * double(k / size_t(w)) / grid); };
+    // No node's ray found a colour (a path that barely gets through): a live corner's, everywhere.
+    for (size_t k = 0; k < corners.size() && lattice_.empty(); ++k)
+      if (corners[k].alive)
+        if (const std::optional<Vec3d> c = NodeColour(at(k))) lattice_ = ColourLattice::Uniform(*c);
+    if (lattice_.empty()) lattice_ = ColourLattice::Uniform(Vec3d(0.0));
+    for (size_t k = 0; k < corners.size(); ++k)
+      if (corners[k].alive) Colour(corners[k], at(k));
   }
 
   // Where a ray leaving the lens toward the film (d.z > 0) meets the film plane.
@@ -195,7 +248,7 @@ class BundleTracer {
     return true;
   }
 
-  std::vector<FilmTriangle> Bundle(int grid, const BundleRegion* region) const {
+  std::vector<FilmTriangle> Bundle(int grid, const BundleRegion* region) {
     std::vector<FilmTriangle> out;
     Vec2d lo, hi;
     if (region) {
@@ -208,6 +261,7 @@ class BundleTracer {
     std::vector<Corner> corners(size_t(grid + 1) * (grid + 1));
     for (int j = 0; j <= grid; ++j)
       for (int i = 0; i <= grid; ++i) corners[size_t(j) * (grid + 1) + i] = Trace(Vec2d(lo.x + i * du, lo.y + j * dv));
+    if (options_.spectrum && !geometry_only_) ColourGrid(lo, hi, grid, corners);
     // The blocked corners of the cells the opening's edge crosses, followed past it (traced
     // again: most blocked corners lie away from the edge, where following them costs rays).
     const int w = grid + 1;
@@ -377,14 +431,13 @@ class BundleTracer {
     }
   }
 
-  // With bands: the mean of `n` corners' transmittance at each band over `mean`, their mean
-  // transmittance (FilmTriangle::tint); without, white.
+  // With a spectrum: the mean of `n` corners' colours over `mean`, their mean transmittance
+  // (FilmTriangle::tint: the colour per unit flux); without, white.
   Vec3d Tint(const Corner* corners, int n, double mean) const {
-    if (options_.bands.empty() || !(mean > 0)) return Vec3d(1, 1, 1);
-    std::array<double, 3> sum{};
-    for (int k = 0; k < n; ++k)
-      for (size_t b = 0; b < options_.bands.size(); ++b) sum[b] += corners[k].band[b];
-    return Vec3d(sum[0], sum[1], sum[2]) * (1 / (n * mean));
+    if (!options_.spectrum || !(mean > 0)) return Vec3d(1, 1, 1);
+    Vec3d sum(0.0);
+    for (int k = 0; k < n; ++k) sum += corners[k].colour;
+    return sum * (1 / (n * mean));
   }
 
   const LensSystem& lens_;
@@ -397,11 +450,23 @@ class BundleTracer {
   double start_z_, reach_;
   Vec2d centre_{0, 0};  // of the start square
   std::optional<CompiledSequence> compiled_;  // the path at lambda_, where it can be compiled
+  // With a spectrum: the path with its losses at the spectrum's wavelengths, the sum of the
+  // weights' X, Y and Z (a colour's transmittance is its sum over this), the lattice.
+  std::optional<CompiledSequence> spectral_;
+  double weight_sum_ = 0;
+  ColourLattice lattice_;
 };
 
 }  // namespace
 
 namespace {
+
+void CheckSpectrum(const BundleOptions& options, const char* who) {
+  if (const BundleSpectrum* s = options.spectrum)
+    if (s->wavelengths.size() > size_t(CompiledSequence::kMaxBands) || s->weights.size() != s->wavelengths.size())
+      throw std::invalid_argument(std::string(who) + ": a spectrum of more than " +
+                                  std::to_string(CompiledSequence::kMaxBands) + " wavelengths, or not one weight each");
+}
 
 std::vector<SurfaceVisit> DirectPath(const LensSystem& lens) {
   std::vector<SurfaceVisit> path;
@@ -434,7 +499,7 @@ std::optional<BundleRegion> DirectRegion(const LensSystem& lens, const PointSour
 
 std::vector<FilmTriangle> GhostBundle(const LensSystem& lens, const Ghost& ghost, const PointSource& source,
                                       double lambda_nm, const BundleOptions& options) {
-  if (options.bands.size() > 3) throw std::invalid_argument("GhostBundle: more than three bands");
+  CheckSpectrum(options, "GhostBundle");
   const std::vector<SurfaceVisit> path = GhostPath(lens, ghost);
   return BundleTracer(lens, path, source, lambda_nm, options).Bundle(options.grid, options.region);
 }
@@ -448,7 +513,7 @@ std::vector<FilmTriangle> GhostBundle(const LensSystem& lens, const Ghost& ghost
 
 std::vector<FilmTriangle> DirectBundle(const LensSystem& lens, const PointSource& source, double lambda_nm,
                                        const BundleOptions& options) {
-  if (options.bands.size() > 3) throw std::invalid_argument("DirectBundle: more than three bands");
+  CheckSpectrum(options, "DirectBundle");
   const std::vector<SurfaceVisit> path = DirectPath(lens);
   return BundleTracer(lens, path, source, lambda_nm, options).Bundle(options.grid, options.region);
 }

@@ -68,6 +68,20 @@ std::optional<BundleRegion> GhostRegion(const LensSystem& lens, const Ghost& gho
 std::vector<FilmTriangle> GhostBundle(const LensSystem& lens, const Ghost& ghost, const PointSource& source,
                                       double lambda_nm, int grid = 64, const BundleRegion* region = nullptr);
 
+// A bundle's colour at many wavelengths along one geometry (a preview's): the bundle traced at
+// its own wavelength alone, the losses along its path (the coatings', the glasses') at each of
+// `wavelengths` found at the nodes of a lattice over its start square every `lattice_cells`
+// cells of its grid (optics/colour_lattice.h), each weighted by its colour per unit
+// transmittance (`weights`: the light's emission over the wavelength's band, through the
+// matching functions) and summed: each triangle's tint is its colour per unit flux. Without
+// the ghosts' chromatic spread (one geometry), with their colours and how they change over
+// each ghost.
+struct BundleSpectrum {
+  std::vector<double> wavelengths;  // at most CompiledSequence::kMaxBands
+  std::vector<Vec3d> weights;       // one per wavelength
+  int lattice_cells = 4;
+};
+
 // Everything a bundle can be asked for: the grid, the levels of splitting cells across the
 // edge of what gets through (3: an eighth of a cell; a preview's 1), the region (see GhostBundle), the stop's
 // transmittance at (u, v) in stop radii where its opening lets light through (an aperture
@@ -76,13 +90,12 @@ std::vector<FilmTriangle> GhostBundle(const LensSystem& lens, const Ghost& ghost
 struct BundleOptions {
   int grid = 64;
   int edge_levels = 3;
-  // Up to three wavelengths at which each ray's losses are also found, along the path traced
-  // at the bundle's own (a preview's colours: one geometry, each band's coatings and glass;
-  // optics/compiled_sequence.h). The triangles' flux is then the bands' mean, their tint each
-  // band's share.
-  std::vector<double> bands;
-  // The coated surfaces' reflectance at the bands from tables (optics/coating_tables.h, at
-  // the bands' wavelengths), instead of their thin-film stacks.
+  // A preview's colours along one geometry (above). The triangles' flux is then in units of
+  // the transmittance weighted by the weights' sum of X, Y and Z, their tint their colour per
+  // unit flux.
+  const BundleSpectrum* spectrum = nullptr;
+  // The coated surfaces' reflectance at the spectrum's wavelengths from tables
+  // (optics/coating_tables.h, at those wavelengths), instead of their thin-film stacks.
   const CoatingTables* coating_tables = nullptr;
   const BundleRegion* region = nullptr;
   std::function<double(double u, double v)> stop_transmittance;

@@ -79,6 +79,9 @@ class LensSystem {
   double MirrorReflectance(int i, double lambda_nm, double cos_i) const;
   // The coating as it lies on surface i, or null (bare, or no change of medium there).
   const CoatedInterface* Coated(int i) const { return coated_[i] ? &*coated_[i] : nullptr; }
+  // Whether surface i's coating has its outer side toward the object (its glass on the film
+  // side): light toward the film meets it from outside.
+  bool CoatingFacesObject(int i) const { return outer_faces_object_[size_t(i)]; }
 
   // First-order data at the d line, object at infinity, for the stop as set.
   const ParaxialData& paraxial() const { return paraxial_; }

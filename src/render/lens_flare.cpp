@@ -6,10 +6,12 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <optional>
 
 #include "base/cie.h"
 #include "base/log.h"
+#include "optics/compiled_sequence.h"
 
 namespace objektiv {
 
@@ -98,7 +100,7 @@ FlareSettings FlareSettings::Preview() {
   s.grid = 16;
   s.edge_levels = 1;
   s.region_grid = 8;
-  s.wavelengths = 3;
+  s.wavelengths = 32;
   s.cull = 0;
   s.pixel_centres = true;
   s.half_resolution_from = 64;
@@ -128,7 +130,8 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
 
   // Film irradiance to pixel value, and the wavelength bins' colour weights.
   const double to_pixel = 4 / M_PI * camera.settings().exposure_scale;
-  const int k_count = settings.one_geometry ? std::clamp(settings.wavelengths, 1, 3) : std::max(1, settings.wavelengths);
+  const int k_count = settings.one_geometry ? std::clamp(settings.wavelengths, 1, CompiledSequence::kMaxBands)
+                                            : std::max(1, settings.wavelengths);
   const double step = (kFlareLambdaMax - kFlareLambdaMin) / k_count;
   std::vector<double> lambdas;
   for (int k = 0; k < k_count; ++k) lambdas.push_back(kFlareLambdaMin + (k + 0.5) * step);
@@ -189,12 +192,23 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
       } else {
         for (double l : lambdas) tasks.push_back({&sources[s], &p, l});
       }
-  // One geometry: the bands' losses along each ray, the coatings' from tables.
-  std::optional<CoatingTables> coating_tables;
+  // The wavelength's colour for a source: its emission times the matching functions
+  // integrated over the wavelength's band (so that few bands keep white light white).
+  auto band_weight = [&](const FlareSource& f, double lambda) {
+    const Vec3d colour = CieXyzOverBand(lambda - 0.5 * step, lambda + 0.5 * step, [&f](double l) { return f.Emission(l); });
+    return colour * (to_pixel * f.irradiance_scale * f.visibility / CieYIntegral());
+  };
+  // One geometry: each source's spectrum (the losses at every wavelength on a lattice of each
+  // bundle's rays), the coatings' reflectances from tables kept from frame to frame.
+  std::vector<BundleSpectrum> spectra(settings.one_geometry ? sources.size() : 0);
+  for (size_t s = 0; s < spectra.size(); ++s) {
+    spectra[s].wavelengths = lambdas;
+    for (double l : lambdas) spectra[s].weights.push_back(band_weight(sources[s], l));
+  }
+  std::shared_ptr<const CoatingTables> coating_tables;
   if (settings.one_geometry) {
-    options.bands = direct_options.bands = lambdas;
-    coating_tables.emplace(lens, lambdas);
-    options.coating_tables = direct_options.coating_tables = &*coating_tables;
+    coating_tables = CoatingTables::Shared(lens, lambdas);
+    options.coating_tables = direct_options.coating_tables = coating_tables.get();
   }
   out.sources = int(sources.size());
 
@@ -203,8 +217,7 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
   // chunk's bundles in task order (so every pixel's sum has one order).
   struct Traced {
     std::vector<FilmTriangle> bundle;
-    Vec3d weight{0.0};
-    std::array<Vec3d, 3> band_weights{};  // one_geometry's
+    Vec3d weight{0.0};  // but for one_geometry, whose triangles carry their colours
     bool ghost = false;
     bool half = false;  // splatted at half the resolution
   };
@@ -251,22 +264,14 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
       const FlarePath& p = *t.path;
       BundleOptions o = p.ghost ? options : direct_options;
       o.region = &p.region;
+      if (settings.one_geometry) o.spectrum = &spectra[size_t(t.source - sources.data())];
       Traced& r = traced[k];
       r.ghost = p.ghost.has_value();
       r.bundle = p.ghost ? GhostBundle(lens, *p.ghost, f.source, t.lambda, o) : DirectBundle(lens, f.source, t.lambda, o);
       r.half = r.ghost && large(r.bundle);
       if (r.half) any_half = true;
-      // The band's colour: the emission times the matching functions integrated over the band
-      // (so that few bands keep white light white), its geometry at the band's middle.
-      auto band_weight = [&](double lambda) {
-        const Vec3d colour = CieXyzOverBand(lambda - 0.5 * step, lambda + 0.5 * step, [&f](double l) { return f.Emission(l); });
-        return colour * (to_pixel * f.irradiance_scale * f.visibility / CieYIntegral());
-      };
-      if (settings.one_geometry) {
-        for (size_t b = 0; b < lambdas.size(); ++b) r.band_weights[b] = band_weight(lambdas[b]);
-      } else {
-        r.weight = band_weight(t.lambda);
-      }
+      // The band's colour, its geometry at the band's middle.
+      if (!settings.one_geometry) r.weight = band_weight(f, t.lambda);
     });
     tbb::parallel_for(0, bands, [&](int band) {
       // The band's rows, and at half the resolution half as many (kBandRows is even).
@@ -286,7 +291,7 @@ FlareImages RenderFlare(const Scene& scene, const RealisticCamera& camera, const
                        : tr.ghost ? out.ghosts.data() + size_t(band) * kBandRows * out.width * 3
                                   : out.lights.data() + size_t(band) * kBandRows * out.width * 3;
         if (settings.one_geometry) {
-          SplatBands(tr.bundle, into, tr.band_weights, image, settings.pixel_centres);
+          SplatTinted(tr.bundle, into, image, settings.pixel_centres);
         } else {
           SplatColour(tr.bundle, into, tr.weight, image, settings.pixel_centres);
         }
