@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <vector>
 
 namespace objektiv {
 
@@ -27,6 +28,7 @@ void DrawLensSection(const Svg& plot, float width) {
   draw->AddRectFilled(origin, corner, IM_COL32(255, 255, 255, 255));
   draw->PushClipRect(origin, corner, true);  // rays traced beyond the drawing stay in it
   auto at = [&](const Vec2d& p) { return ImVec2(origin.x + float(p.x) * scale, origin.y + float(p.y) * scale); };
+  std::vector<const SvgShape*> texts;
   for (const SvgShape& s : plot.shapes()) {
     std::vector<ImVec2> pts;
     for (const Vec2d& p : s.points) pts.push_back(at(p));
@@ -40,21 +42,23 @@ void DrawLensSection(const Svg& plot, float width) {
       case SvgShape::kCircle:
         draw->AddCircleFilled(pts[0], float(s.radius) * scale, Colour(s.fill, s.opacity));
         break;
-      case SvgShape::kText: {
-        const float size = std::max(11.f, float(s.size) * scale * 1.4f);  // legible, if it overlaps a little
-        ImFont* font = ImGui::GetFont();
-        ImVec2 p = pts[0];
-        const ImVec2 extent = font->CalcTextSizeA(size, width, 0, s.text.c_str());
-        if (s.anchor == "middle") p.x -= extent.x / 2;
-        if (s.anchor == "end") p.x -= extent.x;
-        p.y -= extent.y * 0.8f;
-        draw->AddText(font, size, p, Colour(s.fill, 1), s.text.c_str());
+      case SvgShape::kText:
+        // Below the drawing (its legend and caption, at the panel's text size, wrapped): drawn at
+        // their places and sizes they were too small to read or, enlarged, overlapped and ran
+        // past the panel's edges.
+        texts.push_back(&s);
         break;
-      }
     }
   }
   draw->PopClipRect();
   ImGui::Dummy(ImVec2(width, height));
+  ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);
+  for (const SvgShape* t : texts) {
+    ImGui::PushStyleColor(ImGuiCol_Text, Colour(t->fill, 1));
+    ImGui::TextUnformatted(t->text.c_str());
+    ImGui::PopStyleColor();
+  }
+  ImGui::PopTextWrapPos();
 }
 
 }  // namespace objektiv

@@ -6,7 +6,8 @@
 
 namespace objektiv {
 
-// Draws it at the cursor, `width` pixels wide, and moves the cursor below it.
+// Draws it at the cursor, `width` pixels wide, its texts (field labels, caption) below it in
+// their colours, wrapped at that width, and moves the cursor below them.
 void DrawLensSection(const Svg& plot, float width);
 
 }  // namespace objektiv

@@ -182,7 +182,9 @@ class BundleTracer {
       lattice_ = ColourLattice(lo, hi, (grid + cells - 1) / cells + 1, [this](Vec2d p) { return NodeColour(p); });
     }
     const int w = grid + 1;
-    auto at = [&](size_t k) { return Vec2d(lo.x + (hi.x - lo.x) * double(k % size_t(w)) / grid, lo.y + (hi.y - lo.y) * double(k / size_t(w)) / grid); };
+    auto at = [&](size_t k) {
+      return Vec2d(lo.x + (hi.x - lo.x) * double(k % size_t(w)) / grid, lo.y + (hi.y - lo.y) * double(k / size_t(w)) / grid);
+    };
     // No node's ray found a colour (a path that barely gets through): a live corner's, everywhere.
     for (size_t k = 0; k < corners.size() && lattice_.empty(); ++k)
       if (corners[k].alive)

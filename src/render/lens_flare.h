@@ -40,7 +40,7 @@ struct FlareSettings {
   // a quarter of the pixel writes, their edges a ramp of about two pixels. 0: none.
   int half_resolution_from = 0;
   // Each bundle traced once, at 550 nm, with its losses at each of the `wavelengths` bands
-  // (at most 16) on a lattice of its rays (BundleOptions::spectrum): a preview's colours (the
+  // (at most 32) on a lattice of its rays (BundleOptions::spectrum): a preview's colours (the
   // coatings' and the glasses', and how they change over each ghost), without the ghosts'
   // chromatic spread.
   bool one_geometry = false;

@@ -88,8 +88,8 @@ ViewScript::Action ViewScript::Step(ViewSession& session) {
       if (count != std::floor(count)) throw InputError(fmt::format("'{}' is not a whole number", c.args[0]));
       const int n = int(std::clamp(count, -1.0, 1e9));
       if (n < 1 || n > session.setup().sampler.spp)
-        throw InputError(fmt::format("{} is not between 1 and the scene's {} samples per pixel (view --spp sets it)", n,
-                                     session.setup().sampler.spp));
+        throw InputError(fmt::format("{} is not between 1 and the scene's {} samples per pixel (view --spp sets it)",
+                                     c.args[0], session.setup().sampler.spp));
       // A frame at a time, so that a window shows them.
       session.StopPassesAt(n);
       if (session.progress().spp < n && session.Step()) return {Action::kDraw, ""};
@@ -132,7 +132,10 @@ ViewScript::Action ViewScript::Step(ViewSession& session) {
       pose.LookAt(Vec3d(*p));
       session.SetPose(pose, false);
     } else if (v == "exposure") {
-      session.SetExposure(Number(c, 0, path_));
+      // As the film's exposure property is bounded (io/load_film.cpp).
+      const double stops = Number(c, 0, path_);
+      if (std::abs(stops) > 64) throw InputError(fmt::format("{} is not between -64 and 64 stops", c.args[0]));
+      session.SetExposure(stops);
     } else if (v == "layer") {
       const std::string& name = c.args[0];
       bool found = false;

@@ -308,7 +308,12 @@ void ViewSession::SetExposure(double stops) {
 
 void ViewSession::SetLayer(ViewLayer layer) {
   layer_ = layer;
-  if (film_ && !moving_) ShowFilm();
+  // What is shown, in the new layer: the last preview frame (its parts kept), or the passes.
+  if (progress_.preview && !preview_.picture.empty()) {
+    ShowPreview();
+  } else if (film_ && !moving_) {
+    ShowFilm();
+  }
 }
 
 bool ViewSession::HasLensLayers() const {
@@ -357,12 +362,13 @@ void ViewSession::PreviewFrame(int divisor, const std::atomic<bool>* stop) {
   const auto start = std::chrono::steady_clock::now();
   const RenderStats stats = Render(camera, *preview_integrator_, sampler, film, ro);
   if (stats.seconds > 0) preview_seconds_per_pixel_ = stats.seconds / (double(w) * h);
-  std::vector<float> xyz = film.Xyz();
+  preview_.width = w, preview_.height = h;
+  preview_.picture = film.Xyz();
   const auto flare_start = std::chrono::steady_clock::now();
-  AddPreviewFlare(camera, xyz, ro.stop);
+  PreviewFlare(camera, ro.stop);
   preview_flare_seconds_ = Seconds(flare_start);
   const double seconds = Seconds(start);
-  ShowXyz(xyz, w, h);
+  ShowPreview();
   progress_.preview = true;
   progress_.spp = 0;
   progress_.width = w, progress_.height = h;
@@ -371,25 +377,32 @@ void ViewSession::PreviewFrame(int divisor, const std::atomic<bool>* stop) {
   progress_.layers = false;
 }
 
-void ViewSession::AddPreviewFlare(const Camera& camera, std::vector<float>& xyz, const std::atomic<bool>* stop) const {
+void ViewSession::PreviewFlare(const Camera& camera, const std::atomic<bool>* stop) {
   // As the passes' lens layers show them (render/lens_layers.h): where the lens has effects,
   // the point lights' own images (camera rays never meet a point light) and, with ghosts on,
   // their ghosts; at preview quality, without glare and diffraction.
+  preview_.lights.clear(), preview_.ghosts.clear();
   const auto* real = dynamic_cast<const RealisticCamera*>(&camera);
   if (!real || !real->effects().Any()) return;
   FlareSettings flare = FlareSettings::Preview();
   flare.ghosts = real->effects().ghosts;
   flare.light_images = true;
   flare.stop = stop;
-  const FlareImages f = RenderFlare(*setup_.scene, *real, CropWindow{0, 0, camera.width(), camera.height()}, flare);
+  FlareImages f = RenderFlare(*setup_.scene, *real, CropWindow{0, 0, camera.width(), camera.height()}, flare);
+  preview_.lights = std::move(f.lights), preview_.ghosts = std::move(f.ghosts);
+}
+
+void ViewSession::ShowPreview() {
   // The layer shown, as the passes' layers hold the parts: the lamps' images in the primary
   // image, the ghosts alone in theirs; the preview has no diffraction (black).
+  std::vector<float> xyz = preview_.picture;
   if (layer_ == ViewLayer::kGhosts || layer_ == ViewLayer::kDiffraction) std::fill(xyz.begin(), xyz.end(), 0.f);
   auto add = [&xyz](const std::vector<float>& layer) {
     for (size_t i = 0; i < layer.size() && i < xyz.size(); ++i) xyz[i] += layer[i];
   };
-  if (layer_ == ViewLayer::kSum || layer_ == ViewLayer::kPrimary) add(f.lights);
-  if (layer_ == ViewLayer::kSum || layer_ == ViewLayer::kGhosts) add(f.ghosts);
+  if (layer_ == ViewLayer::kSum || layer_ == ViewLayer::kPrimary) add(preview_.lights);
+  if (layer_ == ViewLayer::kSum || layer_ == ViewLayer::kGhosts) add(preview_.ghosts);
+  ShowXyz(xyz, preview_.width, preview_.height);
 }
 
 void ViewSession::BuildCameraWhereItStands() {

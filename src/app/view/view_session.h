@@ -146,9 +146,10 @@ class ViewSession {
   const Camera& PreviewCamera(int divisor);
   int PreviewDivisor() const;
   void PreviewFrame(int divisor, const std::atomic<bool>* stop);
-  // The lamps' images and ghosts at preview quality (FlareSettings::Preview) added to a
-  // preview's XYZ.
-  void AddPreviewFlare(const Camera& camera, std::vector<float>& xyz, const std::atomic<bool>* stop) const;
+  // The lamps' images and ghosts at preview quality (FlareSettings::Preview) into preview_.
+  void PreviewFlare(const Camera& camera, const std::atomic<bool>* stop);
+  // The last preview frame shown again, composed for the layer now chosen.
+  void ShowPreview();
   void Pass(const std::atomic<bool>* stop);
   void ShowFilm();
   void ShowXyz(const std::vector<float>& xyz, int width, int height);
@@ -174,6 +175,12 @@ class ViewSession {
   double preview_seconds_per_pixel_ = 0;  // the picture's, the lamps' images and ghosts apart
   double preview_flare_seconds_ = 0;      // theirs (the bundles' cost hardly depends on the resolution)
   bool still_preview_shown_ = false;
+  // The last preview frame's parts, composed for the layer chosen (ShowPreview): the picture,
+  // the lamps' images and their ghosts (XYZ; the last two empty where the lens has no effects).
+  struct PreviewParts {
+    int width = 0, height = 0;
+    std::vector<float> picture, lights, ghosts;
+  } preview_;
 
   std::unique_ptr<Film> film_;
   std::unique_ptr<Sampler> sampler_;
