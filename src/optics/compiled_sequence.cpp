@@ -52,11 +52,12 @@ std::optional<CompiledSequence> CompiledSequence::Compile(const LensSystem& lens
     const Glass* medium = previous >= 0 ? lens.surface(std::min(previous, v.surface)).medium.get() : nullptr;
     if (medium) step.alpha = medium->AbsorptionCoefficient(lambda_nm);
     for (int b = 0; b < c.band_count_; ++b) {
-      step.band_n_object[b] = lens.prescription().IndexBefore(size_t(v.surface), bands[b]);
-      step.band_n_film[b] = s.IndexAfter(bands[b]);
-      step.band_alpha[b] = medium ? medium->AbsorptionCoefficient(bands[b]) : 0;
-      step.band_fresnel_eta[b] =
-          v.toward_film ? step.band_n_film[b] / step.band_n_object[b] : step.band_n_object[b] / step.band_n_film[b];
+      BandStep band;
+      band.n_object = lens.prescription().IndexBefore(size_t(v.surface), bands[b]);
+      band.n_film = s.IndexAfter(bands[b]);
+      band.alpha = medium ? medium->AbsorptionCoefficient(bands[b]) : 0;
+      band.fresnel_eta = v.toward_film ? band.n_film / band.n_object : band.n_object / band.n_film;
+      c.band_steps_.push_back(band);
     }
     previous = v.surface;
     c.steps_.push_back(step);
@@ -65,13 +66,18 @@ std::optional<CompiledSequence> CompiledSequence::Compile(const LensSystem& lens
 }
 
 CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<Vec3d>* stop_points,
-                                                bool follow_blocked) const {
+                                                bool follow_blocked, std::span<double> band_transmittance) const {
   Result r;
-  std::fill(r.band_transmittance.begin(), r.band_transmittance.begin() + band_count_, 1.0);
-  std::array<double, kMaxBands> band_absorbance{};  // Beer-Lambert's exponent so far
+  // The bands' losses only where asked for.
+  const int bands = band_transmittance.empty() ? 0 : band_count_;
+  std::fill_n(band_transmittance.begin(), bands, 1.0);
+  std::array<double, kMaxBands> band_absorbance;  // Beer-Lambert's exponent so far
+  std::fill_n(band_absorbance.begin(), bands, 0.0);
   bool held = false;  // blocked by an opening, and followed (follow_blocked)
   Vec3d o = in.o, d = in.d;
-  for (const Step& st : steps_) {
+  for (size_t k = 0; k < steps_.size(); ++k) {
+    const Step& st = steps_[k];
+    const BandStep* at_bands = bands ? &band_steps_[k * size_t(band_count_)] : nullptr;
     const LensSurface& s = *st.surface;
     const Vec3d local = o - Vec3d(0, 0, st.vertex_z);
     bool blocked;
@@ -97,7 +103,7 @@ CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<
     // At the bands, the exponents summed and taken once at the end (an exponential per band
     // and glass was a third of a ray's time).
     if (*t > 0)
-      for (int b = 0; b < band_count_; ++b) band_absorbance[b] += st.band_alpha[b] * *t;
+      for (int b = 0; b < bands; ++b) band_absorbance[b] += at_bands[b].alpha * *t;
     if (!st.interface) {
       if (st.reflect) return r;  // nothing to reflect from
       continue;
@@ -109,15 +115,16 @@ CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<
     const double reflectance =
         band_count_ > 0 || !losses_ ? (st.reflect ? 1.0 : 0.0)
                                     : lens_->SurfaceReflectance(st.index, lambda_, cos_i, st.toward_film, st.n_object, st.n_film);
-    for (int b = 0; b < band_count_; ++b) {
+    for (int b = 0; b < bands; ++b) {
       // LensSystem::SurfaceReflectance, its choice made once.
+      const BandStep& band = at_bands[b];
       const double rb = st.tabulated ? tables_->Reflectance(st.index, st.toward_film, b, cos_i)
-                        : st.bare    ? (st.band_n_object[b] == st.band_n_film[b]
+                        : st.bare    ? (band.n_object == band.n_film
                                             ? 0.0
-                                            : FresnelDielectric(std::clamp(cos_i, 0.0, 1.0), st.band_fresnel_eta[b]))
+                                            : FresnelDielectric(std::clamp(cos_i, 0.0, 1.0), band.fresnel_eta))
                                      : lens_->SurfaceReflectance(st.index, bands_[b], cos_i, st.toward_film,
-                                                                 st.band_n_object[b], st.band_n_film[b]);
-      r.band_transmittance[b] *= st.reflect ? rb : 1 - rb;
+                                                                 band.n_object, band.n_film);
+      band_transmittance[b] *= st.reflect ? rb : 1 - rb;
     }
     if (st.reflect) {
       r.surface_transmittance *= reflectance;
@@ -129,8 +136,8 @@ CompiledSequence::Result CompiledSequence::Trace(const LensRay& in, std::vector<
     if (!refracted) return r;  // total internal reflection
     d = *refracted;
   }
-  for (int b = 0; b < band_count_; ++b)
-    if (band_absorbance[b] != 0) r.band_transmittance[b] *= std::exp(-band_absorbance[b]);
+  for (int b = 0; b < bands; ++b)
+    if (band_absorbance[b] != 0) band_transmittance[b] *= std::exp(-band_absorbance[b]);
   r.alive = !held;
   r.followed = held;
   r.ray = LensRay{o, d, false, in.wave_choices};

@@ -43,15 +43,18 @@ class CompiledSequence {
     bool followed = false;  // blocked, and followed past the openings to the last visit
     LensRay ray;  // after the last visit
     double surface_transmittance = 1, internal_transmittance = 1;  // at lambda_nm; 1 with bands
-    // The whole transmittance (surfaces and glass) at each of the bands.
-    std::array<double, kMaxBands> band_transmittance{};
   };
   // The ray along the path, as TraceSequence traces it (its failures all give alive false).
   // `stop_points`, if given, receives where the ray crossed the stop each time (lens space).
   // With `follow_blocked`, a ray the openings (the stop, the rims, obscurations) block goes on
   // as if they did not: alive stays false, and `followed` and `ray` say where it would go (a
   // bundle's edge cells are placed on the film by their blocked corners).
-  Result Trace(const LensRay& ray, std::vector<Vec3d>* stop_points = nullptr, bool follow_blocked = false) const;
+  // `band_transmittance`, if given (band_count() values), receives the whole transmittance
+  // (surfaces and glass) at each of the bands; the bands' losses are traced only then (a
+  // result of a few words: most rays are traced for where they go).
+  Result Trace(const LensRay& ray, std::vector<Vec3d>* stop_points = nullptr, bool follow_blocked = false,
+               std::span<double> band_transmittance = {}) const;
+  int band_count() const { return band_count_; }
 
  private:
   struct Step {
@@ -64,17 +67,19 @@ class CompiledSequence {
     // The absorption coefficient (1/mm) of the medium crossed to reach this step (0: none, or
     // the first step).
     double alpha;
-    // The same at each band.
-    std::array<double, kMaxBands> band_n_object{}, band_n_film{}, band_alpha{};
     bool tabulated;  // its reflectance at the bands from tables_
     double semi_diameter2, obscuration2;  // squared
     // A plain conic (no aspheric terms): its curvature (0: a plane) and 1 + its conic
     // constant, for IntersectConic and ConicNormal.
     bool conic;
     double c, k1;
-    // A bare interface: Fresnel's relative index (outgoing over incoming) at each band.
     bool bare;
-    std::array<double, kMaxBands> band_fresnel_eta{};
+  };
+  // A step's data at one band, kept apart from the steps (band_count_ per step, step by step):
+  // the indices on its two sides, the absorption coefficient as Step::alpha, and a bare
+  // interface's Fresnel relative index (outgoing over incoming).
+  struct BandStep {
+    double n_object, n_film, alpha, fresnel_eta;
   };
   const LensSystem* lens_ = nullptr;
   double lambda_ = 0;
@@ -83,6 +88,7 @@ class CompiledSequence {
   const CoatingTables* tables_ = nullptr;
   bool losses_ = true;
   std::vector<Step> steps_;
+  std::vector<BandStep> band_steps_;
 };
 
 }  // namespace objektiv

@@ -154,9 +154,9 @@ class BundleTracer {
     if (!(d.z > 0)) return std::nullopt;
     std::array<double, CompiledSequence::kMaxBands> t{};
     if (spectral_) {
-      const CompiledSequence::Result r = spectral_->Trace({at, d}, nullptr, /*follow_blocked=*/true);
+      const CompiledSequence::Result r =
+          spectral_->Trace({at, d}, nullptr, /*follow_blocked=*/true, std::span(t.data(), size_t(spectral_->band_count())));
       if (!r.alive && !r.followed) return std::nullopt;
-      t = r.band_transmittance;
     } else {
       for (size_t k = 0; k < spectrum.wavelengths.size(); ++k) {
         const TraceResult r = TraceSequence(lens_, {at, d}, spectrum.wavelengths[k], path_);
